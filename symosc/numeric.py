@@ -146,11 +146,16 @@ class CompiledFunction:
         if len(values) != len(self.args):
             names = ", ".join(s.name for s in self.args)
             raise ParameterError(f"expected {len(self.args)} arguments ({names}), got {len(values)}")
+        if self.backend == "mpmath":
+            # Convert inputs at the working precision, so that strings such as "1e-10" keep all their digits.
+            with mpmath.workdps(self.dps or mpmath.mp.dps):
+                if self.check:
+                    values = tuple(_check_value(s, v, self.backend) for s, v in zip(self.args, values, strict=True))
+                else:
+                    values = tuple(mpmath.mpmathify(v) for v in values)
+                return self._func(*values)
         if self.check:
             values = tuple(_check_value(s, v, self.backend) for s, v in zip(self.args, values, strict=True))
-        if self.backend == "mpmath":
-            with mpmath.workdps(self.dps or mpmath.mp.dps):
-                return self._func(*values)
         return self._func(*values)
 
     def call(self, values: Mapping[Any, Any]) -> Any:
@@ -273,7 +278,7 @@ def compile(
     arg_names = _argument_names(arg_syms)
     renamed = {s: sp.Symbol(n, **s.assumptions0) for s, n in zip(arg_syms, arg_names, strict=True)}
     items = [e.xreplace(renamed) for e in items]
-    replacements, reduced = sp.cse(items, symbols=sp.numbered_symbols("_c"), optimizations="basic")
+    replacements, reduced = sp.cse(items, symbols=sp.numbered_symbols("_c"), optimizations=None, order="none")
 
     printer = MpmathPrinter({"fully_qualified_modules": True}) if backend == "mpmath" else _SafeNumPyPrinter()
     lines = [f"def {fname}({', '.join(arg_names)}):"]

@@ -1,0 +1,322 @@
+"""Lagrange equations of the second kind.
+
+:class:`LagrangianSystem` takes the kinetic energy T, the potential energy V, a Rayleigh dissipation
+function R and generalised forces Q, and derives
+
+    M(q, t) q'' = F(q, q', t),    M = d^2 T / dq' dq',
+    F = dT/dq - d/dt(dT/dq')|_{q''=0} - dV/dq - dR/dq' + Q.
+
+Everything is computed lazily on first access and cached.  Internally coordinates, velocities and
+accelerations are plain symbols (:func:`symosc.symbols.dot`, :func:`symosc.symbols.ddot`); coordinates
+given as ``dynamicsymbols`` are converted on entry.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from functools import cached_property
+from typing import Any
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from ..errors import ModelError
+from ..symbols import ddot, dot, sort_symbols, t
+from . import _terms
+
+__all__ = ["LagrangianSystem"]
+
+
+def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...], dict[sp.Expr, sp.Symbol]]:
+    """Plain coordinate symbols and the replacement map from dynamicsymbols (and their derivatives)."""
+    if isinstance(coordinates, (sp.Symbol, AppliedUndef)):
+        coordinates = [coordinates]
+    if len(coordinates) == 0:
+        raise ModelError("at least one generalised coordinate is required")
+    plain: list[sp.Symbol] = []
+    replace: dict[sp.Expr, sp.Symbol] = {}
+    for c in coordinates:
+        if isinstance(c, sp.Symbol):
+            if c == t:
+                raise ModelError("time t cannot be a generalised coordinate")
+            q = c
+        elif isinstance(c, AppliedUndef) and c.args == (t,):
+            q = sp.Symbol(c.func.__name__, real=True)
+            replace[c.diff(t, 2)] = ddot(q)
+            replace[c.diff(t)] = dot(q)
+            replace[c] = q
+        else:
+            raise ModelError(
+                f"coordinates must be Symbols or dynamicsymbols (functions of symosc.t), got {c!r} ({type(c).__name__})"
+            )
+        plain.append(q)
+    names = [q.name for q in plain]
+    dup = sorted({n for n in names if names.count(n) > 1})
+    if dup:
+        raise ModelError(f"repeated coordinates: {', '.join(dup)}")
+    return tuple(plain), replace
+
+
+class LagrangianSystem:
+    """A holonomic mechanical system given by its energies.
+
+    Parameters
+    ----------
+    T : Expr
+        Kinetic energy, a polynomial of degree <= 2 in the velocities (``dot(q)`` for plain-symbol
+        coordinates, ``q(t).diff(t)`` for dynamicsymbols).  May depend explicitly on time
+        :data:`symosc.t` (rheonomic systems, e.g. a moving pivot).
+    V : Expr
+        Potential energy; must not depend on velocities.
+    coordinates : sequence of Symbol or dynamicsymbols
+        Generalised coordinates q.
+    dissipation : Expr, optional
+        Rayleigh dissipation function R(q, q', t); adds -dR/dq' to the forces.
+    forces : sequence or mapping, optional
+        Generalised forces Q_i (one per coordinate, or a mapping coordinate -> Q).
+
+    Examples
+    --------
+    A pendulum on a spring-mounted slider:
+
+    >>> import sympy as sp
+    >>> from symosc import dot
+    >>> from symosc.mechanics import LagrangianSystem
+    >>> x, phi = sp.symbols("x phi", real=True)
+    >>> m, l, k, g = sp.symbols("m l k g", positive=True)
+    >>> T = m / 2 * ((dot(x) + l * sp.cos(phi) * dot(phi)) ** 2 + (l * sp.sin(phi) * dot(phi)) ** 2)
+    >>> V = k * x**2 / 2 - m * g * l * sp.cos(phi)
+    >>> s = LagrangianSystem(T, V, [x, phi])
+    >>> sp.trigsimp(s.mass_matrix)
+    Matrix([
+    [           m, l*m*cos(phi)],
+    [l*m*cos(phi),       l**2*m]])
+    >>> s.forcing
+    Matrix([
+    [-k*x + l*m*phi_dot**2*sin(phi)],
+    [               -g*l*m*sin(phi)]])
+    """
+
+    def __init__(
+        self,
+        T: Any,
+        V: Any,
+        coordinates: Sequence[Any],
+        *,
+        dissipation: Any = 0,
+        forces: Sequence[Any] | Mapping[Any, Any] | None = None,
+    ) -> None:
+        q, replace = _plain_coordinates(coordinates)
+        self._q = q
+        self._qd = tuple(dot(s) for s in q)
+        self._qdd = tuple(ddot(s) for s in q)
+
+        def convert(expr: Any, what: str) -> sp.Expr:
+            try:
+                e = sp.sympify(expr)
+            except (sp.SympifyError, TypeError) as exc:
+                raise ModelError(f"{what} is not a SymPy expression: {expr!r}") from exc
+            if isinstance(e, sp.MatrixBase) or not isinstance(e, sp.Expr):
+                raise ModelError(f"{what} must be a scalar SymPy expression, got {type(e).__name__}")
+            e = e.xreplace(replace) if replace else e
+            stray = [f for f in e.atoms(AppliedUndef, sp.Derivative)]
+            if stray:
+                raise ModelError(
+                    f"{what} contains functions of time that are not coordinates: {stray}; give prescribed motions "
+                    "explicitly in terms of symosc.t, or add them to the coordinates"
+                )
+            if e.free_symbols & set(self._qdd):
+                raise ModelError(f"{what} must not depend on accelerations")
+            return e
+
+        self._T = convert(T, "T")
+        self._V = convert(V, "V")
+        self._R = convert(dissipation, "dissipation")
+        if self._V.free_symbols & set(self._qd):
+            raise ModelError("V must not depend on velocities; pass velocity-dependent forces through forces=")
+        self._Q = self._convert_forces(forces, convert, replace)
+        if not (self._T.free_symbols & set(self._qd)):
+            raise ModelError("T does not depend on any velocity: no mass matrix can be formed")
+        self._parts  # noqa: B018 - split T now, so that a T that is not quadratic is reported at once
+
+    def _convert_forces(self, forces: Any, convert: Any, replace: dict) -> tuple[sp.Expr, ...]:
+        n = len(self._q)
+        if forces is None:
+            return (sp.S.Zero,) * n
+        if isinstance(forces, Mapping):
+            by_name = {q.name: i for i, q in enumerate(self._q)}
+            out = [sp.S.Zero] * n
+            for key, val in forces.items():
+                key = replace.get(key, key)
+                name = key.name if isinstance(key, sp.Symbol) else str(key)
+                if name not in by_name:
+                    raise ModelError(f"force given for {name!r}, which is not a coordinate")
+                out[by_name[name]] = convert(val, f"force on {name}")
+            return tuple(out)
+        forces = list(forces)
+        if len(forces) != n:
+            raise ModelError(f"expected {n} generalised forces (one per coordinate), got {len(forces)}")
+        return tuple(convert(f, f"force {i + 1}") for i, f in enumerate(forces))
+
+    # ------------------------------------------------------------------ basic data
+    @property
+    def coordinates(self) -> tuple[sp.Symbol, ...]:
+        """Generalised coordinates q (plain symbols)."""
+        return self._q
+
+    @property
+    def velocities(self) -> tuple[sp.Symbol, ...]:
+        """Velocity symbols q'."""
+        return self._qd
+
+    @property
+    def accelerations(self) -> tuple[sp.Symbol, ...]:
+        """Acceleration symbols q''."""
+        return self._qdd
+
+    @property
+    def kinetic_energy(self) -> sp.Expr:
+        return self._T
+
+    @property
+    def potential_energy(self) -> sp.Expr:
+        return self._V
+
+    @property
+    def dissipation(self) -> sp.Expr:
+        return self._R
+
+    @property
+    def forces(self) -> tuple[sp.Expr, ...]:
+        return self._Q
+
+    @cached_property
+    def energy(self) -> sp.Expr:
+        """Total mechanical energy T + V (conserved when the system is scleronomic and undamped)."""
+        return self._T + self._V
+
+    @cached_property
+    def parameters(self) -> tuple[sp.Symbol, ...]:
+        """Free parameter symbols (everything but coordinates, velocities and time), in natural order."""
+        syms = set().union(self._T.free_symbols, self._V.free_symbols, self._R.free_symbols)
+        for f in self._Q:
+            syms |= f.free_symbols
+        return sort_symbols(syms - set(self._q) - set(self._qd) - {t})
+
+    @cached_property
+    def is_rheonomic(self) -> bool:
+        """True when T, V, R or Q depend explicitly on time."""
+        return t in (self._T.free_symbols | self._V.free_symbols | self._R.free_symbols) or any(
+            t in f.free_symbols for f in self._Q
+        )
+
+    def __repr__(self) -> str:
+        kind = "rheonomic" if self.is_rheonomic else "scleronomic"
+        q = ", ".join(s.name for s in self._q)
+        p = ", ".join(s.name for s in self.parameters)
+        return f"LagrangianSystem({kind}; coordinates: {q}; parameters: {p})"
+
+    # ------------------------------------------------------------------ derivation
+    @cached_property
+    def _dependent(self) -> set[sp.Symbol]:
+        """Symbols whose derivatives the engine takes: coordinates and time."""
+        return set(self._q) | {t}
+
+    @cached_property
+    def _parts(self) -> dict[tuple[int, ...], _terms.Groups]:
+        """T split by velocity monomial (``()``, ``(i,)``, ``(i, j)`` with i <= j), each coefficient
+        collected by its factor that depends on the coordinates and time."""
+        parts = _terms.velocity_parts(self._T, self._qd, "T")
+        dep = self._dependent
+        return {
+            k: _terms.group_terms([x for term in v for x in _terms.expand_terms(term, dep)], dep)
+            for k, v in parts.items()
+        }
+
+    @staticmethod
+    def _sum(groups: _terms.Groups) -> sp.Expr:
+        return sp.Add(*(c * d for d, c in groups))
+
+    @cached_property
+    def mass_matrix(self) -> sp.Matrix:
+        """M(q, t) = d^2 T / dq' dq' (symmetric)."""
+        n = len(self._q)
+        M = sp.zeros(n, n)
+        for key, groups in self._parts.items():
+            if len(key) == 2:
+                i, j = key
+                c = self._sum(groups)
+                if i == j:
+                    M[i, i] = 2 * c
+                else:
+                    M[i, j] = M[j, i] = c
+        return M
+
+    @cached_property
+    def forcing(self) -> sp.Matrix:
+        """F(q, q', t) in M q'' = F: everything but the acceleration terms, moved to the right."""
+        q, qd = self._q, self._qd
+        n = len(q)
+        qt = [*q, t]
+        rates = [*qd, sp.S.One]
+        pieces: list[list[sp.Expr]] = [[] for _ in range(n)]
+        for key, groups in self._parts.items():
+            grads = _terms.grouped_gradient(groups, qt)
+            mono = sp.Mul(*(qd[i] for i in key))
+            # dT/dq_k: the coefficient's gradient times the velocity monomial.
+            for k in range(n):
+                if grads[k]:
+                    pieces[k].append(sp.Add(*grads[k]) * mono)
+            # d/dt of dT/dq'_i along the motion (accelerations excluded).
+            rate = sp.Add(*(sp.Add(*g) * r for g, r in zip(grads, rates, strict=True) if g))
+            if rate == 0:
+                continue
+            if len(key) == 1:
+                pieces[key[0]].append(-rate)
+            elif len(key) == 2:
+                i, j = key
+                if i == j:
+                    pieces[i].append(-2 * rate * qd[i])
+                else:
+                    pieces[i].append(-rate * qd[j])
+                    pieces[j].append(-rate * qd[i])
+        dV = _terms.grouped_gradient(self._potential_groups, q)
+        for k in range(n):
+            pieces[k].extend(-x for x in dV[k])
+            if self._R != 0:
+                pieces[k].append(-self._R.diff(qd[k]))
+            pieces[k].append(self._Q[k])
+        return sp.Matrix([sp.Add(*p) for p in pieces])
+
+    @cached_property
+    def _potential_groups(self) -> _terms.Groups:
+        return _terms.group_terms(_terms.expand_terms(self._V, self._dependent), self._dependent)
+
+    def equations(self) -> sp.Matrix:
+        """Equations of motion M q'' - F = 0 as a column Matrix (accelerations are ``ddot(q)`` symbols)."""
+        return self.mass_matrix * sp.Matrix(self._qdd) - self.forcing
+
+    # ------------------------------------------------------------------ derived forms
+    def first_order(self):
+        """The solved first-order form x' = f(t, x) with x = (q, q'); see :class:`FirstOrderSystem`."""
+        from .first_order import FirstOrderSystem
+
+        return FirstOrderSystem(self)
+
+    def linearize(self, point: Mapping[Any, Any] | None = None, *, check_equilibrium: bool = True):
+        """Linearise about ``point`` (coordinates -> values, default all zero) with zero velocities.
+
+        Builds M, D, K directly from the energies (no full nonlinear forcing is needed):
+        with T = 1/2 q'^T M q' + b^T q' + T0,
+
+        - ``D = G + dM/dt + d^2R/dq'^2 - dQ/dq'`` with the gyroscopic part ``G_ij = db_i/dq_j - db_j/dq_i``;
+        - ``K = d/dq (dV/dq - dT0/dq + db/dt - Q)`` at the point;
+        - ``f`` = the right-hand side left at the point (a prescribed excitation).
+
+        Returns a :class:`~symosc.mechanics.LinearModel` ``M q'' + D q' + K q = f``.
+        Raises :class:`ModelError` if the point is not an equilibrium (a constant nonzero ``f``) unless
+        ``check_equilibrium=False``.
+        """
+        from .linear_model import linearize_system
+
+        return linearize_system(self, point, check_equilibrium=check_equilibrium)

@@ -1,0 +1,257 @@
+"""Linearised models ``M q'' + D q' + K(t) q = f(t)`` and their modal analysis."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import sympy as sp
+
+from ..errors import ModelError
+from ..numeric import compile
+from ..symbols import sort_symbols, t
+from . import _terms
+
+if TYPE_CHECKING:
+    from .lagrange import LagrangianSystem
+
+__all__ = ["LinearModel"]
+
+
+@dataclass(frozen=True)
+class LinearModel:
+    """``M q'' + D q' + K q = f`` about an equilibrium; ``K`` and ``f`` may depend on time.
+
+    Attributes
+    ----------
+    M, D, K : sympy.Matrix
+        Mass, damping (including gyroscopic) and stiffness matrices.  For a rheonomic system the
+        time-periodic part of ``K`` is kept explicit, e.g. ``K0 + K1*cos(p*t)``
+        (see :meth:`stiffness_harmonics`).
+    f : sympy.Matrix
+        Excitation left at the equilibrium (zero for a true equilibrium of an unforced system).
+    coordinates : tuple of Symbol
+        The deviations q from the point (same symbols as the nonlinear system).
+    point : dict
+        The linearisation point.
+
+    Examples
+    --------
+    >>> from symosc.models import n_link_pendulum
+    >>> lin = n_link_pendulum(1, inverted=True, pivot="vertical").linearize()
+    >>> lin.K
+    Matrix([[a*l1*m1*p**2*cos(p*t) - g*l1*m1]])
+    >>> lin.periodic_stiffness()
+    (Matrix([[-g*l1*m1]]), Matrix([[a*l1*m1*p**2]]), p)
+    """
+
+    M: sp.Matrix
+    D: sp.Matrix
+    K: sp.Matrix
+    f: sp.Matrix
+    coordinates: tuple[sp.Symbol, ...]
+    point: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        n = len(self.coordinates)
+        kind = "time-periodic" if t in self.K.free_symbols else "constant"
+        names = ", ".join(s.name for s in self.parameters)
+        return f"LinearModel({n} DOF, {kind} stiffness; parameters: {names})"
+
+    def _repr_latex_(self) -> str:
+        q = sp.Matrix(self.coordinates)
+        return (
+            f"$${sp.latex(self.M)} \\ddot{{q}} + {sp.latex(self.D)} \\dot{{q}} + {sp.latex(self.K)} "
+            f"{sp.latex(q)} = {sp.latex(self.f)}$$"
+        )
+
+    @cached_property
+    def parameters(self) -> tuple[sp.Symbol, ...]:
+        """Parameter symbols of M, D, K and f (time excluded), natural order."""
+        syms = set().union(*(m.free_symbols for m in (self.M, self.D, self.K, self.f)))
+        return sort_symbols(syms - {t} - set(self.coordinates))
+
+    # ------------------------------------------------------------------ time structure of K
+    def stiffness_harmonics(self) -> dict[sp.Expr, sp.Matrix]:
+        """Split ``K(t) = sum_f f(t) K_f``; the constant part is keyed by ``S.One``.
+
+        >>> from symosc.models import n_link_pendulum
+        >>> parts = n_link_pendulum(1, pivot="vertical").linearize().stiffness_harmonics()
+        >>> sorted(map(str, parts))
+        ['1', 'cos(p*t)']
+        """
+        n = self.K.shape[0]
+        parts: dict[sp.Expr, sp.Matrix] = {}
+        for i in range(n):
+            for j in range(n):
+                for term in sp.Add.make_args(sp.expand(self.K[i, j])):
+                    coeff, tpart = term.as_independent(t, as_Add=False)
+                    if tpart not in parts:
+                        parts[tpart] = sp.zeros(n, n)
+                    parts[tpart][i, j] += coeff
+        parts.setdefault(sp.S.One, sp.zeros(n, n))
+        return parts
+
+    @cached_property
+    def K0(self) -> sp.Matrix:
+        """The time-independent part of K."""
+        return self.stiffness_harmonics()[sp.S.One]
+
+    def periodic_stiffness(self) -> tuple[sp.Matrix, sp.Matrix, sp.Expr]:
+        """``(K0, K1, p)`` such that ``K = K0 + K1*cos(p*t)``; :class:`ModelError` if K has another form."""
+        parts = self.stiffness_harmonics()
+        varying = {k: v for k, v in parts.items() if k != sp.S.One and v != sp.zeros(*v.shape)}
+        if len(varying) != 1:
+            raise ModelError(
+                f"K(t) is not of the form K0 + K1*cos(p*t): its time-dependent factors are {list(varying) or 'none'}"
+            )
+        ((tf, K1),) = varying.items()
+        if not (isinstance(tf, sp.cos) and (tf.args[0] / t).free_symbols.isdisjoint({t})):
+            raise ModelError(f"K(t) is not of the form K0 + K1*cos(p*t): time factor {tf}")
+        return parts[sp.S.One], K1, sp.simplify(tf.args[0] / t)
+
+    # ------------------------------------------------------------------ numbers
+    @cached_property
+    def _compiled(self):
+        n = self.M.shape[0]
+        mats = self.M.row_join(self.D).row_join(self.K0)
+        if t in mats.free_symbols:
+            raise ModelError("M or D depends on time; evaluate them at a given time with sympy first")
+        return n, compile(mats, list(sort_symbols(mats.free_symbols)), name="linear_matrices")
+
+    def matrices(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Numeric ``(M, D, K0)``; array-valued parameters give stacks of shape ``(..., n, n)``."""
+        n, fn = self._compiled
+        out = fn.call(values)
+        return out[..., :, :n], out[..., :, n : 2 * n], out[..., :, 2 * n :]
+
+    def _whitened(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray]:
+        M, _, K = self.matrices(values)
+        if not np.allclose(M, np.swapaxes(M, -1, -2), rtol=1e-12, atol=0):
+            raise ModelError("mass matrix is not symmetric")
+        if not np.allclose(K, np.swapaxes(K, -1, -2), rtol=1e-10, atol=1e-300):
+            raise ModelError("stiffness matrix K0 is not symmetric (circulatory forces): use a state-space analysis")
+        try:
+            L = np.linalg.cholesky(M)
+        except np.linalg.LinAlgError as exc:
+            raise ModelError("mass matrix is singular or not positive definite at these parameter values") from exc
+        Linv = np.linalg.inv(L)
+        A = Linv @ K @ np.swapaxes(Linv, -1, -2)
+        return 0.5 * (A + np.swapaxes(A, -1, -2)), Linv
+
+    def eigenvalues(self, values: Mapping[Any, Any]) -> np.ndarray:
+        """Generalised eigenvalues ``lambda = omega**2`` of ``K0 phi = lambda M phi``, ascending (may be < 0)."""
+        A, _ = self._whitened(values)
+        return np.linalg.eigvalsh(A)
+
+    def natural_frequencies(self, values: Mapping[Any, Any]) -> np.ndarray:
+        """Undamped natural angular frequencies (rad/s), ascending, from M and the constant part K0.
+
+        Raises :class:`ModelError` when M is not positive definite or when the equilibrium is
+        statically unstable (K0 has negative eigenvalues relative to M; use :meth:`eigenvalues`).
+
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(2).linearize()
+        >>> lin.natural_frequencies({"m1": 1, "m2": 1, "l1": 1, "l2": 1, "g": 1}).round(6).tolist()
+        [0.765367, 1.847759]
+        """
+        lam = self.eigenvalues(values)
+        return _frequencies(lam)
+
+    def modes(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray]:
+        """``(omega, Phi)``: frequencies and mass-normalised mode shapes (columns), ``Phi.T M Phi = I``.
+
+        Each mode is signed so that its largest-magnitude component is positive.
+        """
+        A, Linv = self._whitened(values)
+        lam, V = np.linalg.eigh(A)
+        omega = _frequencies(lam)
+        Phi = np.swapaxes(Linv, -1, -2) @ V
+        idx = np.argmax(np.abs(Phi), axis=-2)[..., None, :]
+        sign = np.sign(np.take_along_axis(Phi, idx, axis=-2))
+        return omega, Phi * np.where(sign == 0, 1.0, sign)
+
+
+def _frequencies(lam: np.ndarray) -> np.ndarray:
+    scale = np.max(np.abs(lam), axis=-1, keepdims=True)
+    tiny = 1e-12 * np.where(scale == 0, 1.0, scale)
+    if np.any(lam < -tiny):
+        raise ModelError(
+            "the equilibrium is statically unstable (negative stiffness eigenvalues "
+            f"{lam[lam < -tiny].tolist()}): natural frequencies are imaginary; use eigenvalues()"
+        )
+    return np.sqrt(np.clip(lam, 0.0, None))
+
+
+def _point_map(system: LagrangianSystem, point: Mapping[Any, Any] | None) -> dict[sp.Symbol, sp.Expr]:
+    q0 = {q: sp.S.Zero for q in system.coordinates}
+    by_name = {q.name: q for q in system.coordinates}
+    for key, val in (point or {}).items():
+        name = key.name if isinstance(key, sp.Symbol) else str(key)
+        if name not in by_name:
+            raise ModelError(f"linearisation point names {name!r}, which is not a coordinate")
+        q0[by_name[name]] = sp.sympify(val)
+    return q0
+
+
+def linearize_system(
+    system: LagrangianSystem, point: Mapping[Any, Any] | None, *, check_equilibrium: bool = True
+) -> LinearModel:
+    """Implementation of :meth:`LagrangianSystem.linearize` (see there)."""
+    q, qd = system.coordinates, system.velocities
+    n = len(q)
+    q0 = _point_map(system, point)
+    at = {**q0, **{v: sp.S.Zero for v in qd}}
+
+    parts = system._parts
+    dep = system._dependent
+    qt = [*q, t]
+
+    # Damping: gyroscopic part of b (T = 1/2 q'Mq' + b.q' + T0), dM/dt, Rayleigh, velocity-dependent forces.
+    D = sp.zeros(n, n)
+    db_dt: list[list[sp.Expr]] = [[] for _ in range(n)]
+    for i in range(n):
+        grads = _terms.grouped_gradient(parts.get((i,), []), qt)
+        db_dt[i] = grads[n]
+        for j in range(n):
+            if grads[j]:
+                c = sp.Add(*grads[j])
+                D[i, j] += c
+                D[j, i] -= c
+    M = system.mass_matrix
+    R, Q = system.dissipation, system.forces
+    for i in range(n):
+        for j in range(n):
+            extra = M[i, j].diff(t) if t in M[i, j].free_symbols else 0
+            if R != 0:
+                extra += R.diff(qd[i], qd[j])
+            if Q[i] != 0:
+                extra -= Q[i].diff(qd[j])
+            D[i, j] += extra
+
+    # Stiffness: K = dW/dq at the point with W = dV/dq - dT0/dq + db/dt - Q; f = -W at the point.
+    dV = _terms.grouped_gradient(system._potential_groups, q)
+    dT0 = _terms.grouped_gradient(parts.get((), []), q)
+    K = sp.zeros(n, n)
+    f = sp.zeros(n, 1)
+    for i in range(n):
+        W = sp.Add(*dV[i]) - sp.Add(*dT0[i]) + sp.Add(*db_dt[i]) - Q[i]
+        grads = _terms.grouped_gradient(_terms.group_terms(_terms.expand_terms(W, dep), dep), q)
+        for j in range(n):
+            if grads[j]:
+                K[i, j] = sp.Add(*grads[j]).xreplace(at)
+        f[i] = -W.xreplace(at)
+
+    lin = LinearModel(M=M.xreplace(at), D=D.xreplace(at), K=K, f=f, coordinates=tuple(q), point=dict(q0))
+    if check_equilibrium:
+        for i in range(n):
+            fi = f[i]
+            if fi != 0 and t not in fi.free_symbols and sp.simplify(fi) != 0:
+                raise ModelError(
+                    f"the point {q0} is not an equilibrium: the generalised force on {q[i].name} is {fi}; "
+                    "pass check_equilibrium=False to linearise anyway"
+                )
+    return lin
