@@ -1,0 +1,12 @@
+"""Test configuration shared by the whole suite."""
+
+import os
+
+# Small dense linear algebra (SVDs, eigenproblems) runs many times slower when OpenBLAS starts its own
+# threads on top of pytest-xdist's workers on a 2-core machine; one BLAS thread per worker is fastest here.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
