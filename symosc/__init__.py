@@ -11,6 +11,7 @@ array([1.])
 
 from . import errors, numeric, symbols
 from .errors import ConvergenceError, IdentificationError, ModelError, ParameterError, SymoscError
+from .sweep import sweep  # eager (light), so that the function is not shadowed by its submodule
 from .symbols import ddot, dot, t
 
 __version__ = "0.1.0"
@@ -25,6 +26,7 @@ __all__ = [
     "dot",
     "errors",
     "numeric",
+    "sweep",
     "symbols",
     "t",
 ]
@@ -47,8 +49,4 @@ def __getattr__(name: str):
         "cli",
     }:
         return importlib.import_module(f".{name}", __name__)
-    if name == "sweep":
-        from .sweep import sweep
-
-        return sweep
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")
