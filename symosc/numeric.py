@@ -33,6 +33,7 @@ symosc.errors.ParameterError: l must be positive (declared positive), got -1.0
 from __future__ import annotations
 
 import builtins
+import inspect
 import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -296,6 +297,10 @@ def compile(
                 lines.append(f"    _out[{idx // cols}, {idx % cols}] = {code}")
             lines.append("    return _out")
     else:
+        # Fast path for scalar calls (ODE right-hand sides): one array built directly, no broadcasting.
+        elements = ", ".join(element_code)
+        lines.append(f"    if _all_scalar({', '.join(arg_names)}):")
+        lines.append(f"        return _scalar_out([{elements}], {shape or ()!r})")
         if arg_names:
             lines.append(f"    _shape = numpy.broadcast_shapes({', '.join(f'numpy.shape({a})' for a in arg_names)})")
         else:
@@ -305,14 +310,8 @@ def compile(
         else:
             joined = ", ".join(f"_bcast({c}, _shape)" for c in element_code)
             lines.append(f"    return _stack([{joined}], _shape, {shape!r})")
-    source = "\n".join(lines) + "\n"
-    namespace: dict[str, Any] = {
-        "numpy": np,
-        "mpmath": mpmath,
-        "_bcast": _bcast,
-        "_stack": _stack,
-        "__builtins__": builtins,
-    }
+    source = _preamble(backend) + "\n".join(lines) + "\n"
+    namespace: dict[str, Any] = {"__builtins__": builtins}
     exec(builtins.compile(source, f"<symosc:{fname}>", "exec"), namespace)
     return CompiledFunction(
         args=tuple(arg_syms),
@@ -336,6 +335,29 @@ def _argument_names(symbols: list[sp.Symbol]) -> list[str]:
         ok = ok and s.name not in reserved and s.name not in names
         names.append(s.name if ok else f"_a{i}")
     return names
+
+
+_SCALAR_TYPES = frozenset({float, int, complex, np.float64, np.float32, np.int64, np.complex128})
+
+
+def _preamble(backend: str) -> str:
+    """Imports and helpers the generated code needs, so that ``.source`` runs on its own."""
+    if backend == "mpmath":
+        return "import mpmath\n\n\n"
+    helpers = "\n\n".join(inspect.getsource(h) for h in (_all_scalar, _scalar_out, _bcast, _stack))
+    types = "{float, int, complex, np.float64, np.float32, np.int64, np.complex128}"
+    return f"import numpy\nimport numpy as np\n\n_SCALAR_TYPES = frozenset({types})\n\n\n{helpers}\n\n"
+
+
+def _all_scalar(*values: Any) -> bool:
+    return all(type(v) in _SCALAR_TYPES for v in values)
+
+
+def _scalar_out(elements: list, shape: tuple[int, ...]) -> np.ndarray:
+    arr = np.array(elements)
+    if not np.issubdtype(arr.dtype, np.inexact):
+        arr = arr.astype(float)
+    return arr.reshape(shape)
 
 
 def _bcast(value: Any, shape: tuple[int, ...]) -> np.ndarray:
