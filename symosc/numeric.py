@@ -276,6 +276,7 @@ def compile(
     if not fname.isidentifier():
         raise ParameterError(f"name must be a Python identifier, got {name!r}")
 
+    items = [_evaluate_root_constants(e, (dps or mpmath.mp.dps) + 10 if backend == "mpmath" else 20) for e in items]
     arg_names = _argument_names(arg_syms)
     renamed = {s: sp.Symbol(n, **s.assumptions0) for s, n in zip(arg_syms, arg_names, strict=True)}
     items = [e.xreplace(renamed) for e in items]
@@ -322,6 +323,16 @@ def compile(
         check=check,
         _func=namespace[fname],
     )
+
+
+def _evaluate_root_constants(expr: sp.Expr, digits: int) -> sp.Expr:
+    """Replace algebraic-number constants (``CRootOf``) by floats with ``digits`` significant digits.
+
+    Exact matrix functions of matrices with irreducible cubic (or higher) characteristic polynomials
+    contain ``CRootOf`` objects, which no numeric printer knows.
+    """
+    roots = expr.atoms(sp.CRootOf)
+    return expr.xreplace({r: r.evalf(digits) for r in roots}) if roots else expr
 
 
 def _argument_names(symbols: list[sp.Symbol]) -> list[str]:

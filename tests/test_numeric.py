@@ -125,3 +125,14 @@ def test_resolve_and_bind():
 def test_complex_expression():
     f = compile(sp.exp(sp.I * x), [x])
     np.testing.assert_allclose(f(np.pi), -1.0 + 0j, atol=1e-15)
+
+
+def test_algebraic_root_constants_are_evaluated():
+    """CRootOf constants (roots of irreducible quintics) compile at the backend's precision."""
+    r = sp.CRootOf(x**5 - x - 1, 0)
+    f = compile(r * y, [y])
+    assert f(2.0) == pytest.approx(2 * 1.1673039782614187, rel=1e-15)
+    g = compile(r * y, [y], backend="mpmath", dps=40)
+    with mpmath.workdps(40):
+        ref = mpmath.findroot(lambda z: z**5 - z - 1, 1.17)
+        assert abs(g(1) - ref) < mpmath.mpf("1e-38")

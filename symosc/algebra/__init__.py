@@ -1,0 +1,56 @@
+"""Matrix calculus (Bulgakov, "Oscillations", ch. 1).
+
+* :func:`matrix_function` — f(A) by Sylvester's formula, confluent form for multiple roots, accurate divided
+  differences for clusters of nearly equal floating-point roots; :func:`spectral_decomposition` gives the roots,
+  principal idempotents and nilpotents.
+* Polynomial matrices — :func:`determinantal_divisors`, :func:`invariant_factors`, :func:`elementary_divisors`,
+  :func:`smith_form`, :func:`minimal_polynomial`, :func:`polymatrix_divmod`, :func:`pencil_divisors`.
+* Characteristic polynomials — :func:`leverrier`, :func:`krylov`, :func:`danilevsky`, :func:`adjugate_poly`.
+* The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`.
+"""
+
+from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
+from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
+from .matrix_functions import MatrixFunction, matrix_function, series_converges
+from .matrizant import Matrizant, matrizant, matrizant_numeric
+from .polynomial_matrices import (
+    PencilDivisors,
+    SmithForm,
+    determinantal_divisors,
+    elementary_divisors,
+    invariant_factors,
+    minimal_polynomial,
+    pencil_divisors,
+    polymatrix_divmod,
+    smith_form,
+)
+from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
+
+__all__ = [
+    "MatrixFunction",
+    "Matrizant",
+    "PencilDivisors",
+    "SmithForm",
+    "SpectralComponent",
+    "SpectralDecomposition",
+    "adjugate_poly",
+    "charpoly",
+    "danilevsky",
+    "determinantal_divisors",
+    "elementary_divisors",
+    "function_elementary_divisors",
+    "interpolation_basis",
+    "interpolation_polynomial",
+    "invariant_factors",
+    "krylov",
+    "leverrier",
+    "matrix_function",
+    "matrizant",
+    "matrizant_numeric",
+    "minimal_polynomial",
+    "pencil_divisors",
+    "polymatrix_divmod",
+    "series_converges",
+    "smith_form",
+    "spectral_decomposition",
+]
