@@ -1,0 +1,77 @@
+"""Carson (Heaviside) operational calculus, after Bulgakov ch. 2.
+
+Images are **Carson** images ``X(p) = p * Laplace[x](p)`` unless a function says otherwise; originals are
+functions of ``t > 0``.
+
+>>> import sympy as sp
+>>> from symosc.operational import carson, inverse_carson
+>>> p, t = sp.symbols("p t")
+>>> carson(sp.sin(t), t, p)
+p/(p**2 + 1)
+>>> inverse_carson(p / (p**2 + 1), p, t)
+sin(t)
+"""
+
+from .difference import DifferenceSolution, inverse_step_image, solve_difference, step_image
+from .heaviside import first_expansion, heaviside_expand, residue_inverse
+from .integral_square import cross_integral, hurwitz_matrix, integral_square, is_hurwitz
+from .systems import OperationalSolution, solve_operational
+from .table import CARSON_TABLE, TableEntry, carson_by_table, carson_matrix_exp, table_entry
+from .theorems import (
+    advance,
+    convolution,
+    delay,
+    differentiate_image,
+    differentiate_original,
+    duhamel,
+    final_value,
+    finite_difference,
+    finite_sum,
+    initial_value,
+    integral_to_infinity,
+    integrate_original,
+    product_of_originals,
+    shift,
+    similarity,
+)
+from .transform import NumericInversion, carson, inverse_carson, invert_numeric
+
+__all__ = [
+    "CARSON_TABLE",
+    "DifferenceSolution",
+    "NumericInversion",
+    "OperationalSolution",
+    "TableEntry",
+    "advance",
+    "carson",
+    "carson_by_table",
+    "carson_matrix_exp",
+    "convolution",
+    "cross_integral",
+    "delay",
+    "differentiate_image",
+    "differentiate_original",
+    "duhamel",
+    "final_value",
+    "finite_difference",
+    "finite_sum",
+    "first_expansion",
+    "heaviside_expand",
+    "hurwitz_matrix",
+    "initial_value",
+    "integral_square",
+    "integral_to_infinity",
+    "integrate_original",
+    "inverse_carson",
+    "inverse_step_image",
+    "invert_numeric",
+    "is_hurwitz",
+    "product_of_originals",
+    "residue_inverse",
+    "shift",
+    "similarity",
+    "solve_difference",
+    "solve_operational",
+    "step_image",
+    "table_entry",
+]

@@ -1,0 +1,164 @@
+"""Heaviside expansion theorems and residue inversion (Bulgakov §2.19, §2.30).
+
+Convention: images are **Carson** images, ``X(p) = p * Laplace[x](p)``; originals are returned for ``t > 0``
+(no ``Heaviside(t)`` factor).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..errors import ConvergenceError, ModelError
+from ..symbols import t as _t
+from ._rational import as_rational, distinct_roots, has_floats, real_form, residue_terms
+
+__all__ = ["first_expansion", "heaviside_expand", "residue_inverse"]
+
+
+def heaviside_expand(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True, roots: str = "exact"):
+    """Original of a rational Carson image by the second expansion theorem (Bulgakov 2.74).
+
+    For ``X(p) = p * eps(p)/Delta(p)`` with roots ``l`` of ``Delta`` of multiplicity ``q``::
+
+        x(t) = sum_l sum_{rho<q} t**rho exp(l t)/(rho! (q-rho-1)!) [d^(q-rho-1)/dp (eps/D_l)](l)
+
+    (simple roots: ``eps(l)/Delta'(l) exp(l t)``).  ``X/p`` must be strictly proper, i.e. the Carson image of an
+    ordinary function has ``deg numerator <= deg denominator``.
+
+    Parameters
+    ----------
+    image : Expr or Matrix
+        Rational Carson image in ``p`` (a Matrix is inverted entry by entry).
+    p, t : Symbol
+        Image variable and time.
+    real : bool
+        Combine conjugate complex poles into ``exp(a t) (A cos(b t) + B sin(b t))`` (Bulgakov 2.89–2.91); free
+        parameters are taken as real for this.
+    roots : {"exact", "numeric"}
+        ``"exact"``: radicals or ``CRootOf`` (exact, but ``CRootOf`` results stay complex and cannot be compiled);
+        ``"numeric"``: 30-digit numeric roots (real form, compilable).  Float coefficients always use numeric roots.
+
+    Returns
+    -------
+    Expr or Matrix
+        The original for ``t > 0``.
+
+    Raises
+    ------
+    ModelError
+        If the image is not rational in ``p`` or improper (its original would contain delta functions).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t")
+    >>> heaviside_expand(p * (3 * p + 1) / ((p - 1) ** 2 * (p + 2)), p, t)
+    (4*t/3 + 5/9)*exp(t) - 5*exp(-2*t)/9
+    >>> heaviside_expand(p**2 / (p**2 + 4), p, t)
+    cos(2*t)
+    """
+    if isinstance(image, sp.MatrixBase):
+        return image.applyfunc(lambda e: heaviside_expand(e, p, t, real=real, roots=roots))
+    if roots not in ("exact", "numeric"):
+        raise ModelError(f"roots must be 'exact' or 'numeric', got {roots!r}")
+    num, den = as_rational(image, p)
+    if num.is_zero:
+        return sp.S.Zero
+    if num.degree() > den.degree():
+        raise ModelError(
+            f"improper Carson image: deg numerator {num.degree()} > deg denominator {den.degree()} (delta functions)"
+        )
+    lap_den = den * sp.Poly(p, p)
+    lap_num = num
+    lap_num, lap_den = _cancel_polys(lap_num, lap_den)
+    found = distinct_roots(lap_den, numeric=roots == "numeric") if lap_den.degree() > 0 else []
+    terms = residue_terms(lap_num, lap_den, p, t, found)
+    expr = sp.Add(*[term for _, _, term in terms])
+    if real:
+        expr = real_form(expr, t)
+    return expr
+
+
+def _cancel_polys(num: sp.Poly, den: sp.Poly) -> tuple[sp.Poly, sp.Poly]:
+    if has_floats(num, den):  # gcd over RR[params] is unreliable: cancel only common powers of p
+        var = den.gen
+        while num.degree() > 0 and den.degree() > 0 and num.TC() == 0 and den.TC() == 0:
+            num, den = num.quo(sp.Poly(var, var)), den.quo(sp.Poly(var, var))
+        return num, den
+    g = num.gcd(den)
+    if g.degree() > 0:
+        num, den = num.quo(g), den.quo(g)
+    return num, den
+
+
+def residue_inverse(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True):
+    """Original as the sum of residues of ``X(p) exp(p t)/p`` (Bulgakov 2.141), for images ``A(p)/B(p)``.
+
+    ``B`` must be a polynomial in ``p`` and ``A`` analytic at the zeros of ``B`` (e.g. a polynomial times
+    ``exp(a*p)`` with ``a <= 0`` is *not* allowed: Jordan's lemma fails for ``t`` below the delay; use
+    :func:`~symosc.operational.delay` instead).  For rational images this equals :func:`heaviside_expand`.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t")
+    >>> residue_inverse(p / (p + 1) ** 2, p, t)
+    t*exp(-t)
+    >>> residue_inverse(sp.sinh(p) / sp.cosh(p), p, t)
+    Traceback (most recent call last):
+    ...
+    symosc.errors.ModelError: residue_inverse needs a polynomial denominator in p, got p*cosh(p); try invert_numeric
+    """
+    if isinstance(image, sp.MatrixBase):
+        return image.applyfunc(lambda e: residue_inverse(e, p, t, real=real))
+    if any(e.args[0].as_coefficient(p) is not None for e in sp.sympify(image).atoms(sp.exp)):
+        raise ModelError("exponential factors exp(c*p) in the image: use the delay theorem (symosc.operational.delay)")
+    expr = sp.together(sp.sympify(image) / p)
+    a, b = sp.fraction(expr)
+    if not b.is_polynomial(p):
+        raise ModelError(f"residue_inverse needs a polynomial denominator in p, got {b}; try invert_numeric")
+    if a.is_polynomial(p):
+        return heaviside_expand(image, p, t, real=real)
+    den = sp.Poly(b, p)
+    total = sp.S.Zero
+    lead = den.LC()
+    roots = distinct_roots(den)
+    for i, (root, q) in enumerate(roots):
+        others = sp.Mul(*[(p - r) ** m for j, (r, m) in enumerate(roots) if j != i])
+        g = a * sp.exp(p * t) / (lead * others)
+        total += sp.diff(g, p, q - 1).subs(p, root) / sp.factorial(q - 1)
+    total = sp.expand(total)
+    return real_form(total, t) if real else total
+
+
+def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, tol=None):
+    """Original from the expansion ``X(p) = a0 + a1/p + a2/p**2 + ...`` (first expansion theorem, Bulgakov 2.72).
+
+    Returns the partial sum ``a0 + a1 t + ... + a_{order-1} t**(order-1)/(order-1)!``, an entire-function series in
+    ``t``.  With ``tol`` (and ``t`` a number) the call raises :class:`ConvergenceError` when the last retained term
+    exceeds ``tol``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t")
+    >>> first_expansion(p / (p + 1), p, t, order=4)
+    -t**3/6 + t**2/2 - t + 1
+    """
+    if order < 1:
+        raise ModelError("order must be a positive integer")
+    s = sp.Dummy("s")
+    expr = sp.sympify(image).subs(p, 1 / s)
+    ser = sp.series(expr, s, 0, order).removeO()
+    if ser.has(1 / s) or any(term.as_coeff_exponent(s)[1] < 0 for term in sp.Add.make_args(sp.expand(ser))):
+        raise ModelError("the image grows at p -> oo; the first expansion theorem needs X(p) analytic at infinity")
+    coeffs = [ser.coeff(s, k) if k else ser.subs(s, 0) for k in range(order)]
+    out = sp.Add(*[c * t**k / sp.factorial(k) for k, c in enumerate(coeffs)])
+    if tol is not None:
+        last = coeffs[-1] * t ** (order - 1) / sp.factorial(order - 1)
+        if last.is_number and abs(complex(last)) > tol:
+            raise ConvergenceError(
+                f"first expansion: last term {float(abs(complex(last))):.3g} > tol={tol}; raise order",
+                achieved=float(abs(complex(last))),
+            )
+    return out

@@ -1,0 +1,273 @@
+"""The Carson transform ``X(p) = p * Integral(x(t) exp(-p t), (t, 0, oo))`` and its inversion (Bulgakov §2.2, §2.29).
+
+Carson's image differs from Laplace's by the factor ``p``: the unit step has image 1, a constant is its own
+image, and ``x'(t) <-> p (X(p) - x(0))``.  Originals are functions of ``t > 0``; results carry no ``Heaviside(t)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from .. import numeric
+from ..errors import ConvergenceError, ModelError, ParameterError
+from ..symbols import t as _t
+from ._rational import check_symbol
+from .heaviside import heaviside_expand
+from .table import _Unsupported, carson_by_table
+
+__all__ = ["NumericInversion", "carson", "inverse_carson", "invert_numeric"]
+
+_METHODS = ("auto", "table", "sympy")
+_INV_METHODS = ("auto", "heaviside", "sympy")
+
+
+def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "auto"):
+    """Carson image ``p * Laplace[x](p)`` of an original ``x(t)`` (scalar or Matrix).
+
+    Parameters
+    ----------
+    x : Expr or Matrix
+        The original, for ``t > 0``.
+    t, p : Symbol
+        Time and image variable (``p`` defaults to ``Symbol("p")``).
+    method : {"auto", "table", "sympy"}
+        ``"table"``: the rewrite rules of §2.18 for quasi-polynomials with delayed steps (fast, exact);
+        ``"sympy"``: ``p * sympy.laplace_transform``; ``"auto"``: table first, SymPy for the rest.
+
+    Raises
+    ------
+    ModelError
+        If no closed form is found.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t")
+    >>> carson(sp.exp(-2 * t), t, p)
+    p/(p + 2)
+    >>> carson(sp.Integer(1), t, p)
+    1
+    >>> carson(t**2 / 2, t, p)
+    p**(-2)
+    """
+    check_symbol(t, "t")
+    p = sp.Symbol("p") if p is None else check_symbol(p, "p")
+    if method not in _METHODS:
+        raise ParameterError(f"unknown method {method!r}; choose one of {_METHODS}")
+    if isinstance(x, sp.MatrixBase):
+        return x.applyfunc(lambda e: carson(e, t, p, method=method))
+    x = sp.sympify(x)
+    if method in ("auto", "table"):
+        try:
+            return carson_by_table(x, t, p)
+        except _Unsupported as exc:
+            if method == "table":
+                raise ModelError(f"the table rules do not cover {x} ({exc}); use method='sympy'") from exc
+    lap = sp.laplace_transform(x, t, p, noconds=True)
+    if lap.has(sp.LaplaceTransform):
+        raise ModelError(f"no closed-form Carson image found for {x}")
+    return sp.simplify(p * lap)
+
+
+def inverse_carson(
+    image, p: sp.Symbol, t: sp.Symbol = _t, *, method: str = "auto", real: bool = True, roots: str = "exact"
+):
+    """Original ``x(t)``, ``t > 0``, of a Carson image ``X(p)``.
+
+    ``"auto"`` uses the Heaviside expansion (:func:`heaviside_expand`) for rational images, the delay theorem
+    ``exp(-p tau) X(p) <-> x(t - tau) 1(t - tau)`` for sums of rational images times ``exp(-p tau)``, and
+    ``sympy.inverse_laplace_transform(X/p)`` for anything else.  For images without a closed-form original use
+    :func:`invert_numeric`.
+
+    Raises
+    ------
+    ModelError
+        For an improper rational image (``deg numerator > deg denominator``: the original is not an ordinary
+        function) and when no closed form is found.
+
+    ``roots="numeric"`` uses 30-digit numeric poles (see :func:`heaviside_expand`).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t")
+    >>> inverse_carson(p / (p + 1) ** 2, p, t)
+    t*exp(-t)
+    >>> inverse_carson(sp.exp(-2 * p) / p, p, t)
+    (t - 2)*Heaviside(t - 2)
+    >>> inverse_carson(p**2 / (p + 1), p, t)
+    Traceback (most recent call last):
+    ...
+    symosc.errors.ModelError: improper Carson image: deg numerator 2 > deg denominator 1 (delta functions)
+    """
+    check_symbol(p, "p")
+    check_symbol(t, "t")
+    if method not in _INV_METHODS:
+        raise ParameterError(f"unknown method {method!r}; choose one of {_INV_METHODS}")
+    if isinstance(image, sp.MatrixBase):
+        return image.applyfunc(lambda e: inverse_carson(e, p, t, method=method, real=real, roots=roots))
+    image = sp.sympify(image)
+    if method in ("auto", "heaviside"):
+        if image.is_rational_function(p):
+            return heaviside_expand(image, p, t, real=real, roots=roots)
+        delayed = _split_delays(image, p)
+        if delayed is not None:
+            out = sp.S.Zero
+            for tau, part in delayed.items():
+                x = heaviside_expand(part, p, t, real=real, roots=roots)
+                out += x.subs(t, t - tau) * sp.Heaviside(t - tau) if tau != 0 else x
+            return out
+        if method == "heaviside":
+            raise ModelError(f"{image} is not rational in {p} (nor rational times exp(-p*tau)); use method='sympy'")
+    res = sp.inverse_laplace_transform(image / p, p, t)
+    if res.has(sp.InverseLaplaceTransform):
+        raise ModelError(f"no closed-form original found for {image}; use invert_numeric for numbers")
+    return res.subs(sp.Heaviside(t), 1)
+
+
+def _split_delays(image, p) -> dict | None:
+    """``{tau: rational part}`` if image = sum_k R_k(p) exp(-p tau_k) with tau_k >= 0, else None."""
+    parts: dict = {}
+    for term in sp.Add.make_args(sp.expand(image, power_exp=True)):
+        tau = sp.S.Zero
+        rest = sp.S.One
+        for f in sp.Mul.make_args(term):
+            if isinstance(f, sp.exp) or (f.is_Pow and f.base == sp.E):
+                arg = f.exp if f.is_Pow else f.args[0]
+                c = sp.expand(arg).coeff(p)
+                if sp.expand(arg - c * p).has(p) or c.has(p):
+                    return None
+                tau -= c
+                rest *= sp.exp(sp.expand(arg - c * p))
+            else:
+                rest *= f
+        if tau.is_negative or not rest.is_rational_function(p):
+            return None
+        parts[tau] = parts.get(tau, 0) + rest
+    return {k: sp.cancel(v) for k, v in parts.items()}
+
+
+@dataclass(frozen=True)
+class NumericInversion:
+    """Values of an original found by numeric inversion of its image (:func:`invert_numeric`).
+
+    Attributes
+    ----------
+    t : ndarray
+        The times.
+    values : ndarray
+        ``x(t)`` (real part; complex images give complex values).
+    error_estimate : ndarray
+        ``|x_method - x_check|``: the difference to a second, independent method (de Hoog, Talbot or Stehfest;
+        the third is consulted only when the second disagrees).
+    method : str
+    converged : bool
+    """
+
+    t: np.ndarray
+    values: np.ndarray
+    error_estimate: np.ndarray
+    method: str
+    converged: bool
+
+    def __repr__(self) -> str:
+        return (
+            f"NumericInversion(method={self.method!r}, n={len(self.t)}, "
+            f"max_error_estimate={float(np.max(self.error_estimate)):.2e}, converged={self.converged})"
+        )
+
+    def plot(self, ax=None):
+        """Plot ``x(t)``."""
+        import matplotlib.pyplot as plt
+
+        ax = ax or plt.gca()
+        ax.plot(self.t, self.values)
+        ax.set_xlabel("t")
+        ax.set_ylabel("x(t)")
+        return ax
+
+
+def invert_numeric(
+    image,
+    p: sp.Symbol,
+    times,
+    *,
+    values: dict | None = None,
+    method: str = "dehoog",
+    dps: int = 30,
+    tol: float = 1e-10,
+) -> NumericInversion:
+    """Numeric original of a Carson image by Bromwich inversion (mpmath ``invertlaplace`` on ``X(p)/p``).
+
+    Each value is computed by ``method`` and checked by a second method (and a third if the second disagrees:
+    Talbot's contour fails for singularities on the imaginary axis); the difference is the error estimate.
+
+    Parameters
+    ----------
+    image : Expr
+        Carson image; any analytic expression in ``p`` (exponentials, square roots, ...).
+    times : float or array_like
+        Times ``t > 0``.
+    values : dict, optional
+        Numbers for the other free symbols (keyed by Symbol or name).
+    method : {"talbot", "dehoog", "stehfest"}
+    dps : int
+        Working precision of mpmath.
+    tol : float
+        Largest accepted ``|difference| / (1 + |x|)``.
+
+    Raises
+    ------
+    ConvergenceError
+        If the two methods disagree by more than ``tol``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p = sp.Symbol("p")
+    >>> r = invert_numeric(p / sp.sqrt(p**2 + 1), p, [1.0, 2.0])   # J0(t)
+    >>> [round(float(v), 10) for v in r.values]
+    [0.7651976866, 0.2238907791]
+    """
+    check_symbol(p, "p")
+    expr = sp.sympify(image)
+    if values:
+        expr = numeric.bind(expr, values)
+    extra = sorted(expr.free_symbols - {p}, key=lambda s: s.name)
+    if extra:
+        raise ParameterError("missing values for: " + ", ".join(s.name for s in extra))
+    if method not in ("talbot", "dehoog", "stehfest"):
+        raise ParameterError(f"unknown method {method!r}; choose talbot, dehoog or stehfest")
+    checks = [m for m in ("dehoog", "talbot", "stehfest") if m != method]
+    func = numeric.compile(expr / p, [p], backend="mpmath", dps=dps, check=False).raw
+    ts = np.atleast_1d(np.asarray(times, dtype=float))
+    if np.any(ts <= 0):
+        raise ParameterError("invert_numeric needs times t > 0")
+    vals, errs = [], []
+    with mpmath.workdps(dps):
+        for tv in ts:
+            a = mpmath.invertlaplace(func, tv, method=method)
+            err = mpmath.inf
+            for check in checks:  # a second opinion; the third only if the second disagrees
+                err = min(err, abs(a - mpmath.invertlaplace(func, tv, method=check)))
+                if err <= tol * (1 + abs(a)):
+                    break
+            vals.append(complex(a))
+            errs.append(float(err))
+    arr = np.array(vals)
+    if np.all(np.abs(arr.imag) <= 1e-14 * (1 + np.abs(arr.real))):
+        arr = arr.real
+    err = np.array(errs)
+    bad = err > tol * (1 + np.abs(arr))
+    if np.any(bad):
+        i = int(np.argmax(err))
+        raise ConvergenceError(
+            f"numeric inversion did not reach tol={tol} at t={ts[i]} ({method} and {'/'.join(checks)} differ by "
+            f"{err[i]:.2e}); raise dps or check that the image is analytic for Re p > 0",
+            achieved=float(err[i]),
+        )
+    return NumericInversion(t=ts, values=arr, error_estimate=err, method=method, converged=True)
