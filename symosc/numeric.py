@@ -42,7 +42,7 @@ from typing import Any
 import mpmath
 import numpy as np
 import sympy as sp
-from sympy.printing.numpy import NumPyPrinter
+from sympy.printing.numpy import SciPyPrinter
 from sympy.printing.pycode import MpmathPrinter
 
 from .errors import ParameterError
@@ -81,11 +81,20 @@ def _flatten_exprs(exprs: Any) -> tuple[list[sp.Expr], tuple[int, ...] | None]:
     return [sp.sympify(exprs)], None
 
 
-class _SafeNumPyPrinter(NumPyPrinter):
-    """NumPy printer whose output namespace is the module-level ``numpy`` import."""
+class _SafeNumPyPrinter(SciPyPrinter):
+    """NumPy printer (special functions through ``scipy.special``) with fully qualified module names."""
 
     def __init__(self) -> None:
         super().__init__({"fully_qualified_modules": True, "inline": True, "allow_unknown_functions": False})
+
+    # Complete elliptic integrals: SymPy and SciPy both use the parameter m = k^2.
+    def _print_elliptic_k(self, expr: sp.Expr) -> str:
+        return f"scipy.special.ellipk({self._print(expr.args[0])})"
+
+    def _print_elliptic_e(self, expr: sp.Expr) -> str:
+        if len(expr.args) != 1:
+            return self._print_not_supported(expr)
+        return f"scipy.special.ellipe({self._print(expr.args[0])})"
 
 
 def _check_value(symbol: sp.Symbol, value: Any, backend: str) -> Any:
@@ -357,7 +366,8 @@ def _preamble(backend: str) -> str:
         return "import mpmath\n\n\n"
     helpers = "\n\n".join(inspect.getsource(h) for h in (_all_scalar, _scalar_out, _bcast, _stack))
     types = "{float, int, complex, np.float64, np.float32, np.int64, np.complex128}"
-    return f"import numpy\nimport numpy as np\n\n_SCALAR_TYPES = frozenset({types})\n\n\n{helpers}\n\n"
+    imports = "import numpy\nimport numpy as np\nimport scipy.special\n"
+    return f"{imports}\n_SCALAR_TYPES = frozenset({types})\n\n\n{helpers}\n\n"
 
 
 def _all_scalar(*values: Any) -> bool:

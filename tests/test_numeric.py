@@ -136,3 +136,14 @@ def test_algebraic_root_constants_are_evaluated():
     with mpmath.workdps(40):
         ref = mpmath.findroot(lambda z: z**5 - z - 1, 1.17)
         assert abs(g(1) - ref) < mpmath.mpf("1e-38")
+
+
+def test_special_functions_through_scipy():
+    """Bessel and elliptic functions compile in the NumPy backend; values checked against mpmath."""
+    k = sp.Symbol("k", positive=True)
+    f = compile([sp.besselj(1, x), sp.besseli(0, x), sp.elliptic_k(k)], [x, k])
+    got = f(2.5, 0.3)
+    np.testing.assert_allclose(
+        got, [float(mpmath.besselj(1, 2.5)), float(mpmath.besseli(0, 2.5)), float(mpmath.ellipk(0.3))], rtol=1e-14
+    )
+    assert "scipy.special" in f.source

@@ -1,0 +1,153 @@
+"""Poincaré series for the van der Pol limit cycle: truncation order vs error vs time (exact / float / mpmath).
+
+Compares the series evaluated at eps = 0.1, 0.5, 1 with the numerically located limit cycle (shooting with scipy
+DOP853 at rtol 1e-12: the reference the user would otherwise compute), and times the series generation in each
+arithmetic against one shooting solve.  Writes docs/img/series_tradeoff.png.
+
+    python benchmarks/series_tradeoff.py [--quick]
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+import sympy as sp
+
+from symosc.nonlinear import limit_cycle, numeric_limit_cycle
+
+x, v = sp.symbols("x v")
+VDP = (1 - x**2) * v
+
+
+def timed(fn, repeat=1):
+    best = float("inf")
+    out = None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return out, best
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    orders = [2, 4, 8, 12, 16, 24] + ([] if args.quick else [32, 48, 64])
+    eps_values = [0.1, 0.5, 1.0]
+
+    print("== generation time (seconds) per order and arithmetic ==")
+    print(f"{'order':>5} {'exact':>9} {'float':>9} {'mpmath30':>9}")
+    gen = {}
+    for n in orders:
+        row = []
+        for ar in ("exact", "float", "mpmath"):
+            if ar == "exact" and n > 32:
+                row.append(float("nan"))
+                continue
+            lc, t = timed(lambda ar=ar, n=n: limit_cycle(VDP, n, arithmetic=ar, dps=30), repeat=1 if n > 24 else 3)
+            gen[(ar, n)] = (lc, t)
+            row.append(t)
+        print(f"{n:>5d} " + " ".join(f"{t:9.4f}" for t in row))
+
+    print("\n== numeric reference (shooting on v = 0, DOP853 rtol 1e-12) ==")
+    refs = {}
+    for e in eps_values:
+        cyc, t = timed(lambda e=e: numeric_limit_cycle(VDP, e))
+        refs[e] = (cyc, t)
+        print(f"eps={e:<4} amplitude={cyc.amplitude:.13f} omega={cyc.frequency:.13f}  time={t:.3f} s")
+
+    best = gen[("mpmath", orders[-1])][0]
+    radius = best.frequency.radius_of_convergence()
+    print(f"\nradius of convergence estimate from {orders[-1]} terms: {radius}")
+
+    print("\n== frequency error |omega_N(eps) - omega_numeric| (series from mpmath arithmetic) ==")
+    print(
+        f"{'order':>5} "
+        + " ".join(f"{'eps=' + str(e):>11}" for e in eps_values)
+        + "   predicted (eps/R)^(N+2) at eps=1"
+    )
+    errs = {e: [] for e in eps_values}
+    for n in orders:
+        lc = gen[("mpmath", n)][0]
+        row = []
+        for e in eps_values:
+            err = abs(lc.frequency.evaluate(e) - refs[e][0].frequency)
+            errs[e].append(max(err, 1e-16))
+            row.append(err)
+        pred = (1.0 / radius.radius) ** (n + 2)
+        print(f"{n:>5d} " + " ".join(f"{r:11.2e}" for r in row) + f"   {pred:9.1e}")
+
+    print("\n== Pade [m/m] in eps^2 from the same coefficients: |omega_Pade - omega_numeric| ==")
+    pade_eps = [1.0, 2.0, 3.0]
+    prefs = {e: refs[e][0] if e in refs else numeric_limit_cycle(VDP, e) for e in pade_eps}
+    print(f"{'order':>5} " + " ".join(f"{'eps=' + str(e):>11}" for e in pade_eps) + "   (series alone at eps=3)")
+    for n in orders[2:]:
+        lc = gen[("mpmath", n)][0]
+        row = [abs(lc.frequency.evaluate_pade(e) - prefs[e].frequency) for e in pade_eps]
+        plain = abs(lc.frequency.evaluate(3.0) - prefs[3.0].frequency)
+        print(f"{n:>5d} " + " ".join(f"{r:11.2e}" for r in row) + f"   {plain:9.1e}")
+
+    if not args.quick:
+        print("\n== high-precision reference at eps = 1 (mpmath.odefun, 20 digits) ==")
+        ref_hp, t_hp = timed(lambda: numeric_limit_cycle(VDP, 1.0, dps=20))
+        print(f"omega = {ref_hp.frequency}  amplitude = {ref_hp.amplitude}  ({t_hp:.1f} s)")
+        import mpmath
+
+        for n in orders[3:]:
+            lc = gen[("mpmath", n)][0]
+            with mpmath.workdps(30):
+                err = abs(lc.frequency.evaluate(1.0, dps=30) - ref_hp.frequency)
+                aerr = abs(lc.amplitude.evaluate(1.0, dps=30) - ref_hp.amplitude)
+            print(f"order {n:>2d}: |omega error| = {float(err):.2e}   |amplitude error| = {float(aerr):.2e}")
+
+    print("\n== stiff relaxation regime, one limit-cycle solve (series useless here) ==")
+    print(f"{'eps':>5} {'method':>7} {'time [s]':>9} {'period':>14} {'amplitude':>12}")
+    for e in (10.0, 100.0):
+        for method in ("LSODA", "Radau") + (("DOP853",) if e == 10.0 else ()):
+            if args.quick and method == "Radau":
+                continue
+            cyc, t = timed(lambda e=e, method=method: numeric_limit_cycle(VDP, e, method=method, rtol=1e-10))
+            print(f"{e:>5g} {method:>7} {t:9.2f} {cyc.period:14.9f} {cyc.amplitude:12.9f}")
+
+    print("\n== time ratio: series generation / one numeric shooting solve (eps = 0.5) ==")
+    tnum = refs[0.5][1]
+    for n in orders:
+        te = gen[("exact", n)][1] if ("exact", n) in gen and n <= 32 else float("nan")
+        tf = gen[("float", n)][1]
+        print(f"order {n:>2d}: exact {te / tnum:7.3f}x   float {tf / tnum:7.3f}x")
+
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:  # pragma: no cover
+        return
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    for e in eps_values:
+        a1.semilogy(orders, errs[e], "o-", label=f"eps = {e}")
+    a1.axhline(1e-11, color="grey", ls=":", lw=1)
+    a1.set_xlabel("truncation order N")
+    a1.set_ylabel("|omega_N - omega_numeric|")
+    a1.set_title("van der Pol frequency series: error")
+    a1.legend()
+    for ar in ("exact", "float", "mpmath"):
+        ns = [n for n in orders if (ar, n) in gen and not (ar == "exact" and n > 32)]
+        a2.semilogy(ns, [gen[(ar, n)][1] for n in ns], "s-", label=ar)
+    a2.axhline(tnum, color="k", ls="--", lw=1, label="one shooting solve")
+    a2.set_xlabel("truncation order N")
+    a2.set_ylabel("generation time [s]")
+    a2.set_title("cost")
+    a2.legend()
+    fig.tight_layout()
+    out = Path(__file__).resolve().parent.parent / "docs" / "img" / "series_tradeoff.png"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out, dpi=110)
+    print(f"\nplot written to {out}")
+
+
+if __name__ == "__main__":
+    main()

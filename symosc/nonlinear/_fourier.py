@@ -1,0 +1,476 @@
+"""Truncated real Fourier series with exact, fixed-point, float or polynomial-ring coefficients.
+
+A series ``sum_n a_n cos(n tau) + b_n sin(n tau)`` (``n = 0..N``) is stored as two coefficient arrays.  Products
+are computed with :func:`numpy.convolve` on the coefficient arrays (the ``n + m`` terms) and on one reversed array
+(the ``n - m`` terms), so the inner loops run in C even for Python-object coefficients.  SymPy trigonometric
+simplification is never used.
+
+Arithmetic modes (:class:`_Arith` subclasses):
+
+``exact``  numerators are Python ``int`` with one common ``int`` denominator per series (about 50x faster than
+           :class:`fractions.Fraction` entries);
+``fixed``  numerators are Python ``int`` with the implicit denominator ``2**prec`` (the mpmath option: binary
+           fixed point, converted to ``mpmath.mpf`` on output);
+``float``  float64 arrays;
+``ring``   elements of a SymPy polynomial ring over QQ (symbolic parameters such as the amplitude ``A``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+import mpmath
+import numpy as np
+
+
+@dataclass
+class Trig:
+    """A truncated Fourier series: ``(cos[n] * cos(n tau) + sin[n] * sin(n tau)) / den`` summed over n."""
+
+    cos: np.ndarray
+    sin: np.ndarray
+    den: int = 1
+
+    @property
+    def n(self) -> int:
+        return len(self.cos) - 1
+
+
+def _pad(a: np.ndarray, n: int, zero: Any) -> np.ndarray:
+    if len(a) >= n:
+        return a
+    out = np.empty(n, dtype=a.dtype)
+    out[: len(a)] = a
+    out[len(a) :] = zero
+    return out
+
+
+class _Arith:
+    """Coefficient arithmetic shared by the series algorithms (subclasses fix the number type)."""
+
+    dtype: Any = object
+    zero: Any = 0
+    name = "abstract"
+
+    # --- scalars -------------------------------------------------------------------------------------------
+    def scalar(self, q: Fraction | int) -> Any:  # rational -> scalar
+        raise NotImplementedError
+
+    def sdiv(self, a: Any, b: Any) -> Any:
+        raise NotImplementedError
+
+    def smul(self, a: Any, b: Any) -> Any:
+        raise NotImplementedError
+
+    def is_zero(self, a: Any) -> bool:
+        raise NotImplementedError
+
+    def output(self, a: Any) -> Any:  # scalar -> user-facing number (Fraction, mpf, float, PolyElement)
+        return a
+
+    # --- series construction ---------------------------------------------------------------------------------
+    def new(self, n: int) -> Trig:
+        z = np.empty(n + 1, dtype=self.dtype)
+        z[:] = self.zero
+        s = np.empty(n + 1, dtype=self.dtype)
+        s[:] = self.zero
+        return Trig(z, s, 1 if self.name != "fixed" else self.one_den)
+
+    def monomial(self, kind: str, n: int, coeff: Any) -> Trig:
+        t = self.new(n)
+        self._set(t, kind, n, coeff)
+        return t
+
+    # --- generic operations on the numerator arrays -------------------------------------------------------
+    def _norm(self, t: Trig) -> Trig:
+        return t
+
+    def _align(self, a: Trig, b: Trig) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int]:
+        n = max(len(a.cos), len(b.cos))
+        return (
+            _pad(a.cos, n, self.zero),
+            _pad(a.sin, n, self.zero),
+            _pad(b.cos, n, self.zero),
+            _pad(b.sin, n, self.zero),
+            1,
+        )
+
+    def add(self, a: Trig, b: Trig) -> Trig:
+        ac, as_, bc, bs, _ = self._align(a, b)
+        return Trig(ac + bc, as_ + bs, a.den)
+
+    def sub(self, a: Trig, b: Trig) -> Trig:
+        ac, as_, bc, bs, _ = self._align(a, b)
+        return Trig(ac - bc, as_ - bs, a.den)
+
+    def scale(self, a: Trig, s: Any) -> Trig:
+        return Trig(a.cos * s, a.sin * s, a.den)
+
+    def scale_int(self, a: Trig, k: int) -> Trig:
+        return Trig(a.cos * k, a.sin * k, a.den)
+
+    def deriv(self, a: Trig) -> Trig:
+        k = np.arange(len(a.cos), dtype=object if self.dtype is object else float)
+        return Trig(a.sin * k, -(a.cos * k), a.den)
+
+    def _products(self, a: Trig, b: Trig) -> tuple[np.ndarray, np.ndarray]:
+        """Twice the numerators of a*b (before dividing by 2 and by the denominators)."""
+        ac, as_, bc, bs = a.cos, a.sin, b.cos, b.sin
+        na, nb = len(ac) - 1, len(bc) - 1
+        n = na + nb
+        # n + m terms
+        cc = np.convolve(ac, bc)
+        ss = np.convolve(as_, bs)
+        sc = np.convolve(as_, bc)
+        cs = np.convolve(ac, bs)
+        out_c = cc - ss
+        out_s = sc + cs
+        # n - m terms: index j + nb holds sum over n - m = j
+        dcc = np.convolve(ac, bc[::-1])
+        dss = np.convolve(as_, bs[::-1])
+        dsc = np.convolve(as_, bc[::-1])
+        dcs = np.convolve(ac, bs[::-1])
+        dc = dcc + dss  # cos(n - m)
+        ds = dsc - dcs  # sin(n - m)
+        # fold j >= 0
+        out_c[: na + 1] = out_c[: na + 1] + dc[nb:]
+        out_s[: na + 1] = out_s[: na + 1] + ds[nb:]
+        # fold j < 0: cos even, sin odd; j = -1..-nb at index nb-1..0
+        if nb > 0:
+            neg_c = dc[:nb][::-1]
+            neg_s = ds[:nb][::-1]
+            out_c[1 : nb + 1] = out_c[1 : nb + 1] + neg_c
+            out_s[1 : nb + 1] = out_s[1 : nb + 1] - neg_s
+        out_s[0] = self.zero
+        assert len(out_c) == n + 1
+        return out_c, out_s
+
+    def mul(self, a: Trig, b: Trig) -> Trig:
+        raise NotImplementedError
+
+    def solve_forced(self, r: Trig) -> Trig:
+        """Periodic solution of ``x'' + x = r`` with the n = 1 harmonics of ``r`` ignored (and set to 0)."""
+        raise NotImplementedError
+
+    def coeff(self, t: Trig, kind: str, n: int) -> Any:
+        raise NotImplementedError
+
+    def _set(self, t: Trig, kind: str, n: int, value: Any) -> None:
+        raise NotImplementedError
+
+    def add_coeff(self, t: Trig, kind: str, n: int, value: Any) -> Trig:
+        """Return ``t + value * cos(n tau)`` (kind "c") or ``... sin(n tau)`` (kind "s")."""
+        return self.add(t, self.monomial(kind, n, value))
+
+    def values(self, t: Trig) -> tuple[list, list]:
+        """Coefficient lists (user-facing numbers)."""
+        return [self.coeff(t, "c", k) for k in range(len(t.cos))], [self.coeff(t, "s", k) for k in range(len(t.cos))]
+
+    def trim(self, t: Trig) -> Trig:
+        """Drop trailing zero harmonics."""
+        n = len(t.cos)
+        while n > 1 and self.is_zero_num(t.cos[n - 1]) and self.is_zero_num(t.sin[n - 1]):
+            n -= 1
+        return Trig(t.cos[:n].copy(), t.sin[:n].copy(), t.den)
+
+    def is_zero_num(self, x: Any) -> bool:
+        return x == 0
+
+
+class ExactArith(_Arith):
+    """Rational arithmetic: integer numerators with one common denominator per series."""
+
+    name = "exact"
+
+    def scalar(self, q: Fraction | int) -> Fraction:
+        return Fraction(q)
+
+    def sdiv(self, a: Fraction, b: Fraction) -> Fraction:
+        return a / b
+
+    def smul(self, a: Fraction, b: Fraction) -> Fraction:
+        return a * b
+
+    def is_zero(self, a: Fraction) -> bool:
+        return a == 0
+
+    def _norm(self, t: Trig) -> Trig:
+        g = math.gcd(t.den, *t.cos.tolist(), *t.sin.tolist())
+        if g > 1:
+            return Trig(t.cos // g, t.sin // g, t.den // g)
+        return t
+
+    def _align(self, a: Trig, b: Trig) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int]:
+        n = max(len(a.cos), len(b.cos))
+        if a.den == b.den:
+            fa = fb = 1
+            den = a.den
+        else:
+            g = math.gcd(a.den, b.den)
+            fa, fb = b.den // g, a.den // g
+            den = a.den * fa
+        return (
+            _pad(a.cos * fa, n, 0),
+            _pad(a.sin * fa, n, 0),
+            _pad(b.cos * fb, n, 0),
+            _pad(b.sin * fb, n, 0),
+            den,
+        )
+
+    def add(self, a: Trig, b: Trig) -> Trig:
+        ac, as_, bc, bs, den = self._align(a, b)
+        return self._norm(Trig(ac + bc, as_ + bs, den))
+
+    def sub(self, a: Trig, b: Trig) -> Trig:
+        ac, as_, bc, bs, den = self._align(a, b)
+        return self._norm(Trig(ac - bc, as_ - bs, den))
+
+    def scale(self, a: Trig, s: Fraction) -> Trig:
+        s = Fraction(s)
+        return self._norm(Trig(a.cos * s.numerator, a.sin * s.numerator, a.den * s.denominator))
+
+    def scale_int(self, a: Trig, k: int) -> Trig:
+        return self._norm(Trig(a.cos * k, a.sin * k, a.den))
+
+    def mul(self, a: Trig, b: Trig) -> Trig:
+        c, s = self._products(a, b)
+        return self._norm(Trig(c, s, 2 * a.den * b.den))
+
+    def solve_forced(self, r: Trig) -> Trig:
+        n = len(r.cos)
+        divs = [1 - k * k for k in range(n)]
+        lcm = 1
+        for k, d in enumerate(divs):
+            if k != 1:
+                lcm = math.lcm(lcm, abs(d))
+        mult = np.array([0 if k == 1 else lcm // divs[k] for k in range(n)], dtype=object)
+        return self._norm(Trig(r.cos * mult, r.sin * mult, r.den * lcm))
+
+    def coeff(self, t: Trig, kind: str, n: int) -> Fraction:
+        arr = t.cos if kind == "c" else t.sin
+        return Fraction(int(arr[n]), t.den) if n < len(arr) else Fraction(0)
+
+    def _set(self, t: Trig, kind: str, n: int, value: Fraction) -> None:
+        value = Fraction(value)
+        t.cos *= value.denominator
+        t.sin *= value.denominator
+        t.den *= value.denominator
+        (t.cos if kind == "c" else t.sin)[n] = value.numerator * (t.den // value.denominator)
+
+
+class FixedArith(_Arith):
+    """Binary fixed point: integer numerators over ``2**prec`` (the ``mpmath`` arithmetic)."""
+
+    name = "fixed"
+
+    def __init__(self, prec: int):
+        self.prec = int(prec)
+        self.one_den = 1 << self.prec
+
+    def scalar(self, q: Fraction | int) -> int:
+        q = Fraction(q)
+        return _round_div(q.numerator << self.prec, q.denominator)
+
+    def sdiv(self, a: int, b: int) -> int:
+        return _round_div(a << self.prec, b)
+
+    def smul(self, a: int, b: int) -> int:
+        return _round_shift(a * b, self.prec)
+
+    def is_zero(self, a: int) -> bool:
+        return a == 0
+
+    def output(self, a: int) -> mpmath.mpf:
+        with mpmath.workprec(self.prec):
+            return mpmath.mpf(a) / mpmath.mpf(self.one_den)
+
+    def scale(self, a: Trig, s: int) -> Trig:
+        return Trig(_shift_arr(a.cos * s, self.prec), _shift_arr(a.sin * s, self.prec), a.den)
+
+    def mul(self, a: Trig, b: Trig) -> Trig:
+        c, s = self._products(a, b)
+        return Trig(_shift_arr(c, self.prec + 1), _shift_arr(s, self.prec + 1), a.den)
+
+    def solve_forced(self, r: Trig) -> Trig:
+        n = len(r.cos)
+        c = r.cos.copy()
+        s = r.sin.copy()
+        for k in range(n):
+            if k == 1:
+                c[k] = 0
+                s[k] = 0
+            elif k > 1:
+                d = 1 - k * k
+                c[k] = _round_div(c[k], d)
+                s[k] = _round_div(s[k], d)
+        return Trig(c, s, r.den)
+
+    def solve_detuned(self, r: Trig, nu2: int) -> Trig:
+        """Periodic solution of ``x'' + nu2 x = r`` (``nu2`` a fixed-point scalar, not a square of a harmonic)."""
+        c = r.cos.copy()
+        s = r.sin.copy()
+        for k in range(len(c)):
+            d = nu2 - ((k * k) << self.prec)
+            c[k] = _round_div(int(c[k]) << self.prec, d)
+            s[k] = _round_div(int(s[k]) << self.prec, d)
+        return Trig(c, s, r.den)
+
+    def coeff(self, t: Trig, kind: str, n: int) -> int:
+        arr = t.cos if kind == "c" else t.sin
+        return int(arr[n]) if n < len(arr) else 0
+
+    def _set(self, t: Trig, kind: str, n: int, value: int) -> None:
+        (t.cos if kind == "c" else t.sin)[n] = value
+
+    def values(self, t: Trig) -> tuple[list, list]:
+        c, s = super().values(t)
+        return [self.output(x) for x in c], [self.output(x) for x in s]
+
+
+class FloatArith(_Arith):
+    """Double precision (numpy float64 arrays)."""
+
+    name = "float"
+    dtype = float
+    zero = 0.0
+
+    def scalar(self, q: Fraction | int) -> float:
+        return float(Fraction(q))
+
+    def sdiv(self, a: float, b: float) -> float:
+        return a / b
+
+    def smul(self, a: float, b: float) -> float:
+        return a * b
+
+    def is_zero(self, a: float) -> bool:
+        return a == 0.0
+
+    def mul(self, a: Trig, b: Trig) -> Trig:
+        c, s = self._products(a, b)
+        return Trig(0.5 * c, 0.5 * s, 1)
+
+    def solve_forced(self, r: Trig) -> Trig:
+        k = np.arange(len(r.cos), dtype=float)
+        d = 1.0 - k * k
+        d[1] = np.inf
+        return Trig(r.cos / d, r.sin / d, 1)
+
+    def solve_detuned(self, r: Trig, nu2: float) -> Trig:
+        """Periodic solution of ``x'' + nu2 x = r`` (``nu2`` not the square of a harmonic number)."""
+        k = np.arange(len(r.cos), dtype=float)
+        d = nu2 - k * k
+        return Trig(r.cos / d, r.sin / d, 1)
+
+    def coeff(self, t: Trig, kind: str, n: int) -> float:
+        arr = t.cos if kind == "c" else t.sin
+        return float(arr[n]) if n < len(arr) else 0.0
+
+    def _set(self, t: Trig, kind: str, n: int, value: float) -> None:
+        (t.cos if kind == "c" else t.sin)[n] = value
+
+
+class RingArith(_Arith):
+    """Coefficients in a SymPy polynomial ring over QQ (division only by rationals)."""
+
+    name = "ring"
+
+    def __init__(self, ring: Any):
+        self.ring = ring
+        self.zero = ring.zero
+
+    def scalar(self, q: Fraction | int) -> Any:
+        q = Fraction(q)
+        return self.ring.ground_new(self.ring.domain(q.numerator, q.denominator))
+
+    def sdiv(self, a: Any, b: Any) -> Any:
+        if b.is_ground and b:
+            return a.quo_ground(b.LC)
+        raise ArithmeticError("division by a non-constant polynomial coefficient")
+
+    def smul(self, a: Any, b: Any) -> Any:
+        return a * b
+
+    def is_zero(self, a: Any) -> bool:
+        return not a
+
+    def mul(self, a: Trig, b: Trig) -> Trig:
+        c, s = self._products(a, b)
+        half = self.ring.domain(1, 2)
+        return Trig(c * half, s * half, 1)
+
+    def solve_forced(self, r: Trig) -> Trig:
+        n = len(r.cos)
+        c = r.cos.copy()
+        s = r.sin.copy()
+        for k in range(n):
+            if k == 1:
+                c[k] = self.zero
+                s[k] = self.zero
+            elif k > 1:
+                f = self.ring.domain(1, 1 - k * k)
+                c[k] = c[k] * f
+                s[k] = s[k] * f
+        return Trig(c, s, 1)
+
+    def coeff(self, t: Trig, kind: str, n: int) -> Any:
+        arr = t.cos if kind == "c" else t.sin
+        return arr[n] if n < len(arr) else self.zero
+
+    def _set(self, t: Trig, kind: str, n: int, value: Any) -> None:
+        (t.cos if kind == "c" else t.sin)[n] = value
+
+    def is_zero_num(self, x: Any) -> bool:
+        return not x
+
+
+def _round_div(a: int, b: int) -> int:
+    """Round-to-nearest integer division."""
+    if b < 0:
+        a, b = -a, -b
+    return (2 * a + b) // (2 * b)
+
+
+def _round_shift(a: int, k: int) -> int:
+    return (a + (1 << (k - 1))) >> k if k > 0 else a
+
+
+def _shift_arr(arr: np.ndarray, k: int) -> np.ndarray:
+    half = 1 << (k - 1)
+    return (arr + half) >> k
+
+
+def make_arith(arithmetic: str, dps: int | None, order: int) -> _Arith:
+    """The arithmetic object for ``arithmetic`` in {"exact", "float", "mpmath"}."""
+    if arithmetic == "exact":
+        return ExactArith()
+    if arithmetic == "float":
+        return FloatArith()
+    if arithmetic == "mpmath":
+        digits = int(dps) if dps is not None else int(mpmath.mp.dps)
+        # guard bits: high-order coefficients are small, so keep absolute precision for about 2 bits per order
+        return FixedArith(int(3.33 * digits) + 4 * order + 64)
+    raise ValueError(f"unknown arithmetic {arithmetic!r}")
+
+
+def from_number(arith: _Arith, value: Any) -> Any:
+    """Convert a SymPy/Python number into ``arith``'s scalar type (exact mode needs a rational)."""
+    import sympy as sp
+
+    value = sp.sympify(value)
+    if isinstance(arith, ExactArith):
+        if not value.is_Rational:
+            raise TypeError(f"{value} is not rational")
+        return Fraction(int(value.p), int(value.q))
+    if isinstance(arith, FixedArith):
+        if value.is_Rational:
+            return arith.scalar(Fraction(int(value.p), int(value.q)))
+        with mpmath.workprec(arith.prec + 64):
+            v = mpmath.mpf(sp.N(value, int(arith.prec / 3.3) + 20))
+            return int(mpmath.nint(v * mpmath.mpf(2) ** arith.prec))
+    if isinstance(arith, FloatArith):
+        return float(value)
+    raise TypeError(f"cannot convert {value} for arithmetic {arith.name}")
