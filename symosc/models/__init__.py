@@ -3,6 +3,7 @@
 >>> from symosc.models import n_link_pendulum
 """
 
+from .body_on_springs import BodyOnSprings, body_on_springs
 from .pendulum import gribkov_khokhlov_table1, n_link_pendulum, pendulum_symbols
 
-__all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]
+__all__ = ["BodyOnSprings", "body_on_springs", "gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]

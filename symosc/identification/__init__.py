@@ -1,0 +1,108 @@
+"""Identification: modal models from sampled oscillations (Belyakov 2005) and their error studies.
+
+Signal estimators share one interface, ``estimator(signals, dt, n_modes=None, *, order=None, constant=True, ...)``
+with ``signals`` of shape ``(samples,)`` or ``(channels, samples)``, and return a :class:`ModalEstimate`.
+"""
+
+from ._signals import ModalEstimate
+from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
+from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
+from .era import era, realize
+from .min_time import (
+    ExcitationBound,
+    MinTimeResult,
+    QuasiOptimalRun,
+    excitation_time,
+    excitation_time_bound,
+    min_time_1dof,
+    quasi_optimal_control,
+    simulate_quasi_optimal,
+    sine_forcing_time,
+    switching_curves,
+)
+from .noise import (
+    ApplicabilityCheck,
+    CramerRaoBound,
+    ErrorVsNoise,
+    MonteCarloResult,
+    add_noise,
+    applicability,
+    cramer_rao_bound,
+    error_vs_noise,
+    monte_carlo,
+    noise_sigma,
+)
+from .pencil import esprit, matrix_pencil
+from .prony import SamplingAdvice, prony, sampling_advice
+from .reconstruction import (
+    InertiaEstimate,
+    InertiaTensor,
+    algorithm1,
+    algorithm21,
+    algorithm22,
+    assemble_tensor,
+    central_identity,
+    check_distinct,
+    real_modes,
+)
+from .refine import refine
+from .sensitivity import JacobianResult, jacobian, sensitivity
+from .simulator import StandRecord, simulate_stand, stand_system
+from .two_stage import SecondOrderModel, two_stage
+
+__all__ = [
+    "ApplicabilityCheck",
+    "CramerRaoBound",
+    "DampingPerturbation",
+    "ErrorVsNoise",
+    "ExcitationBound",
+    "InertiaEstimate",
+    "InertiaFormula",
+    "InertiaTensor",
+    "JacobianResult",
+    "MinTimeResult",
+    "ModalEstimate",
+    "MonteCarloResult",
+    "QuadraticModes",
+    "QuasiOptimalRun",
+    "SamplingAdvice",
+    "SecondOrderModel",
+    "StandRecord",
+    "add_noise",
+    "algorithm1",
+    "algorithm21",
+    "algorithm22",
+    "applicability",
+    "assemble_tensor",
+    "central_identity",
+    "check_distinct",
+    "cramer_rao_bound",
+    "damping_perturbation",
+    "era",
+    "error_vs_noise",
+    "esprit",
+    "excitation_time",
+    "excitation_time_bound",
+    "flywheel",
+    "jacobian",
+    "matrix_pencil",
+    "min_time_1dof",
+    "monte_carlo",
+    "noise_sigma",
+    "physical_pendulum",
+    "prony",
+    "quadratic_modes",
+    "quasi_optimal_control",
+    "real_modes",
+    "realize",
+    "refine",
+    "rocking_platform",
+    "sampling_advice",
+    "sensitivity",
+    "simulate_quasi_optimal",
+    "simulate_stand",
+    "sine_forcing_time",
+    "stand_system",
+    "switching_curves",
+    "two_stage",
+]

@@ -1,0 +1,138 @@
+"""Tests of symosc.sweep: grid shape and order, executors agree, failures are reported, bad input."""
+
+from __future__ import annotations
+
+import functools
+import math
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import symosc
+from symosc.errors import ParameterError
+from symosc.sweep import SweepResult, sweep
+
+
+def _noisy_mean(seed, scale):
+    """Deterministic per point: depends only on the arguments (Monte Carlo style)."""
+    rng = np.random.default_rng(int(seed))
+    return float(scale * rng.standard_normal(50).mean())
+
+
+def _fragile(a, b):
+    if a == 2 and b < 0:
+        raise ValueError(f"bad point a={a}, b={b}")
+    return a * 10 + b
+
+
+def _vector(x, n=3):
+    return np.arange(n) * x
+
+
+def _mixed(x):
+    return {"x": x} if x > 1 else x
+
+
+def test_lazy_attribute_and_grid_shape_and_order():
+    # symosc.sweep is callable whether the lazy attribute or the submodule is bound
+    assert symosc.sweep(_vector, {"x": [2.0]}, executor="serial").values.tolist() == [[0.0, 2.0, 4.0]]
+    res = sweep(
+        lambda a, b, c: a * 100 + b * 10 + c, {"a": [1, 2], "b": [0, 1, 2], "c": np.arange(4)}, executor="serial"
+    )
+    assert isinstance(res, SweepResult)
+    assert res.values.shape == (2, 3, 4) == res.shape
+    assert res.values.dtype == float
+    a, b, c = np.meshgrid([1, 2], [0, 1, 2], np.arange(4), indexing="ij")
+    np.testing.assert_array_equal(res.values, a * 100 + b * 10 + c)
+    assert res.points()[5] == {"a": 1, "b": 1, "c": 1}
+    assert res.ok.all() and not res.failures
+
+
+def test_failing_point_is_reported_not_fatal():
+    res = sweep(_fragile, {"a": [1, 2, 3], "b": [-1, 1]}, executor="serial", chunksize=2)
+    assert len(res.failures) == 1
+    f = res.failures[0]
+    assert f.index == (1, 0) and f.params == {"a": 2, "b": -1}
+    assert "ValueError" in f.error and "bad point a=2" in f.error and "Traceback" in f.traceback
+    assert np.isnan(res.values[1, 0])
+    assert res.values[2, 1] == 31.0
+    assert res.ok.tolist() == [[True, True], [False, True], [True, True]]
+
+
+def test_array_and_object_results():
+    res = sweep(_vector, {"x": [1.0, 2.0]}, executor="serial")
+    assert res.values.shape == (2, 3)
+    np.testing.assert_array_equal(res.values, [[0, 1, 2], [0, 2, 4]])
+    res = sweep(_mixed, {"x": [1.0, 2.0]}, executor="serial")
+    assert res.values.dtype == object and res.values[1] == {"x": 2.0}
+    res = sweep(_vector, {"x": [1.0]}, executor="serial", constants={"n": 2})
+    assert res.values.tolist() == [[0.0, 1.0]]
+
+
+def test_serial_processes_and_dask_agree():
+    """Serial, process pool, a user executor and a 2-worker Dask LocalCluster give identical results."""
+    distributed = pytest.importorskip("distributed")
+    grid = {"seed": np.arange(40), "scale": [0.5, 2.0]}
+    ref = sweep(_noisy_mean, grid, executor="serial")
+    procs = sweep(_noisy_mean, grid, executor="processes", chunksize=7, max_workers=2)
+    with ThreadPoolExecutor(2) as pool:
+        threads = sweep(_noisy_mean, grid, executor=pool, chunksize=5)
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cl,
+        distributed.Client(cl) as client,
+    ):
+        dask = sweep(_noisy_mean, grid, executor=client, chunksize=9)
+        failing = sweep(_fragile, {"a": [1, 2], "b": [-1, 1]}, executor=client)
+        by_address = sweep(_noisy_mean, grid, executor=cl.scheduler_address)
+    np.testing.assert_array_equal(by_address.values, ref.values)
+    for other in (procs, threads, dask):
+        np.testing.assert_array_equal(other.values, ref.values)
+        assert other.values.shape == (40, 2)
+    assert procs.executor == "processes" and dask.executor == "dask" and threads.executor == "ThreadPoolExecutor"
+    assert [f.params for f in failing.failures] == [{"a": 2, "b": -1}]
+    procs_fail = sweep(_fragile, {"a": [1, 2], "b": [-1, 1]}, executor="processes", max_workers=2)
+    assert [f.index for f in procs_fail.failures] == [(1, 0)]
+
+
+def test_default_executor_small_grid_is_serial_and_progress(capsys):
+    res = sweep(functools.partial(_fragile, b=1), {"a": [1, 2, 3]}, progress=True)
+    assert res.executor == "serial"
+    assert res.values.tolist() == [11.0, 21.0, 31.0]
+    err = capsys.readouterr().err
+    assert "3/3 (100%)" in err
+
+
+def test_default_large_grid_unpicklable_falls_back_to_serial():
+    with pytest.warns(RuntimeWarning, match="cannot be pickled"):
+        res = sweep(lambda x: x + 1, {"x": np.arange(300)})
+    assert res.executor == "serial" and res.values[-1] == 300
+
+
+def test_bad_input():
+    with pytest.raises(ParameterError, match="non-empty mapping"):
+        sweep(math.sqrt, {})
+    with pytest.raises(ParameterError, match="1-D"):
+        sweep(math.sqrt, {"x": np.ones((2, 2))})
+    with pytest.raises(ParameterError, match="argument names"):
+        sweep(math.sqrt, {"not a name": [1]})
+    with pytest.raises(ParameterError, match="callable"):
+        sweep(3, {"x": [1]})
+    with pytest.raises(ParameterError, match="picklable"):
+        sweep(lambda x: x, {"x": [1]}, executor="processes")
+    with pytest.raises(ParameterError, match="chunksize"):
+        sweep(_vector, {"x": [1]}, chunksize=0)
+    with pytest.raises(ParameterError, match="max_workers"):
+        sweep(_vector, {"x": [1]}, executor="processes", max_workers=0)
+    with pytest.raises(ParameterError, match="executor must be"):
+        sweep(_vector, {"x": [1]}, executor=42)
+
+
+def _unpicklable_result(x):
+    return lambda: x  # cannot be sent back from a worker process
+
+
+def test_chunk_that_cannot_return_is_reported():
+    res = sweep(_unpicklable_result, {"x": [1, 2]}, executor="processes", chunksize=1, max_workers=1)
+    assert len(res.failures) == 2 and "chunk failed" in res.failures[0].error
+    assert res.values.tolist() == [None, None]
