@@ -18,6 +18,11 @@ def test_readme_python_blocks_run():
         exec(compile(block, str(README), "exec"), namespace)
     # the first session computes the Table 1 pendulum: report §4 recomputed 2.3276 Hz, 5.0460 Hz
     np.testing.assert_allclose(namespace["omega"] / (2 * np.pi), [2.3276, 5.0460], atol=5e-4)
+    # the comments in the tour state what the calls return; check the numeric ones independently
+    np.testing.assert_allclose(namespace["estimate"].frequencies, [3.0, 7.0], rtol=1e-9)
+    assert namespace["grid"].values.tolist() == [[0.0, 0.0], [0.0, 1.0], [0.0, 2.0]]
+    sp = namespace["sp"]
+    assert sp.simplify(namespace["vdp"].amplitude.coefficient(0) - 2) == 0
 
 
 def test_quick_start_has_exactly_two_commands():
