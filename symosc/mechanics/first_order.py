@@ -99,5 +99,8 @@ class FirstOrderSystem:
         """Numeric E(t, x) = T + V with the parameters fixed (useful to check conservation)."""
         s = self.system
         fn = compile(s.energy, [t, *s.coordinates, *s.velocities, *s.parameters], name="energy")
-        params = [float(v) for v in resolve(s.parameters, values)]
+        params = resolve(s.parameters, values)
+        n = len(s.coordinates)
+        fn(0.0, *([0.0] * (2 * n)), *params)  # checks the parameter values once
+        params = [float(v) for v in params]
         return lambda time, x: float(fn.raw(time, *np.asarray(x, dtype=float), *params))

@@ -216,6 +216,17 @@ class LagrangianSystem:
         p = ", ".join(s.name for s in self.parameters)
         return f"LagrangianSystem({kind}; coordinates: {q}; parameters: {p})"
 
+    def _repr_latex_(self) -> str:
+        """The equations ``M q'' = F`` in notebooks (a summary for more than four coordinates)."""
+        if len(self._q) > 4:
+            return f"$\\text{{{self!r}}}$"
+        names = {}
+        for q, qd, qdd in zip(self._q, self._qd, self._qdd, strict=True):
+            names[qd] = rf"\dot{{{sp.latex(q)}}}"
+            names[qdd] = rf"\ddot{{{sp.latex(q)}}}"
+        lhs = sp.MatMul(self.mass_matrix, sp.Matrix(self._qdd), evaluate=False)
+        return f"$${sp.latex(lhs, symbol_names=names)} = {sp.latex(self.forcing, symbol_names=names)}$$"
+
     # ------------------------------------------------------------------ derivation
     @cached_property
     def _dependent(self) -> set[sp.Symbol]:
@@ -245,11 +256,10 @@ class LagrangianSystem:
         for key, groups in self._parts.items():
             if len(key) == 2:
                 i, j = key
-                c = self._sum(groups)
-                if i == j:
-                    M[i, i] = 2 * c
+                if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
+                    M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
                 else:
-                    M[i, j] = M[j, i] = c
+                    M[i, j] = M[j, i] = self._sum(groups)
         return M
 
     @cached_property

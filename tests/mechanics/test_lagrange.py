@@ -214,6 +214,8 @@ def test_bad_parameter_values():
         lin.natural_frequencies({"m1": 1.0, "m2": 1.0, "l1": 1.0})
     with pytest.raises(ParameterError, match="missing values for: m2"):
         n_link_pendulum(2).first_order().rhs({k: v for k, v in good.items() if k != "m2"})
+    with pytest.raises(ParameterError, match="g must be positive"):
+        n_link_pendulum(2).first_order().energy_function({**good, "g": -9.81})
 
 
 def test_singular_mass_matrix():
@@ -234,3 +236,9 @@ def test_model_catalogue_bad_input():
         n_link_pendulum(2, links="rope")
     with pytest.raises(ModelError, match="pivot"):
         n_link_pendulum(2, pivot="horizontal")
+
+
+def test_latex_representation():
+    small = n_link_pendulum(1)._repr_latex_()
+    assert small.startswith("$$") and r"\ddot{\phi_{1}}" in small
+    assert "LagrangianSystem" in n_link_pendulum(5)._repr_latex_()
