@@ -8,6 +8,7 @@ any requested order, and checked against direct numerical integration through :m
 from __future__ import annotations
 
 from ._averaging_numeric import Fold, FrequencyResponse, SteadyState
+from ._ndof_exponents import CharacteristicExponentSeries
 from ._series import EpsSeries, RadiusEstimate
 from .averaging import AveragedEquations, StationaryRegime, averaged_equations, describing_function
 from .averaging_ndof import (
@@ -25,6 +26,20 @@ from .delay import (
     count_roots,
     quasi_polynomial,
     quasi_polynomial_roots,
+)
+from .harmonic_linearisation import (
+    HarmonicCycle,
+    HarmonicLinearisation,
+    LinearisationBoundary,
+    TwoNonlinearityCycle,
+    harmonic_linearisation,
+    linearisation_boundary,
+    neimark_curve,
+    self_oscillations,
+    servo_characteristic,
+    servo_equations,
+    servo_region,
+    two_nonlinearity_cycles,
 )
 from .high_frequency import (
     FastAveragedSystem,
@@ -66,6 +81,7 @@ from .validate import (
 )
 
 __all__ = [
+    "CharacteristicExponentSeries",
     "EpsSeries",
     "LimitCycleSeries",
     "LindstedtSeries",
@@ -124,4 +140,20 @@ __all__ += [
     "vibrational_averaging",
     "vibrational_averaging_of",
     "vibrational_stiffness",
+]
+
+# harmonic linearisation (Bulgakov §12.7, §12.9-12.10)
+__all__ += [
+    "HarmonicCycle",
+    "HarmonicLinearisation",
+    "LinearisationBoundary",
+    "TwoNonlinearityCycle",
+    "harmonic_linearisation",
+    "linearisation_boundary",
+    "neimark_curve",
+    "self_oscillations",
+    "servo_characteristic",
+    "servo_equations",
+    "servo_region",
+    "two_nonlinearity_cycles",
 ]

@@ -28,6 +28,8 @@ from scipy.integrate import solve_ivp
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile as _compile
 from ._fourier import FixedArith, Trig, _Arith, make_arith
+from ._ndof_exponents import CharacteristicExponentSeries
+from ._ndof_exponents import exponent_series as _exponent_series
 from ._poincare_core import _polynomial_terms, _trig_power_coefficients
 from ._series import EpsSeries, to_sympy_number
 
@@ -101,6 +103,7 @@ class NDofPeriodicSolution:
     stable: bool = False
     _coords: tuple = field(default=(), repr=False, compare=False)  # per order: per coordinate (cos, sin) lists
     _numeric: Any = field(default=None, repr=False, compare=False)
+    _exponent_cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Matrix:
         """``q(tau)`` (column Matrix) truncated at ``order``; ``tau = omega*t``."""
@@ -138,9 +141,42 @@ class NDofPeriodicSolution:
         """First-order characteristic exponents at ``eps`` (complex array, rad/s)."""
         return np.array([complex(a) + eps * complex(b) for a, b in self.exponents])
 
-    def validate(self, eps: float, *, rtol: float = 1e-11) -> dict:
-        """Numerical periodic orbit (shooting with the monodromy matrix) and its Floquet exponents vs the series."""
-        return _validate_ndof(self, float(eps), rtol)
+    def exponent_series(self, order: int | None = None) -> CharacteristicExponentSeries:
+        """Characteristic exponents of the variational equation as series in ``eps`` to ``order`` (§12.5–12.6).
+
+        Every coefficient up to ``eps**order`` is exact to rounding (``order`` defaults to the order of the
+        solution and cannot exceed it), so the truncated sums have error ``O(eps**(order+1))``.  Non-critical modes by
+        Rayleigh–Schrödinger perturbation of the Floquet operator in Fourier space, the critical exponent by
+        Liouville's formula; see :mod:`symosc.nonlinear._ndof_exponents`.  The order-1 coefficients agree with the
+        averaged first-order ``exponents``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> q1, q2, v1, v2 = sp.symbols("q1 q2 v1 v2")
+        >>> f = [(1 - q1**2) * v1, (1 - q2**2) * v2]
+        >>> sol = periodic_solution_ndof([[1, 0], [0, 1]], [[2, -1], [-1, 2]], f, [q1, q2], [v1, v2], 4)
+        >>> ex = sol.exponent_series(4)
+        >>> bool(abs(ex.coefficients[1, 1] + 1) < 1e-12)  # critical exponent -eps + O(eps^2) (van der Pol)
+        True
+        """
+        key = self.order if order is None else order
+        if key not in self._exponent_cache:
+            self._exponent_cache[key] = _exponent_series(self, key)
+        return self._exponent_cache[key]
+
+    def characteristic_exponents(self, eps: float, order: int | None = None) -> np.ndarray:
+        """Characteristic exponents (rad/s) at ``eps`` from :meth:`exponent_series` truncated at ``order``."""
+        ser = self.exponent_series(order)
+        return ser.evaluate(eps)
+
+    def validate(self, eps: float, *, rtol: float = 1e-11, exponent_order: int | None = None) -> dict:
+        """Numerical periodic orbit (shooting with the monodromy matrix) and its Floquet exponents vs the series.
+
+        ``exponents_series_real`` uses the first-order exponents, or :meth:`exponent_series` truncated at
+        ``exponent_order`` when it is given.
+        """
+        return _validate_ndof(self, float(eps), rtol, exponent_order)
 
     def _repr_latex_(self) -> str:
         return f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps ** (self.order + 1))})$"
@@ -525,7 +561,7 @@ def _first_order_exponents(comps, q, qdot, eps, Phi, lams, m, A0, n, dH, dps) ->
     return tuple(exps), bool(stable)
 
 
-def _validate_ndof(sol: NDofPeriodicSolution, e: float, rtol: float) -> dict:
+def _validate_ndof(sol: NDofPeriodicSolution, e: float, rtol: float, exponent_order: int | None = None) -> dict:
     M, K, f, q, qdot, eps = sol._numeric
     n = sol.n
     Mi = np.linalg.inv(np.array(M.tolist(), dtype=float))
@@ -579,5 +615,7 @@ def _validate_ndof(sol: NDofPeriodicSolution, e: float, rtol: float) -> dict:
         "amplitude_error": abs(float(eta0) - float(sol.amplitude.evaluate(e))),
         "multipliers": mult,
         "exponents_numeric_real": np.sort(num_exp.real),
-        "exponents_series_real": np.sort(sol.exponents_at(e).real),
+        "exponents_series_real": np.sort(
+            (sol.exponents_at(e) if exponent_order is None else sol.characteristic_exponents(e, exponent_order)).real
+        ),
     }
