@@ -8,6 +8,7 @@ from ._signals import ModalEstimate
 from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
 from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
 from .era import era, realize
+from .error_maps import ErrorMap, error_map
 from .min_time import (
     ExcitationBound,
     MinTimeResult,
@@ -54,6 +55,7 @@ __all__ = [
     "ApplicabilityCheck",
     "CramerRaoBound",
     "DampingPerturbation",
+    "ErrorMap",
     "ErrorVsNoise",
     "ExcitationBound",
     "InertiaEstimate",
@@ -79,6 +81,7 @@ __all__ = [
     "cramer_rao_bound",
     "damping_perturbation",
     "era",
+    "error_map",
     "error_vs_noise",
     "esprit",
     "excitation_time",

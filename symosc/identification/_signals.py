@@ -13,7 +13,7 @@ Signal model (Belyakov 2005, eq. 39), per channel c and sample n at t_n = n dt::
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -266,11 +266,12 @@ def _select_order(sv: np.ndarray, constant: bool, max_order: int) -> int:
     return r
 
 
-def _check_rank(sv: np.ndarray, order: int, hint: str = "") -> None:
+def _check_rank(sv: np.ndarray, order: int, hint: str = "", *, spare: bool = False) -> None:
+    """Raise unless the data support ``order`` exponentials (``order - 1`` if ``spare``: an optional offset state)."""
     s = np.asarray(sv)
     if s.size < order:
         raise ParameterError(f"order {order} exceeds the rank the data matrix can have ({s.size}); lower n_modes")
-    if s[order - 1] <= _RANK_TOL * s[0]:
+    if s[order - 1 - int(spare)] <= _RANK_TOL * s[0]:
         r = int(np.sum(s > _RANK_TOL * s[0]))
         raise IdentificationError(
             f"the data support only {r} exponentials (singular values {s[: order + 1]!r} drop below "
@@ -279,7 +280,83 @@ def _check_rank(sv: np.ndarray, order: int, hint: str = "") -> None:
         )
 
 
+def _prepare(
+    signals: Any, dt: Any, n_modes: int | None, order: int | None, constant: bool, what: str
+) -> tuple[np.ndarray, float, int | None]:
+    """Checked ``(channels, samples)`` record, sampling period and requested order (None: select from the data)."""
+    y, dtf = _as_signals(signals, dt)
+    p = _resolve_order(n_modes, order, constant)
+    if p is not None:
+        _check_supported(p, y.shape[1], what)
+    return y, dtf, p
+
+
 # --------------------------------------------------------------------------------------------------- poles
+def _offset_pole(z: np.ndarray) -> tuple[complex, bool]:
+    """The real pole nearest z = 1 and whether it can be the constant (offset) state of an odd-order model.
+
+    The offset is the exponential with root z = 1. In noise that root moves a little, but it stays real, positive
+    and slower than every oscillation. Supported means: a real positive pole whose rate ``|ln z|`` is at most half
+    that of the slowest oscillatory pole. Without an offset in the data, the spare state of an order ``2 n + 1``
+    model fits noise instead, often as a real pole at z ~ -1, which would read as a mode at the Nyquist frequency.
+    """
+    z = np.asarray(z, dtype=complex).ravel()
+    if not np.all(np.isfinite(z)) or np.any(z == 0):
+        return complex(np.nan), True  # degenerate: let _modal_estimate report it
+    ln = np.log(z)
+    tol = 1e-9 * np.maximum(np.abs(ln), 1.0)
+    real = np.abs(ln.imag) <= tol  # z < 0 has Im ln z = pi: never the offset
+    if not real.any():
+        return complex(np.nan), False
+    i = np.flatnonzero(real)[np.argmin(np.abs(ln[real]))]
+    osc = np.abs(ln[ln.imag > tol])
+    return complex(z[i]), bool(osc.size == 0 or abs(ln[i]) <= 0.5 * osc.min())
+
+
+def _subspace_estimate(
+    y: np.ndarray,
+    dt: float,
+    order: int,
+    constant: bool,
+    poles_at: Callable[[int], tuple[np.ndarray, dict[str, Any]]],
+    *,
+    method: str,
+    singular_values: np.ndarray,
+    nyquist_margin: float,
+) -> ModalEstimate:
+    """Poles of a subspace estimator at ``order`` (``poles_at(order) -> (z, details)``), checked and fitted.
+
+    With a constant term (odd ``order``) the spare state is kept only if the data support an offset
+    (:func:`_offset_pole`); otherwise the poles are recomputed at ``order - 1`` from the same decomposition, and the
+    offset is still estimated, linearly, in the amplitude fit (the same happens when exact data have rank
+    ``order - 1``). A genuine mode near or above Nyquist is part of the signal subspace at either order, so it is
+    still reported as aliasing.
+    """
+    use_const = bool(constant) and order % 2 == 1
+    can_drop = use_const and order >= 3  # at least one oscillatory pair remains
+    if can_drop and singular_values[order - 1] <= _RANK_TOL * singular_values[0]:
+        z, details = poles_at(order - 1)  # exact data without an offset: no spare state at all
+        details = {**details, "offset_pole": complex(np.nan), "offset_refit": True}
+    else:
+        z, details = poles_at(order)
+        if use_const:
+            pole, supported = _offset_pole(z)
+            details = {**details, "offset_pole": pole, "offset_refit": not supported}
+            if not supported and can_drop:
+                z, more = poles_at(order - 1)
+                details.update(more)
+    return _modal_estimate(
+        y,
+        dt,
+        z,
+        constant=use_const,
+        method=method,
+        singular_values=singular_values,
+        nyquist_margin=nyquist_margin,
+        details=details,
+    )
+
+
 def _modal_estimate(
     y: np.ndarray,
     dt: float,
@@ -312,7 +389,7 @@ def _modal_estimate(
     lam = np.log(z) / dtp
     osc = lam[lam.imag > 1e-9 * np.maximum(np.abs(lam), 1.0 / dtp)]
     n_real = int(np.sum(np.abs(lam.imag) <= 1e-9 * np.maximum(np.abs(lam), 1.0 / dtp)))
-    n_pairs_wanted = (z.size - int(bool(constant))) // 2
+    n_pairs_wanted = z.size // 2  # one spare real pole (the offset) when the size is odd
     if osc.size < n_pairs_wanted:
         raise IdentificationError(
             f"{method}: only {osc.size} oscillatory mode(s) found but {n_pairs_wanted} requested; {n_real} pole(s) are "

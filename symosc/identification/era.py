@@ -22,13 +22,11 @@ import numpy as np
 from ..errors import ParameterError
 from ._signals import (
     ModalEstimate,
-    _as_signals,
     _check_rank,
-    _check_supported,
     _hankel,
-    _modal_estimate,
-    _resolve_order,
+    _prepare,
     _select_order,
+    _subspace_estimate,
 )
 
 __all__ = ["era", "realize"]
@@ -57,6 +55,13 @@ def realize(
     >>> np.allclose(np.sort_complex(np.linalg.eigvals(A)), np.sort_complex(np.linalg.eigvals(a)))
     True
     """
+    u, s, vt, order, r = _hankel_svd(y, order, rows, constant)
+    a, c, x0 = _realization(u, s, vt, order, y.shape[0])
+    return a, c, x0, s, order, r
+
+
+def _hankel_svd(y: np.ndarray, order: int | None, rows: int | None, constant: bool):
+    """SVD of the block Hankel matrix, the (checked or selected) order and the number of block rows."""
     nch, n = y.shape
     r = _default_rows(n, nch, order) if rows is None else int(rows)
     if r < 2 or r > n - 1:
@@ -70,13 +75,16 @@ def realize(
             f"order {order} is larger than the Hankel matrix ({r} block rows x {h.shape[1]} columns) supports; "
             "lower n_modes or pass more rows / a longer record"
         )
-    _check_rank(s, order)
+    _check_rank(s, order, spare=bool(constant) and order % 2 == 1)
+    return u, s, vt, order, r
+
+
+def _realization(u: np.ndarray, s: np.ndarray, vt: np.ndarray, order: int, nch: int):
+    """Kung's balanced realisation ``(A, C, x0)`` from the first ``order`` singular triplets."""
     sq = np.sqrt(s[:order])
     gamma = u[:, :order] * sq
     a, *_ = np.linalg.lstsq(gamma[:-nch], gamma[nch:], rcond=None)
-    c = gamma[:nch]
-    x0 = sq * vt[:order, 0]
-    return a, c, x0, s, order, r
+    return a, gamma[:nch], sq * vt[:order, 0]
 
 
 def era(
@@ -125,24 +133,18 @@ def era(
     >>> np.round(est.mode_shapes, 8).tolist()
     [[1.0, 1.0], [1.0, -0.5]]
     """
-    y, dt = _as_signals(signals, dt)
-    p = _resolve_order(n_modes, order, constant)
-    if p is not None:
-        _check_supported(p, y.shape[1], "Hankel realisation")
-    a, c, x0, s, p, r = realize(y, p, rows=rows, constant=constant)
-    use_const = bool(constant) and p % 2 == 1
-    z, t = np.linalg.eig(a)
-    try:
-        q = (c @ t) * np.linalg.solve(t, x0)[None, :]
-    except np.linalg.LinAlgError:  # defective realisation: keep going, Q is only informative
-        q = np.full((c.shape[0], z.size), np.nan + 0j)
-    return _modal_estimate(
-        y,
-        dt,
-        z,
-        constant=use_const,
-        method="era",
-        singular_values=s,
-        nyquist_margin=nyquist_margin,
-        details={"A": a, "C": c, "x0": x0, "Q": q, "discrete_poles": z, "rows": r},
+    y, dt, p = _prepare(signals, dt, n_modes, order, constant, "Hankel realisation")
+    u, s, vt, p, r = _hankel_svd(y, p, rows, constant)
+
+    def poles_at(k: int) -> tuple[np.ndarray, dict[str, Any]]:
+        a, c, x0 = _realization(u, s, vt, k, y.shape[0])
+        z, t = np.linalg.eig(a)
+        try:
+            q = (c @ t) * np.linalg.solve(t, x0)[None, :]
+        except np.linalg.LinAlgError:  # defective realisation: keep going, Q is only informative
+            q = np.full((c.shape[0], z.size), np.nan + 0j)
+        return z, {"A": a, "C": c, "x0": x0, "Q": q, "discrete_poles": z, "rows": r}
+
+    return _subspace_estimate(
+        y, dt, p, constant, poles_at, method="era", singular_values=s, nyquist_margin=nyquist_margin
     )

@@ -20,12 +20,10 @@ import numpy as np
 from ..errors import IdentificationError, ParameterError
 from ._signals import (
     ModalEstimate,
-    _as_signals,
     _check_rank,
-    _check_supported,
-    _modal_estimate,
-    _resolve_order,
+    _prepare,
     _select_order,
+    _subspace_estimate,
 )
 
 __all__ = ["esprit", "matrix_pencil"]
@@ -50,40 +48,38 @@ def _subspace(y: np.ndarray, order: int | None, pencil: int | None, constant: bo
         raise ParameterError(
             f"order {order} is larger than the data support (pencil {lpar}, {h.shape[0]} Hankel rows); lower n_modes"
         )
-    _check_rank(s, order)
+    _check_rank(s, order, spare=bool(constant) and order % 2 == 1)
+    return vt, s, order, lpar
+
+
+def _shift_poles(vt: np.ndarray, order: int, tls: bool) -> np.ndarray:
+    """Discrete poles from the shift invariance of the first ``order`` right singular vectors (LS or TLS)."""
     v = vt[:order].conj().T  # (L+1, order)
-    return v, s, order, lpar
-
-
-def _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls: bool) -> ModalEstimate:
-    y, dt = _as_signals(signals, dt)
-    p = _resolve_order(n_modes, order, constant)
-    if p is not None:
-        _check_supported(p, y.shape[1], "matrix pencil")
-    v, s, p, lpar = _subspace(y, p, pencil, constant)
     v1, v2 = v[:-1], v[1:]
     if tls:
         _, _, wt = np.linalg.svd(np.hstack([v1, v2]), full_matrices=True)
         w = wt.conj().T
-        w12, w22 = w[:p, p:], w[p:, p:]
+        w12, w22 = w[:order, order:], w[order:, order:]
         try:
             psi = -w12 @ np.linalg.inv(w22)
         except np.linalg.LinAlgError:
             raise IdentificationError("esprit: the total-least-squares shift equation is singular") from None
     else:
         psi, *_ = np.linalg.lstsq(v1, v2, rcond=None)
-    z = np.linalg.eigvals(psi)
-    use_const = bool(constant) and p % 2 == 1
+    return np.linalg.eigvals(psi)
+
+
+def _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls: bool) -> ModalEstimate:
+    y, dt, p = _prepare(signals, dt, n_modes, order, constant, "matrix pencil")
+    vt, s, p, lpar = _subspace(y, p, pencil, constant)
+
+    def poles_at(k: int) -> tuple[np.ndarray, dict[str, Any]]:
+        z = _shift_poles(vt, k, tls)
+        return z, {"pencil": lpar, "discrete_poles": z}
+
     name = "esprit" if tls else "matrix_pencil"
-    return _modal_estimate(
-        y,
-        dt,
-        z,
-        constant=use_const,
-        method=name,
-        singular_values=s,
-        nyquist_margin=nyquist_margin,
-        details={"pencil": lpar, "discrete_poles": z},
+    return _subspace_estimate(
+        y, dt, p, constant, poles_at, method=name, singular_values=s, nyquist_margin=nyquist_margin
     )
 
 

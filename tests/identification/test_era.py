@@ -180,7 +180,7 @@ def test_era_bad_input():
     with pytest.raises(IdentificationError, match="support only 6 exponentials"):
         era(y, 0.05, 4, constant=False)
     with pytest.raises(IdentificationError, match="constant=False"):
-        era(y, 0.05, 3)  # no offset in the data but a constant state requested
+        era(y, 0.05, 4)  # more exponentials than the data support, even allowing for an unused offset state
     with pytest.raises(ParameterError, match="larger than"):
         era(y[:, :20], 0.05, 6)
     with pytest.raises(ParameterError, match="rows"):
