@@ -7,12 +7,15 @@
   :func:`smith_form`, :func:`minimal_polynomial`, :func:`polymatrix_divmod`, :func:`pencil_divisors`.
 * Characteristic polynomials — :func:`leverrier`, :func:`krylov`, :func:`danilevsky`, :func:`adjugate_poly`.
 * The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`.
+* Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
+  :func:`luzin_form`.
 """
 
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
+from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
 from .polynomial_matrices import (
     PencilDivisors,
     SmithForm,
@@ -29,10 +32,12 @@ from .spectral import SpectralComponent, SpectralDecomposition, spectral_decompo
 __all__ = [
     "MatrixFunction",
     "Matrizant",
+    "ModalMatrix",
     "PencilDivisors",
     "SmithForm",
     "SpectralComponent",
     "SpectralDecomposition",
+    "TriangularForm",
     "adjugate_poly",
     "charpoly",
     "danilevsky",
@@ -44,11 +49,14 @@ __all__ = [
     "invariant_factors",
     "krylov",
     "leverrier",
+    "luzin_form",
     "matrix_function",
     "matrizant",
     "matrizant_numeric",
     "minimal_polynomial",
+    "modal_matrix",
     "pencil_divisors",
+    "pencil_modal_matrix",
     "polymatrix_divmod",
     "series_converges",
     "smith_form",

@@ -12,7 +12,14 @@ p/(p**2 + 1)
 sin(t)
 """
 
-from .difference import DifferenceSolution, inverse_step_image, solve_difference, step_image
+from .difference import (
+    DifferenceSolution,
+    IndefiniteSum,
+    indefinite_sum,
+    inverse_step_image,
+    solve_difference,
+    step_image,
+)
 from .heaviside import first_expansion, heaviside_expand, residue_inverse
 from .integral_square import cross_integral, hurwitz_matrix, integral_square, is_hurwitz
 from .systems import OperationalSolution, solve_operational
@@ -23,13 +30,17 @@ from .theorems import (
     delay,
     differentiate_image,
     differentiate_original,
+    differentiate_parameter,
     duhamel,
     final_value,
     finite_difference,
     finite_sum,
+    higher_difference,
     initial_value,
     integral_to_infinity,
     integrate_original,
+    integrate_parameter,
+    multiple_advance,
     product_of_originals,
     shift,
     similarity,
@@ -39,6 +50,7 @@ from .transform import NumericInversion, carson, inverse_carson, invert_numeric
 __all__ = [
     "CARSON_TABLE",
     "DifferenceSolution",
+    "IndefiniteSum",
     "NumericInversion",
     "OperationalSolution",
     "TableEntry",
@@ -51,21 +63,26 @@ __all__ = [
     "delay",
     "differentiate_image",
     "differentiate_original",
+    "differentiate_parameter",
     "duhamel",
     "final_value",
     "finite_difference",
     "finite_sum",
     "first_expansion",
     "heaviside_expand",
+    "higher_difference",
     "hurwitz_matrix",
+    "indefinite_sum",
     "initial_value",
     "integral_square",
     "integral_to_infinity",
     "integrate_original",
+    "integrate_parameter",
     "inverse_carson",
     "inverse_step_image",
     "invert_numeric",
     "is_hurwitz",
+    "multiple_advance",
     "product_of_originals",
     "residue_inverse",
     "shift",

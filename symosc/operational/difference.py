@@ -21,13 +21,21 @@ systems are carried over from §2.21b by analogy (the solution evaluated at ``n 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import sympy as sp
 
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots
 
-__all__ = ["DifferenceSolution", "inverse_step_image", "solve_difference", "step_image"]
+__all__ = [
+    "DifferenceSolution",
+    "IndefiniteSum",
+    "indefinite_sum",
+    "inverse_step_image",
+    "solve_difference",
+    "step_image",
+]
 
 _n = sp.Symbol("n", integer=True, nonnegative=True)
 _gamma = sp.Symbol("gamma")
@@ -251,4 +259,136 @@ def solve_difference(f, e, inputs=None, initial=None, *, T: sp.Symbol | None = N
         feedthrough=smat.subs(g, sp.Symbol("gamma")),
         delta=delta.subs(g, sp.Symbol("gamma")),
         n=n,
+    )
+
+
+@dataclass(frozen=True)
+class IndefiniteSum:
+    """Result of :func:`indefinite_sum`: the general solution ``y`` of ``Delta y = y(t + tau) - y(t) = x(t)`` (2.68),
+
+        y(t) = sum_{j=1}^{floor(t/tau)} x(t - j tau) + A(t),     A(t) = a(t - tau floor(t/tau)),
+
+    ``A`` the arbitrary ``tau``-periodic function that replaces the constant of an indefinite integral; ``a`` is
+    ``y`` on ``(0, tau)``.
+
+    Attributes
+    ----------
+    definite : Expr
+        The definite sum (2.31), the solution that vanishes on ``0 <= t < tau`` (an unevaluated ``Sum``).
+    periodic : Expr
+        ``A(t)``.
+    piece : Expr
+        ``a(t)``, the values on ``(0, tau)``.
+    x, t, tau, p
+        The data.
+    """
+
+    x: sp.Expr
+    piece: sp.Expr
+    t: sp.Symbol
+    tau: sp.Expr
+    p: sp.Symbol
+    given_image: sp.Expr | None = None
+
+    @property
+    def definite(self) -> sp.Expr:
+        j = sp.Dummy("j", integer=True, positive=True)
+        return sp.Sum(self.x.subs(self.t, self.t - j * self.tau), (j, 1, sp.floor(self.t / self.tau)))
+
+    @property
+    def periodic(self) -> sp.Expr:
+        return self.piece.subs(self.t, self.t - self.tau * sp.floor(self.t / self.tau))
+
+    @property
+    def original(self) -> sp.Expr:
+        """``y(t)`` (2.68)."""
+        return self.definite + self.periodic
+
+    @cached_property
+    def head(self) -> sp.Expr:
+        """``alpha(p) = p Integral(a(t) exp(-p t), (t, 0, tau))`` (2.64)."""
+        return _p_integral(self.piece, self.t, self.p, self.tau)
+
+    @cached_property
+    def image(self) -> sp.Expr:
+        """``eta(p) = X(p)/(exp(p tau) - 1) + exp(p tau) alpha(p)/(exp(p tau) - 1)``: (2.34) solved for ``eta``."""
+        from .transform import carson
+
+        xi = self.given_image if self.given_image is not None else carson(self.x, self.t, self.p)
+        g = sp.exp(self.p * self.tau)
+        return xi / (g - 1) + g * self.head / (g - 1)
+
+    def __call__(self, value) -> sp.Expr:
+        """``y`` at a numeric ``t = value >= 0`` (the finite sum written out)."""
+        value = sp.sympify(value)
+        ratio = value / self.tau
+        if not ratio.is_number or ratio.is_negative:
+            raise ParameterError(f"evaluate y at a numeric t >= 0 with numeric tau; got t = {value}, tau = {self.tau}")
+        n = int(sp.floor(ratio))
+        head = self.piece.subs(self.t, value - n * self.tau)
+        return sp.Add(*[self.x.subs(self.t, value - j * self.tau) for j in range(1, n + 1)]) + head
+
+    def __repr__(self) -> str:
+        return f"IndefiniteSum(Delta y = {self.x}, tau = {self.tau}, y = {self.piece} on (0, tau))"
+
+    def _repr_latex_(self) -> str:
+        return f"$$y(t) = {sp.latex(self.original)}$$"
+
+
+def _p_integral(a, t: sp.Symbol, p: sp.Symbol, tau) -> sp.Expr:
+    """Carson image ``p Integral(a(t) exp(-p t), (t, 0, tau))`` of ``a`` cut to ``(0, tau)`` (2.64)."""
+    pp = sp.Dummy("p", positive=True)  # entire in p: integrate for p > 0 (no Piecewise at p = 0) and continue
+    return sp.simplify(p * sp.integrate(sp.sympify(a) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p))
+
+
+def indefinite_sum(x, t: sp.Symbol, tau, piece=None, *, p: sp.Symbol | None = None, image=None) -> IndefiniteSum:
+    """Indefinite sum: every ``y`` with first difference ``Delta y = y(t + tau) - y(t) = x(t)`` (Bulgakov 2.67–2.68).
+
+    By (2.34) the images satisfy ``(exp(p tau) - 1) eta - exp(p tau) alpha = X``, where ``alpha`` is the image of
+    ``y`` cut to ``(0, tau)``; solving for ``eta`` and inverting with (2.31) and (2.66) gives
+
+        y(t) = sum_{j=1}^{floor(t/tau)} x(t - j tau) + A(t),
+
+    with ``A`` periodic (period ``tau``) and equal to ``y`` on ``(0, tau)``: an arbitrary periodic function takes the
+    place of the constant of integration.  The first term is the definite sum, the solution vanishing on
+    ``0 <= t < tau``.
+
+    What is reconstructed: (2.67), the image equation and (2.68) are legible in the seed; the closed form of the
+    image ``eta`` above is the book's intermediate step with the OCR garbling removed.  The tests check
+    ``Delta y = x`` pointwise and ``eta`` against numeric quadrature of ``p Integral(y exp(-p t))``.
+
+    Parameters
+    ----------
+    x : Expr
+        The given difference, an expression in ``t``.
+    t : Symbol
+    tau : Expr
+        Step, ``tau > 0``.
+    piece : Expr, optional
+        ``a(t)``: the values of ``y`` on ``(0, tau)``, which fix the periodic function.  Default: an undefined
+        function ``a(t)`` (the general solution).
+    p : Symbol, optional
+        Variable of the image (default ``Symbol("p")``).
+    image : Expr, optional
+        The Carson image of ``x``, if known (else computed lazily with :func:`~symosc.operational.carson`).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> t = sp.Symbol("t", nonnegative=True)
+    >>> y = indefinite_sum(t, t, 1, piece=sp.Integer(0))      # Delta y = t, y = 0 on (0, 1)
+    >>> [y(k) for k in range(5)]                              # 0, 0, 1, 3, 6: binomial(t, 2) at integers
+    [0, 0, 1, 3, 6]
+    >>> y.image                                               # (1/p)/(exp(p) - 1) by (2.31)
+    1/(p*(exp(p) - 1))
+    """
+    tau = sp.sympify(tau)
+    if tau.is_positive is False:
+        raise ParameterError(f"indefinite_sum needs tau > 0, got {tau}")
+    if not isinstance(t, sp.Symbol):
+        raise ParameterError(f"t must be a SymPy Symbol, got {t!r}")
+    piece = sp.Function("a")(t) if piece is None else sp.sympify(piece)
+    p = sp.Symbol("p") if p is None else p
+    return IndefiniteSum(
+        x=sp.sympify(x), piece=piece, t=t, tau=tau, p=p, given_image=None if image is None else sp.sympify(image)
     )

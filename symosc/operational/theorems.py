@@ -20,13 +20,17 @@ __all__ = [
     "delay",
     "differentiate_image",
     "differentiate_original",
+    "differentiate_parameter",
     "duhamel",
     "final_value",
     "finite_difference",
     "finite_sum",
+    "higher_difference",
     "initial_value",
     "integral_to_infinity",
     "integrate_original",
+    "integrate_parameter",
+    "multiple_advance",
     "product_of_originals",
     "shift",
     "similarity",
@@ -110,6 +114,141 @@ def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
         x, t = head
         head = p * sp.integrate(x * sp.exp(-p * t), (t, 0, tau))
     return (sp.exp(p * tau) - 1) * sp.sympify(image) - sp.exp(p * tau) * head
+
+
+def _heads(p, tau, m: int, heads, original, transform, what: str) -> list[sp.Expr]:
+    """The ``m`` head images of :func:`multiple_advance` / :func:`higher_difference` (given or integrated)."""
+    if (heads is None) == (original is None):
+        raise ParameterError(f"{what}: give exactly one of heads=[...] (m expressions in p) or original=(x, t)")
+    if heads is not None:
+        heads = [sp.sympify(h) for h in heads]
+        if len(heads) != m:
+            raise ParameterError(f"{what}: m = {m} needs {m} head images, got {len(heads)}")
+        return heads
+    x, t = original
+    x = sp.sympify(x)
+    # the integral over (0, tau) is entire in p: integrate for p > 0 (no Piecewise for p = 0) and continue
+    pp = sp.Dummy("p", positive=True)
+    return [
+        sp.simplify(p * sp.integrate(transform(x, t, j) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p)) for j in range(m)
+    ]
+
+
+def _check_order(m, what: str) -> int:
+    if int(m) != m or m < 0:
+        raise ParameterError(f"{what}: m must be an integer >= 0, got {m}")
+    return int(m)
+
+
+def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = None, *, original=None) -> sp.Expr:
+    """m-fold advance theorem (2.29–2.30): image of ``T**m x(t) = x(t + m tau)``,
+
+        exp(p m tau) X(p) - sum_{j=0}^{m-1} exp(p (m - j) tau) alpha_j(p),
+
+    with ``alpha_j(p) = p Integral(x(t + j tau) exp(-p t), (t, 0, tau))`` (2.29) the Carson image of the piece of
+    ``T**j x`` on ``(0, tau)``; ``alpha_0`` is the ``alpha`` of :func:`advance`.
+
+    Parameters
+    ----------
+    image : Expr
+        ``X(p)``.
+    tau : Expr
+        Step, ``tau >= 0``.
+    m : int
+        Number of advances, ``m >= 0`` (``m = 0`` returns ``X``).
+    heads : sequence of Expr, optional
+        ``[alpha_0, ..., alpha_{m-1}]`` as expressions in ``p``.
+    original : tuple (x, t), optional
+        The original instead of ``heads``: the ``alpha_j`` are then integrated.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t", positive=True)
+    >>> sp.simplify(multiple_advance(1 / p, p, 1, 2, original=(t, t)))     # t -> t + 2
+    2 + 1/p
+    """
+    m = _check_order(m, "multiple_advance")
+    tau = sp.sympify(tau)
+    if tau.is_negative:
+        raise ParameterError(f"multiple_advance needs tau >= 0, got {tau}")
+    alphas = _heads(p, tau, m, heads, original, lambda x, t, j: x.subs(t, t + j * tau), "multiple_advance")
+    return sp.exp(p * m * tau) * sp.sympify(image) - sp.Add(*[sp.exp(p * (m - j) * tau) * alphas[j] for j in range(m)])
+
+
+def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = None, *, original=None) -> sp.Expr:
+    """Image of the m-th finite difference ``Delta**m x(t)``, ``Delta = T - 1`` (2.35–2.37):
+
+        (exp(p tau) - 1)**m X(p) - exp(p tau) sum_{j=0}^{m-1} (exp(p tau) - 1)**(m - j - 1) beta_j(p),
+
+    with ``beta_j(p) = p Integral(Delta**j x(t) exp(-p t), (t, 0, tau))`` (2.37), ``beta_0 = alpha``; ``m = 1`` is
+    :func:`finite_difference` (2.34).
+
+    Parameters
+    ----------
+    image, tau, m
+        As in :func:`multiple_advance` (``tau > 0``).
+    heads : sequence of Expr, optional
+        ``[beta_0, ..., beta_{m-1}]``.
+    original : tuple (x, t), optional
+        The original instead of ``heads``; ``Delta**j x = sum_k (-1)**(j-k) binomial(j, k) x(t + k tau)`` (2.35) is
+        integrated.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, t = sp.symbols("p t", positive=True)
+    >>> sp.simplify(higher_difference(2 / p**2, p, 1, 2, original=(t**2, t)))     # Delta**2 t**2 = 2
+    2
+    """
+    m = _check_order(m, "higher_difference")
+    tau = sp.sympify(tau)
+    if tau.is_positive is False:
+        raise ParameterError(f"higher_difference needs tau > 0, got {tau}")
+
+    def delta_power(x, t, j):
+        return sp.Add(*[(-1) ** (j - k) * sp.binomial(j, k) * x.subs(t, t + k * tau) for k in range(j + 1)])
+
+    betas = _heads(p, tau, m, heads, original, delta_power, "higher_difference")
+    g = sp.exp(p * tau)
+    return (g - 1) ** m * sp.sympify(image) - g * sp.Add(*[(g - 1) ** (m - j - 1) * betas[j] for j in range(m)])
+
+
+def differentiate_parameter(image, s: sp.Symbol, order: int = 1) -> sp.Expr:
+    """Differentiation with respect to a parameter (2.42): ``d^k X(p, s)/ds^k <-> d^k x(t, s)/ds^k``.
+
+    The Carson transform commutes with differentiation in a parameter ``s`` independent of ``t`` and ``p`` (for
+    ``Re p`` beyond the abscissa of convergence, uniformly in ``s``); this is what lets operational calculus treat
+    partial differential equations.
+
+    >>> import sympy as sp
+    >>> p, s = sp.symbols("p s")
+    >>> sp.factor(differentiate_parameter(p / (p - s), s))      # d/ds exp(s t) = t exp(s t)
+    p/(p - s)**2
+    """
+    if not isinstance(s, sp.Symbol):
+        raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
+    if int(order) != order or order < 0:
+        raise ParameterError(f"order must be an integer >= 0, got {order}")
+    return sp.diff(sp.sympify(image), s, int(order))
+
+
+def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
+    """Integration with respect to a parameter (2.41): ``Integral(X(p, s), (s, s0, s1)) <-> Integral(x(t, s), (s, s0,
+    s1))``; ``s1`` defaults to ``s`` itself (the book's variable upper limit).
+
+    >>> import sympy as sp
+    >>> p, s, u = sp.symbols("p s u", positive=True)
+    >>> integrate_parameter(p / (p + u), u, 0, s)     # Integral(exp(-u t), (u, 0, s)) = (1 - exp(-s t))/t
+    -p*log(p) + p*log(p + s)
+    """
+    if not isinstance(s, sp.Symbol):
+        raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
+    upper = s if s1 is None else sp.sympify(s1)
+    if upper == s:
+        u = sp.Dummy(s.name)
+        return sp.integrate(sp.sympify(image).subs(s, u), (u, s0, s))
+    return sp.integrate(sp.sympify(image), (s, s0, upper))
 
 
 def similarity(image, p: sp.Symbol, a) -> sp.Expr:
