@@ -77,8 +77,7 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     if tau.is_negative:
         raise ParameterError(f"advance tau must be >= 0, got {tau}")
     if isinstance(head, tuple):
-        x, t = head
-        head = p * sp.integrate(x * sp.exp(-p * t), (t, 0, tau))
+        head = _head_image(*head, p, tau)
     return sp.exp(p * tau) * (sp.sympify(image) - head)
 
 
@@ -111,8 +110,7 @@ def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
     if tau.is_positive is False:
         raise ParameterError(f"finite_difference needs tau > 0, got {tau}")
     if isinstance(head, tuple):
-        x, t = head
-        head = p * sp.integrate(x * sp.exp(-p * t), (t, 0, tau))
+        head = _head_image(*head, p, tau)
     return (sp.exp(p * tau) - 1) * sp.sympify(image) - sp.exp(p * tau) * head
 
 
@@ -127,11 +125,17 @@ def _heads(p, tau, m: int, heads, original, transform, what: str) -> list[sp.Exp
         return heads
     x, t = original
     x = sp.sympify(x)
-    # the integral over (0, tau) is entire in p: integrate for p > 0 (no Piecewise for p = 0) and continue
+    return [sp.simplify(_head_image(transform(x, t, j), t, p, tau)) for j in range(m)]
+
+
+def _head_image(x, t, p, tau) -> sp.Expr:
+    """``p Integral(x(t) exp(-p t), (t, 0, tau))``, the Carson image of the piece of ``x`` on ``(0, tau)``.
+
+    The integral over a finite interval is entire in p: integrate for p > 0 (no ``Piecewise`` for p = 0) and
+    continue analytically, so the result is the same whatever assumptions the caller's ``p`` carries.
+    """
     pp = sp.Dummy("p", positive=True)
-    return [
-        sp.simplify(p * sp.integrate(transform(x, t, j) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p)) for j in range(m)
-    ]
+    return (p * sp.integrate(sp.sympify(x) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p))
 
 
 def _check_order(m, what: str) -> int:

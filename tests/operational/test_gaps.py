@@ -259,3 +259,17 @@ def test_indefinite_sum_bad_input():
         indefinite_sum(t, t, -1)
     with pytest.raises(ParameterError, match="numeric t >= 0"):
         indefinite_sum(t, t, 1, piece=sp.Integer(0))(-2)
+
+
+def test_advance_and_difference_heads_without_positive_p():
+    """The integrated head carries no Piecewise when p has no sign assumption (entire in p)."""
+    from symosc.operational import advance, carson, finite_difference
+
+    q, tt = sp.symbols("q tt")
+    head_adv = advance(q / (q + 1), q, 1, (sp.exp(-tt), tt))
+    head_dif = finite_difference(1 / q, q, 1, (tt, tt))
+    assert not head_adv.has(sp.Piecewise) and not head_dif.has(sp.Piecewise)
+    t_pos, p_pos = sp.symbols("t p", positive=True)
+    expected = carson(sp.exp(-(t_pos + 1)), t_pos, p_pos).subs(p_pos, q)
+    assert sp.simplify(head_adv - expected) == 0
+    assert sp.simplify(head_dif - 1) == 0
