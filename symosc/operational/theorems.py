@@ -135,7 +135,7 @@ def _head_image(x, t, p, tau) -> sp.Expr:
     continue analytically, so the result is the same whatever assumptions the caller's ``p`` carries.
     """
     pp = sp.Dummy("p", positive=True)
-    return (p * sp.integrate(sp.sympify(x) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p))
+    return p * sp.integrate(sp.sympify(x) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p)
 
 
 def _check_order(m, what: str) -> int:
