@@ -128,6 +128,8 @@ def _check_value(symbol: sp.Symbol, value: Any, backend: str) -> Any:
             raise ParameterError(f"{symbol.name} must be positive (declared positive), got {value!r}")
         if symbol.is_nonnegative and not arr_min >= 0:
             raise ParameterError(f"{symbol.name} must be non-negative (declared nonnegative), got {value!r}")
+    if backend != "mpmath" and v.ndim == 0:
+        return v.item()  # a plain scalar keeps the generated code on its scalar fast path
     return v
 
 
