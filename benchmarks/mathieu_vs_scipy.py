@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 import time
+from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -21,35 +23,8 @@ import scipy.special as sp
 
 from symosc.periodic import mathieu_a, mathieu_b
 
-
-def sturm_reference(kind: str, n: int, q: float, dps: int = 50) -> mpmath.mpf:
-    """Independent check: Sturm-count bisection on the Hill matrix in mpmath (as in the tests)."""
-    if kind == "a":
-        off, sign, k, two = (0, 0, n // 2, True) if n % 2 == 0 else (1, 1, n // 2, False)
-    else:
-        off, sign, k, two = (1, -1, n // 2, False) if n % 2 == 1 else (2, 0, n // 2 - 1, False)
-    with mpmath.workdps(dps + 15):
-        qm = mpmath.mpf(q)
-        size = k + 40 + 2 * int(math.sqrt(abs(q)))
-        d = [mpmath.mpf((2 * j + off) ** 2) for j in range(size)]
-        d[0] += sign * qm
-        b2 = [qm * qm] * (size - 1)
-        if two:
-            b2[0] = 2 * qm * qm
-
-        def below(x):
-            count, p = 0, d[0] - x
-            for j in range(size):
-                if j:
-                    p = d[j] - x - b2[j - 1] / (p if p != 0 else mpmath.mpf(10) ** -100)
-                count += p < 0
-            return count
-
-        lo, hi = mpmath.mpf(n * n) - 2 * abs(qm) - 1, mpmath.mpf(n * n) + 2 * abs(qm) + 1
-        while hi - lo > mpmath.mpf(10) ** (-(dps - 5)) * max(1, abs(lo)):
-            mid = (lo + hi) / 2
-            lo, hi = (lo, mid) if below(mid) > k else (mid, hi)
-        return (lo + hi) / 2
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from tests.periodic.test_mathieu import reference_value as sturm_reference
 
 
 def timed(fn, repeat=1):

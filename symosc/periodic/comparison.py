@@ -176,8 +176,18 @@ def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 
     kap = series_boundary("a", 0, 1)  # -q**2/2
     common = {"natural_frequencies": model.natural_frequencies, "ratios": ratios, "_model": model}
 
-    def between(lower: Any, upper: Any) -> Any:
-        return lambda a1, q1: (a1 > lower(q1)) & (a1 < upper(q1))
+    def approximate(notes: str, lower: Any, upper: Any, q_bounds: Any) -> StabilityRegion:
+        """A region given by closed-form boundary curves a1 = lower(q1), upper(q1)."""
+        return StabilityRegion(
+            method=method,
+            diagram=None,
+            notes=notes,
+            _lower=lower,
+            _upper=upper,
+            _classify=lambda a1, q1: (a1 > lower(q1)) & (a1 < upper(q1)),
+            _q_bounds=q_bounds,
+            **common,
+        )
 
     if method == "floquet":
         eng = _CoupledFloquet(model, rtol)
@@ -202,16 +212,7 @@ def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 
             return np.sqrt(-2 * a1), rN - a1
 
         notes = "Otterbein (1982), reconstructed: a0 ~ -q^2/2 (mode 1), b1 ~ 1 - q (mode N)"
-        return StabilityRegion(
-            method=method,
-            diagram=None,
-            notes=notes,
-            _lower=lower,
-            _upper=upper,
-            _classify=between(lower, upper),
-            _q_bounds=qb,
-            **common,
-        )
+        return approximate(notes, lower, upper, qb)
     if method == "acheson":
         lower = _envelope_lower(ratios, kap)
         q_cap = 2 * ACHESON_BETA * rN
@@ -223,16 +224,7 @@ def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 
             return np.sqrt(-2 * a1), np.full(np.shape(a1), q_cap)
 
         notes = "Acheson (1993) pendulum theorem, reconstructed: q1 > sqrt(-2 a1) and q_N < 2*0.450"
-        return StabilityRegion(
-            method=method,
-            diagram=None,
-            notes=notes,
-            _lower=lower,
-            _upper=upper,
-            _classify=between(lower, upper),
-            _q_bounds=qb,
-            **common,
-        )
+        return approximate(notes, lower, upper, qb)
     if method == "chelomei":
         if order not in (1, 2):
             raise ParameterError(f"chelomei: order must be 1 or 2, got {order!r}")
@@ -256,16 +248,7 @@ def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 
             return np.sqrt(x), np.full(np.shape(a1), np.inf)
 
         notes = f"Chelomei (1999) Kapitza averaging, approximation {order}, reconstructed (lower boundary only)"
-        return StabilityRegion(
-            method=method,
-            diagram=None,
-            notes=notes,
-            _lower=lower,
-            _upper=upper,
-            _classify=between(lower, upper),
-            _q_bounds=qb,
-            **common,
-        )
+        return approximate(notes, lower, upper, qb)
     raise ParameterError(f"unknown method {method!r}")
 
 

@@ -10,22 +10,12 @@ import pytest
 from scipy.linalg import eigh
 
 from symosc.errors import ParameterError
-from symosc.models import n_link_pendulum
+from symosc.models import gribkov_khokhlov_table1, n_link_pendulum
 from symosc.periodic import compare_methods, mathieu_a, mathieu_b, stability_region
 from symosc.periodic.comparison import ACHESON_BETA
 
 G = 9.81
-TABLE1 = {
-    "m1": 1.032e-3,
-    "m2": 0.424e-3,
-    "l1": 45.0e-3,
-    "l2": 26.2e-3,
-    "lc1": 24.917e-3,
-    "lc2": 12.838e-3,
-    "I1": 146.804e-9,
-    "I2": 32.871e-9,
-    "g": G,
-}
+TABLE1 = gribkov_khokhlov_table1()  # Gribkov & Khokhlov 2015, Table 1, in SI units
 _S: dict = {}
 
 

@@ -19,7 +19,7 @@ from scipy.linalg import eigh
 
 from symosc.errors import ModelError, ParameterError
 from symosc.mechanics import LinearModel
-from symosc.models import n_link_pendulum
+from symosc.models import gribkov_khokhlov_table1, n_link_pendulum
 from symosc.periodic import (
     ince_strutt_diagram,
     mathieu_a,
@@ -31,17 +31,7 @@ from symosc.periodic import (
 from symosc.symbols import t
 
 G = 9.81
-TABLE1 = {  # Gribkov & Khokhlov 2015, Table 1, converted to SI
-    "m1": 1.032e-3,
-    "m2": 0.424e-3,
-    "l1": 45.0e-3,
-    "l2": 26.2e-3,
-    "lc1": 24.917e-3,
-    "lc2": 12.838e-3,
-    "I1": 146.804e-9,
-    "I2": 32.871e-9,
-    "g": G,
-}
+TABLE1 = gribkov_khokhlov_table1()  # Gribkov & Khokhlov 2015, Table 1, in SI units
 
 _SYSTEMS: dict = {}
 
