@@ -136,12 +136,15 @@ def _lagrangian(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> Mechan
     from ..errors import ModelError
     from ..mechanics import LagrangianSystem
 
-    try:  # check now, so that a T that is not quadratic in the velocities is reported against the file
-        system = LagrangianSystem(T, V, qs, dissipation=R, forces=Q)
+    try:  # build now, so that a T that is not quadratic in the velocities is reported against the file
+        with log.step("build the Lagrangian system", "T, V (R, forces) parsed from the scene file"):
+            system = LagrangianSystem(T, V, qs, dissipation=R, forces=Q)
     except ModelError as exc:
         raise ctx.error("system.T", str(exc), "check T, V, R and forces") from None
     vibrating = t in (T.free_symbols | V.free_symbols)
-    return MechanicalModel(log, lambda: system, f"Lagrangian system in {', '.join(coords)}", vibrating=vibrating)
+    model = MechanicalModel(log, lambda: system, f"Lagrangian system in {', '.join(coords)}", vibrating=vibrating)
+    model.__dict__["system"] = system  # already built (and logged)
+    return model
 
 
 # ------------------------------------------------------------------------------------------------ other models

@@ -154,13 +154,18 @@ def equations_of_motion(q: Question) -> QuestionResult:
     import sympy as sp
 
     M, F = q.model.equations
-    qdd = sp.Matrix(q.model.system.accelerations)
-    latex = f"{sp.latex(sp.MatMul(M, qdd, evaluate=False))} = {sp.latex(F)}"
+    system = q.model.system
+    names = {}
+    for c, v, acc in zip(system.coordinates, system.velocities, system.accelerations, strict=True):
+        names[v] = rf"\dot{{{sp.latex(c)}}}"
+        names[acc] = rf"\ddot{{{sp.latex(c)}}}"
+    lhs = sp.MatMul(M, sp.Matrix(system.accelerations), evaluate=False)
+    latex = f"{sp.latex(lhs, symbol_names=names)} = {sp.latex(F, symbol_names=names)}"
     return QuestionResult(
         "equations_of_motion",
         "Nonlinear equations of motion M(q, t) q'' = F(q, q', t) (LaTeX)",
         (latex,),
-        data={"latex": latex},
+        data={"latex": latex, "mass_matrix": str(M), "forcing": str(F)},
     )
 
 
