@@ -36,7 +36,9 @@ def _floquet_radius(M, C, g, a, p):
 
 
 def _point_chain(m, l, g):
-    """Inverted chain of point masses written out by hand: M_ij = l_i l_j sum_{k >= max(i,j)} m_k, C_ii = l_i sum_{k>=i} m_k."""
+    """Inverted chain of point masses written out by hand.
+
+    M_ij = l_i l_j sum_{k >= max(i,j)} m_k,  C_ii = l_i sum_{k >= i} m_k."""
     n = len(m)
     tail = [sum(m[k:]) for k in range(n)]
     M = np.array([[l[i] * l[j] * tail[max(i, j)] for j in range(n)] for i in range(n)])
@@ -45,7 +47,7 @@ def _point_chain(m, l, g):
 
 def check_inverted_pendulum_n1():
     """Kapitza pendulum: the interval ends solve a_0(q) = a and b_1(q) = a (SciPy's Mathieu functions)."""
-    scene, res = _run("inverted_pendulum_n1")
+    _, res = _run("inverted_pendulum_n1")
     m, l, g = 0.01, 0.2, 9.81
     mats = res["linear_matrices"].data["numeric"]
     np.testing.assert_allclose(mats["M"], [[m * l**2]], rtol=1e-14)
@@ -63,7 +65,7 @@ def check_inverted_pendulum_n1():
 
 def check_inverted_pendulum_n3():
     """Triple chain: stability interval and Floquet verdicts against the hand-written 6-D system."""
-    scene, res = _run("inverted_pendulum_n3")
+    _, res = _run("inverted_pendulum_n3")
     M, C = _point_chain([0.02] * 3, [0.05] * 3, 9.81)
     lam = scipy.linalg.eigh(9.81 * C, M, eigvals_only=True)
     np.testing.assert_allclose(res["natural_frequencies"].data["omega_rad_s"], np.sqrt(lam), rtol=1e-10)
@@ -82,7 +84,7 @@ def check_inverted_pendulum_n3():
 
 def check_van_der_pol_series():
     """Amplitude of the cycle at eps = 0.3 from a long SciPy integration, against the series in the report."""
-    scene, res = _run("van_der_pol_series")
+    _, res = _run("van_der_pol_series")
     eps = 0.3
     sol = solve_ivp(lambda t, y: [y[1], eps * (1 - y[0] ** 2) * y[1] - y[0]], (0, 120), [2.0, 0.0], rtol=1e-12,
                     atol=1e-12, dense_output=True)  # fmt: skip
@@ -94,9 +96,10 @@ def check_van_der_pol_series():
 
 
 def check_duffing_resonance():
-    """Every point of the curve solves the textbook equation [(w0^2 - nu^2 + 3 mu a^2/4)^2 + (2 zeta w0 nu)^2] a^2 = R^2;
+    """Every point of the curve solves the textbook equation
+    [(w0^2 - nu^2 + 3 mu a^2/4)^2 + (2 zeta w0 nu)^2] a^2 = R^2;
     the number of steady states changes from 1 to 3 across each jump frequency."""
-    scene, res = _run("duffing_resonance")
+    _, res = _run("duffing_resonance")
     w0, zeta, mu, R = 1.0, 0.05, 0.5, 0.1
     fig = res["resonance_curve"].figures[0].data
     nu = np.array(fig["nu"])[:, None]
@@ -118,7 +121,7 @@ def check_duffing_resonance():
 
 def check_carson_solution():
     """Against sympy.dsolve of y'' + 3y' + 2y = 1, y(0) = y'(0) = 0."""
-    scene, res = _run("carson_solution")
+    _, res = _run("carson_solution")
     t = sp.Symbol("t")
     y = sp.Function("y")
     ref = sp.dsolve(
@@ -131,7 +134,7 @@ def check_carson_solution():
 
 
 def check_mathieu_values():
-    scene, res = _run("mathieu_values")
+    _, res = _run("mathieu_values")
     rows = [r for qr in res.results if qr.kind == "mathieu_values" for r in qr.data["values"]]
     kinds = ["a"] * 9 + ["b"] * 4
     for kind, r in zip(kinds, rows, strict=True):
@@ -142,7 +145,7 @@ def check_mathieu_values():
 
 def check_spring_pendulum():
     """Hand linearisation: M = [[M+m, m l], [m l, m l^2]], K = diag(k, m g l)."""
-    scene, res = _run("spring_pendulum")
+    _, res = _run("spring_pendulum")
     Mb, m, l, k, g = 2.0, 0.5, 0.4, 200.0, 9.81
     lam = scipy.linalg.eigh(np.diag([k, m * g * l]), np.array([[Mb + m, m * l], [m * l, m * l**2]]), eigvals_only=True)
     np.testing.assert_allclose(res["natural_frequencies"].data["omega_rad_s"], np.sqrt(lam), rtol=1e-10)
@@ -153,7 +156,7 @@ def check_spring_pendulum():
 
 def check_belyakov_identification():
     """The record was simulated from the dissertation's body: Algorithm 1 recovers it."""
-    scene, res = _run("belyakov_identification")
+    _, res = _run("belyakov_identification")
     est = res["identify"].data["inertia"]
     true = dict(m=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
     for key, val in true.items():
