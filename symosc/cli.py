@@ -162,20 +162,36 @@ def _stability(args: argparse.Namespace) -> int:
     valid = [k for k in defaults if not (links == "rigid" and k == f"l{n}")]
     defaults = {k: v for k, v in defaults.items() if k in valid}
     sets = {**defaults, **_parse_sets(args.set, valid, {k: _pendulum_dimension(k) for k in valid})}
+    import dataclasses
+
     text = _stability_scene(n, links, sets, args.frequency, args.amplitude, bool(args.plot))
-    result = loads(text, name="symosc stability").run()
+    result = loads(text, name="stability").run()
+    qr = result.results[0]
+    lines = [line for line in qr.lines if not line.startswith("figure:")]
+    if args.plot:
+        lines.append(f"figure: {args.plot} (modified Ince–Strutt diagram, first-tone axes)")
+    if args.frequency is None:
+        lines.append("give --frequency (and --amplitude) for the stable amplitude interval at a pivot frequency")
+    figs = tuple(dataclasses.replace(f, filename=Path(args.plot).name) for f in qr.figures) if args.plot else ()
+    result = dataclasses.replace(result, results=(dataclasses.replace(qr, lines=tuple(lines), figures=figs),))
     print(f"parameters: {what}" + (" with --set overrides" if args.set else ""))
     print(result.report())
     if args.plot:
-        out = Path(args.plot)
-        fig = result.results[0].figures[0]
-        import dataclasses
-
-        fig = dataclasses.replace(fig, filename=out.name)
-        res = dataclasses.replace(result, results=(dataclasses.replace(result.results[0], figures=(fig,)),))
-        written = res.write(out.parent if str(out.parent) else ".", "json")
-        print(f"wrote {out}" if any(p.name == out.name for p in written) else "figure not written")
+        _write_figures(result, Path(args.plot))
     return 0
+
+
+def _write_figures(result, target: Path) -> None:
+    """Write the result's figures only (next to ``target``)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        written = result.write(tmp, "json")
+        for p in written:
+            if p.suffix == ".png":
+                target.parent.mkdir(parents=True, exist_ok=True)
+                p.replace(target)
+                print(f"wrote {target}")
 
 
 # -------------------------------------------------------------------------------------- mathieu, series, identify
@@ -214,6 +230,8 @@ def _identify(args: argparse.Namespace) -> int:
     from .scene import loads
 
     record = Path(args.record).resolve()
+    if not record.is_file():
+        raise RuntimeError(f"record file {args.record!r} not found")
     text = f'title = "Identification of {record.name}"\n[[questions]]\nkind = "identify"\nrecord = {str(record)!r}\n'
     text += f'n_modes = {args.modes}\nmethod = "{args.method}"\n'
     if args.dt is not None:

@@ -132,3 +132,92 @@ def test_no_command_and_help(capsys):
     for cmd in ("run", "double-pendulum", "stability", "mathieu", "series", "identify", "reproduce"):
         assert main([cmd, "--help"]) == 0
         assert f"symosc {cmd}" in capsys.readouterr().out
+
+
+def test_stability_interval_against_scipy_mathieu(tmp_path, capsys):
+    """One inverted point pendulum, l = 0.2 m, pivot at 50 Hz: the interval ends solve a_0(q) = a1 and b_1(q) = a1."""
+    from scipy.optimize import brentq
+
+    png = tmp_path / "fig" / "st.png"
+    argv = ["stability", "1", "--links", "point", "--set", "l1=200 mm", "--frequency", "50 Hz", "--plot", str(png)]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    lo, hi = (float(x) for x in re.search(r"stable amplitudes\s+([\d.]+) mm < a < ([\d.]+) mm", out).groups())
+    l, g, p = 0.2, 9.81, 2 * np.pi * 50
+    a1 = -4 * g / l / p**2
+    q_lo = brentq(lambda q: scipy.special.mathieu_a(0, q) - a1, 1e-6, 5)
+    q_hi = brentq(lambda q: scipy.special.mathieu_b(1, q) - a1, 1e-6, 5)
+    np.testing.assert_allclose([lo, hi], [q_lo * l / 2 * 1e3, q_hi * l / 2 * 1e3], rtol=1e-5)
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize(
+    ("argv", "code", "words"),
+    [
+        (["stability", "2", "--set", "l2=1"], 2, "Valid names: m1, m2, l1, lc1, lc2, I1, I2, g"),
+        (["stability", "0"], 2, "N must be a positive integer"),
+        (["stability", "1", "--frequency", "50 mm"], 1, "expected an angular frequency"),
+    ],
+)
+def test_stability_bad_input(capsys, argv, code, words):
+    assert main(argv) == code
+    err = capsys.readouterr().err
+    assert words in err and "Traceback" not in err
+
+
+def test_series_vdp_against_the_known_coefficients(capsys):
+    """Van der Pol: amplitude 2 + eps^2/96 - 1033 eps^4/552960, omega = 1 - eps^2/16 + 17 eps^4/3072 (Bulgakov §8,
+    and the classic expansions of Andersen & Geer 1982)."""
+    assert main(["series", "vdp", "--order", "4"]) == 0
+    out = capsys.readouterr().out
+    import sympy as sp
+
+    eps = sp.Symbol("eps")
+    amp = sp.sympify(re.search(r"x\(0\) = (.*)", out).group(1))
+    om = sp.sympify(re.search(r"omega = (.*)", out).group(1))
+    assert sp.expand(amp - (2 + eps**2 / 96 - sp.Rational(1033, 552960) * eps**4)) == 0
+    assert sp.expand(om - (1 - eps**2 / 16 + sp.Rational(17, 3072) * eps**4)) == 0
+
+
+def test_series_bad_order(capsys):
+    assert main(["series", "vdp", "--order", "0"]) == 2
+    assert main(["series", "duffing", "--order", "2"]) == 2
+    assert "invalid choice" in capsys.readouterr().err
+
+
+def test_identify_synthetic_record(tmp_path, capsys):
+    """Two damped tones of known frequency and decay, written as CSV: the estimate recovers them."""
+    dt = 0.01
+    t = np.arange(600) * dt
+    y1 = np.exp(-0.2 * t) * np.cos(2 * np.pi * 1.5 * t) + 0.5 * np.exp(-0.5 * t) * np.sin(2 * np.pi * 4.0 * t)
+    y2 = 0.3 * np.exp(-0.2 * t) * np.cos(2 * np.pi * 1.5 * t + 1) - np.exp(-0.5 * t) * np.sin(2 * np.pi * 4.0 * t)
+    path = tmp_path / "rec.csv"
+    np.savetxt(path, np.c_[y1, y2], delimiter=",", header="a,b", comments="")
+    assert main(["identify", str(path), "--dt", str(dt), "--modes", "2"]) == 0
+    rows = re.findall(r"^\s+(\d)\s+([\d.]+)\s+([\d.]+)\s+([-\d.e+]+)", capsys.readouterr().out, flags=re.M)
+    w = np.hypot(2 * np.pi * np.array([1.5, 4.0]), [0.2, 0.5])  # undamped |lambda|
+    np.testing.assert_allclose([float(r[1]) for r in rows], w, rtol=2e-7)  # printed to 8 digits
+    np.testing.assert_allclose([float(r[3]) for r in rows], np.array([0.2, 0.5]) / w, rtol=1e-3)
+
+
+def test_identify_bad_input(tmp_path, capsys):
+    assert main(["identify", str(tmp_path / "none.csv"), "--modes", "2"]) == 1
+    path = tmp_path / "rec.csv"
+    np.savetxt(path, np.ones((20, 2)), delimiter=",", header="a,b", comments="")
+    assert main(["identify", str(path), "--modes", "2"]) == 1  # no 't' column and no --dt
+    err = capsys.readouterr().err
+    assert "none.csv" in err and "dt" in err and "Traceback" not in err
+
+
+def test_reproduce_quick_table1(capsys):
+    assert main(["reproduce", "gribkov2015", "--quick"]) == 0
+    out = capsys.readouterr().out
+    row = re.search(r"p1, Hz\s+([\d.]+)\s+([\d.]+)", out)
+    assert float(row.group(1)) == 2.289
+    assert float(row.group(2)) == pytest.approx(_hand_frequencies_hz(T1)[0], rel=1e-5)
+    assert "[1/1] gribkov2015" in out and "done in" in out
+
+
+def test_reproduce_bad_source(capsys):
+    assert main(["reproduce", "gribkov"]) == 2
+    assert "invalid choice" in capsys.readouterr().err

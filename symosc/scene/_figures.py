@@ -11,7 +11,9 @@ def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: flo
     """The modified Ince–Strutt diagram (Gribkov & Khokhlov 2015, Fig. 3), with the excitation point marked."""
     from ..periodic import modified_ince_strutt as build
 
-    build(ratios[1:] or ratios).plot(ax, q_max=q_max)
+    lo = min(-0.05, 2.0 * point[0]) if point is not None else -0.05
+    build(ratios[1:] or ratios).plot(ax, q_max=q_max, a_range=(lo, 1.2 * min(ratios)))
+    ax.axvline(0.0, color="0.5", lw=0.6)
     if point is not None:
         ax.plot([point[0]], [point[1]], "o", color="C3", label="excitation point")
         ax.legend(loc="upper left")
