@@ -47,6 +47,7 @@ def __getattr__(name: str):
         "linear",
         "plotting",
         "cli",
+        "scene",
     }:
         return importlib.import_module(f".{name}", __name__)
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")
