@@ -306,16 +306,45 @@ def sweep_frequencies(q: Question) -> QuestionResult:
         )
     dim = q.model.dimension(name)
     vals = np.array(q.ctx.quantities(q.opts["values"], q.key("values"), dim), dtype=float)
+    if q.opts["of"] == "amplitude_bounds":
+        return _sweep_bounds(q, name, vals)
     lin = q.model.linear
     with q.log.step(f"natural frequencies over {name}", f"{vals.size} values, vectorised"):
-        omega = lin.natural_frequencies({**q.values, name: vals})
+        lam = lin.eigenvalues({**q.values, name: vals})
+        omega = np.sqrt(np.abs(lam)) if q.model.inverted else lin.natural_frequencies({**q.values, name: vals})
+        omega = np.sort(omega, axis=-1)
     hz = _hz(omega)
     rows = tuple((f"{v:.6g}", *(f"{h:.6f}" for h in row)) for v, row in zip(vals, hz, strict=True))
     headers = (f"{name} (SI)", *(f"f{i + 1}, Hz" for i in range(hz.shape[1])))
+    lines = ("frequencies of the hanging chain",) if q.model.inverted else ()
     return QuestionResult(
         "sweep",
         f"Natural frequencies against {name}",
-        (),
+        lines,
         (Table(headers, rows),),
         data={"parameter": name, "values": vals.tolist(), "frequency_hz": hz.tolist()},
+    )
+
+
+def _sweep_bounds(q: Question, name: str, vals: np.ndarray) -> QuestionResult:
+    _needs_vibrating_inverted(q)
+    from ..periodic import stability_region
+
+    p = q.excitation.get("frequency")
+    if p is None:
+        raise q.fail("an amplitude_bounds sweep needs the pivot frequency", "add [excitation] frequency = ...", "of")
+    lin = q.model.linear
+    lo, hi = [], []
+    with q.log.step(f"stable amplitude interval over {name}", f"{vals.size} stability regions at p = {p:.6g} rad/s"):
+        for v in vals:
+            a_min, a_max = stability_region(lin, {**q.values, name: float(v)}).amplitude_bounds(p)
+            lo.append(float(a_min))
+            hi.append(float(a_max))
+    rows = tuple((f"{v:.6g}", f"{a * 1e3:.6g}", f"{b * 1e3:.6g}") for v, a, b in zip(vals, lo, hi, strict=True))
+    return QuestionResult(
+        "sweep",
+        f"Stable pivot amplitudes against {name} at {p / 2 / np.pi:.6g} Hz",
+        (),
+        (Table((f"{name} (SI)", "a_min, mm", "a_max, mm"), rows),),
+        data={"parameter": name, "values": vals.tolist(), "amplitude_min": lo, "amplitude_max": hi},
     )

@@ -138,7 +138,11 @@ QUESTIONS: dict[str, QuestionSpec] = {
             "sweep",
             "natural frequencies over a range of one parameter",
             _MECH,
-            {"parameter": (_str, None), "values": (_any, None)},
+            {
+                "parameter": (_str, None),
+                "values": (_any, None),
+                "of": (_choice("natural_frequencies", "amplitude_bounds"), "natural_frequencies"),
+            },
             mq.sweep_frequencies,
         ),
         QuestionSpec(

@@ -61,6 +61,13 @@ def check_inverted_pendulum_n1():
     assert d["amplitude_min"] == pytest.approx(q_lo * l / 2, rel=1e-7)
     assert d["amplitude_max"] == pytest.approx(q_hi * l / 2, rel=1e-7)
     assert d["stable"] is True
+    # the sweep over the length: each interval from SciPy's Mathieu functions again
+    sw = res["sweep"].data
+    for length, lo, hi in zip(sw["values"], sw["amplitude_min"], sw["amplitude_max"], strict=True):
+        a1 = -4 * (g / length) / p**2
+        q_lo = brentq(lambda q, a1=a1: scipy.special.mathieu_a(0, q) - a1, 1e-6, 5)
+        q_hi = brentq(lambda q, a1=a1: scipy.special.mathieu_b(1, q) - a1, 1e-6, 5)
+        assert (lo, hi) == pytest.approx((q_lo * length / 2, q_hi * length / 2), rel=1e-7)
 
 
 def check_inverted_pendulum_n3():
