@@ -22,6 +22,15 @@ class SceneError(ModelError):
         Dotted key, e.g. ``"parameters.m1"`` or ``"questions[2].kind"`` (empty for file-level errors).
     line : int or None
         Line of the key in the file, when it can be located.
+
+    Examples
+    --------
+    >>> str(SceneError("a.toml", "system.n", "expected an integer >= 1, got 0", line=4, fix="write n = 1"))
+    "a.toml, line 4: key 'system.n': expected an integer >= 1, got 0. Fix: write n = 1."
+
+    See Also
+    --------
+    symosc.scene.load : raises it for a bad scene file.
     """
 
     def __init__(self, path: str, key: str, message: str, *, line: int | None = None, fix: str = "") -> None:

@@ -12,7 +12,11 @@ __all__ = ["DerivationLog", "LogEntry"]
 
 @dataclass(frozen=True)
 class LogEntry:
-    """One derivation or evaluation step: its name, wall time in seconds and a short detail."""
+    """One derivation or evaluation step: its name, wall time in seconds and a short detail.
+
+    >>> LogEntry("linearize at q = 0", 0.0123)
+    LogEntry('linearize at q = 0', 12.3 ms)
+    """
 
     step: str
     seconds: float
@@ -32,6 +36,10 @@ class DerivationLog:
     ...     pass
     >>> log.steps()
     ['linearize']
+
+    See Also
+    --------
+    symosc.scene.SceneResult : carries the log of a run (``result.log``).
     """
 
     def __init__(self) -> None:

@@ -17,7 +17,19 @@ __all__ = ["Figure", "QuestionResult", "SceneResult", "Table"]
 
 @dataclass(frozen=True)
 class Table:
-    """A small table: column headers, rows of formatted cells and an optional caption."""
+    """A small table: column headers, rows of formatted cells and an optional caption.
+
+    Examples
+    --------
+    >>> print(Table(("mode", "f, Hz"), (("1", "2.3276"),)).markdown())
+    | mode | f, Hz |
+    |---|---|
+    | 1 | 2.3276 |
+
+    See Also
+    --------
+    QuestionResult : holds the tables of one answer.
+    """
 
     headers: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
@@ -63,7 +75,20 @@ def _numeric(cell: str) -> bool:
 
 @dataclass(frozen=True)
 class Figure:
-    """A figure to draw on demand: ``drawer`` names a function of :mod:`symosc.scene._figures`, ``data`` its input."""
+    """A figure to draw on demand: ``drawer`` names a function of :mod:`symosc.scene._figures`, ``data`` its input.
+
+    Figures are drawn only by :meth:`SceneResult.write` (matplotlib is imported there), so a result stays
+    picklable and cheap.
+
+    Examples
+    --------
+    >>> Figure("ince.png", "Ince–Strutt diagram", "ince_strutt", {"orders": 2, "q_max": 5.0}).drawer
+    'ince_strutt'
+
+    See Also
+    --------
+    SceneResult.write : draws and saves the figures.
+    """
 
     filename: str
     caption: str
@@ -73,7 +98,17 @@ class Figure:
 
 @dataclass(frozen=True)
 class QuestionResult:
-    """The answer to one question: text lines, tables, figures and JSON-ready ``data``."""
+    """The answer to one question: text lines, tables, figures and JSON-ready ``data``.
+
+    Examples
+    --------
+    >>> QuestionResult("natural_frequencies", "Natural frequencies", data={"omega_rad_s": [1.0]})
+    QuestionResult('natural_frequencies', 'Natural frequencies')
+
+    See Also
+    --------
+    SceneResult : all answers of a scene.
+    """
 
     kind: str
     title: str
@@ -90,7 +125,21 @@ class QuestionResult:
 class SceneResult:
     """Results of :meth:`Scene.run`: one :class:`QuestionResult` per question and the derivation log.
 
-    ``report()`` is the plain-text report, ``markdown()``/``html()`` the written ones, ``to_json()`` the data.
+    ``report()`` is the plain-text report, ``markdown()``/``html()`` the written ones, ``to_json()`` the data;
+    ``result["natural_frequencies"]`` is the first answer of that kind.
+
+    Examples
+    --------
+    >>> from symosc.scene import loads
+    >>> res = loads('[system]\\nmodel = "mathieu"\\n[[questions]]\\nkind = "mathieu_values"\\nn = 0\\nq = 0\\n').run()
+    >>> res["mathieu_values"].data["values"][0]["value"]
+    0.0
+    >>> [e.step for e in res.log]
+    ['Mathieu characteristic values']
+
+    See Also
+    --------
+    symosc.scene.load : read and validate a scene file.
     """
 
     title: str
@@ -108,6 +157,9 @@ class SceneResult:
 
     def __repr__(self) -> str:
         return f"SceneResult({self.title!r}, questions={[r.kind for r in self.results]})"
+
+    def _repr_html_(self) -> str:
+        return self.html()
 
     def _log_table(self) -> Table:
         rows = tuple((str(i + 1), e.step, f"{e.seconds * 1e3:.1f}", e.detail) for i, e in enumerate(self.log))

@@ -339,6 +339,19 @@ def loads(text: str, *, name: str = "<string>", overrides: Mapping[str, Any] | N
 
     ``overrides`` replaces parameter values (``{"m1": 0.002}``) before validation, as ``symosc double-pendulum
     --set`` does.
+
+    Examples
+    --------
+    >>> text = '[system]\\nmodel = "lagrangian"\\ncoordinates = ["x"]\\nT = "m*x_dot**2/2"\\nV = "k*x**2/2"\\n'
+    >>> text += '[parameters]\\nm = "2 kg"\\nk = "50 N/m"\\n[[questions]]\\nkind = "natural_frequencies"\\n'
+    >>> [round(w, 12) for w in loads(text).run()["natural_frequencies"].data["omega_rad_s"]]
+    [5.0]
+    >>> [round(w, 12) for w in loads(text, overrides={"k": "200 N/m"}).run()["natural_frequencies"].data["omega_rad_s"]]
+    [10.0]
+
+    See Also
+    --------
+    load : the same from a file.
     """
     ctx = Ctx(name, text)
     try:
