@@ -215,7 +215,23 @@ def stability(q: Question) -> QuestionResult:
                     f"{a * 1e3:.6g} mm -> {'STABLE' if stable else 'unstable'} (a1 = {a1:.4g}, q1 = {q1:.4g})",
                 )
             )
-    tables = (Table(("quantity", "value"), tuple(rows)),) if rows else ()
+    tables = [Table(("quantity", "value"), tuple(rows))] if rows else []
+    if q.opts.get("frequencies"):
+        ps = np.array(q.opts["frequencies"])
+        with q.log.step("amplitude intervals over the pivot frequencies", f"{ps.size} frequencies"):
+            lo, hi = reg.amplitude_bounds(ps)
+        tables.append(
+            Table(
+                ("p, Hz", "a_min, mm", "a_max, mm"),
+                tuple(
+                    (f"{x / 2 / np.pi:.6g}", f"{u * 1e3:.6g}", f"{v * 1e3:.6g}")
+                    for x, u, v in zip(ps, lo, hi, strict=True)
+                ),
+                "Stable pivot amplitudes a_min < a < a_max (nan: none)",
+            )
+        )
+        data["range"] = {"frequency_rad_s": ps.tolist(), "amplitude_min": lo.tolist(), "amplitude_max": hi.tolist()}
+    tables = tuple(tables)
     figures = ()
     if q.opts["figure"]:
         qmax = max(1.2 * reg.ratios[-1], 1.3 * point[1] if point else 0.0)

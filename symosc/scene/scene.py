@@ -123,6 +123,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
                     "modified-ince-strutt",
                 ),
                 "frequency": (_freq, None),
+                "frequencies": (_freqs, None),
                 "figure": (_bool, True),
             },
             mq.stability,
@@ -483,5 +484,15 @@ def _questions(ctx: Ctx, model: Any, qs: Any) -> list:
                         where, f"{kind} needs the option '{name}'", f"add {name} = ... to this [[questions]] block"
                     )
                 opts[name] = default
+        if kind == "sweep":
+            valid = model.parameter_names()
+            if opts["parameter"] not in valid:
+                raise ctx.error(
+                    f"{where}.parameter",
+                    f"unknown parameter {opts['parameter']!r}.{closest(opts['parameter'], valid)} "
+                    f"Valid parameters: {', '.join(valid)}",
+                    "name one of the model's parameters",
+                )
+            ctx.quantities(opts["values"], f"{where}.values", model.dimension(opts["parameter"]))
         out.append((kind, opts))
     return out

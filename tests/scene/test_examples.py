@@ -82,6 +82,11 @@ def check_inverted_pendulum_n3():
     assert _floquet_radius(M, C, 9.81, d["amplitude_min"] * 0.98, p) > 1 + 1e-5
     assert _floquet_radius(M, C, 9.81, d["amplitude_max"] * 0.98, p) < 1 + 1e-6
     assert _floquet_radius(M, C, 9.81, d["amplitude_max"] * 1.02, p) > 1 + 1e-5
+    rng = d["range"]
+    assert rng["amplitude_min"][1] == pytest.approx(d["amplitude_min"]) and rng["frequency_rad_s"][1] == p
+    p4, lo4, hi4 = rng["frequency_rad_s"][2], rng["amplitude_min"][2], rng["amplitude_max"][2]
+    assert _floquet_radius(M, C, 9.81, lo4 * 0.98, p4) > 1 + 1e-5 > _floquet_radius(M, C, 9.81, lo4 * 1.02, p4) - 1e-5
+    assert _floquet_radius(M, C, 9.81, hi4 * 1.02, p4) > 1 + 1e-5 > _floquet_radius(M, C, 9.81, hi4 * 0.98, p4) - 1e-5
     for row in res["floquet"].data["grid"]:
         ref = _floquet_radius(M, C, 9.81, row["amplitude"], row["frequency_rad_s"])
         assert row["max_abs_multiplier"] == pytest.approx(ref, rel=1e-6)
