@@ -180,3 +180,46 @@ values = ["8 N/m", "18 N/m", "32 N/m"]
 def test_overrides_are_validated_like_the_file():
     with pytest.raises(SceneError, match=r"parameters\.m1"):
         loads(TABLE1_SCENE, overrides={"m1": "3 mm"})
+
+
+def test_lagrangian_with_dissipation_and_forces():
+    """Damped, forced oscillator from T, V, R, Q: D = c, K = k, f = F0 cos(w t) (read off the energies by hand)."""
+    scene = loads(
+        """
+[system]
+model = "lagrangian"
+coordinates = ["x"]
+T = "m*x_dot**2/2"
+V = "k*x**2/2"
+R = "c*x_dot**2/2"
+forces = ["F0*cos(w*t)"]
+[parameters]
+m = 2.0
+k = 50.0
+c = 0.3
+F0 = 1.0
+w = 3.0
+[[questions]]
+kind = "linear_matrices"
+"""
+    )
+    res = scene.run()
+    num = res["linear_matrices"].data["numeric"]
+    np.testing.assert_allclose([num["M"][0][0], num["D"][0][0], num["K0"][0][0]], [2.0, 0.3, 50.0], rtol=1e-14)
+    import sympy as sp
+
+    f = scene.model.linear.f[0]
+    t = sp.Symbol("t")
+    F0, w = sp.Symbol("F0", positive=True), sp.Symbol("w", positive=True)
+    assert sp.simplify(f - F0 * sp.cos(w * t)) == 0
+
+
+def test_figures_without_matplotlib_say_so(tmp_path, monkeypatch, capsys):
+    import sys
+
+    res = load(EXAMPLES / "gribkov2015.toml").run()
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib now raises ImportError
+    paths = res.write(tmp_path, "md")
+    assert sorted(p.name for p in paths) == ["report.md", "results.json"]
+    msg = "figures skipped: matplotlib is not installed (pip install 'symosc[plot]')"
+    assert msg in capsys.readouterr().out and msg in (tmp_path / "report.md").read_text()
