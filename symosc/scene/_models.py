@@ -147,6 +147,56 @@ def _lagrangian(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> Mechan
     return model
 
 
+# ------------------------------------------------------------------------------------------------ body on springs
+def _body_dimension(name: str) -> str:
+    if name == "m":
+        return "mass"
+    if name.startswith("I"):
+        return "moment of inertia"
+    if name[0] in "kc":
+        return "stiffness"
+    return "length"  # rx, rz, Lx, Lz, x1.., z1..
+
+
+class LinearOnlyModel:
+    """A model known by its linear matrices only (no Lagrangian): natural frequencies, matrices, sweeps."""
+
+    category = "linear"
+    inverted = vibrating = False
+
+    def __init__(self, log: DerivationLog, body: Any, describe: str) -> None:
+        self.log, self._body, self.describe = log, body, describe
+        self.excitation_symbols: dict = {}
+
+    @cached_property
+    def linear(self):
+        from ..mechanics import LinearModel
+
+        with self.log.step("M, K of the 3-DOF model", "vertical rows of the 6-DOF model (Belyakov 2005, eqs 23-26)"):
+            n = self._body.M.shape[0]
+            coords = tuple(sp.Symbol(c, real=True) for c in ("y", "theta_z", "theta_x"))
+            return LinearModel(self._body.M, sp.zeros(n, n), self._body.K, sp.zeros(n, 1), coords)
+
+    def parameter_names(self) -> list[str]:
+        return [s.name for s in self._body.parameters]
+
+    def dimension(self, name: str) -> str | None:
+        return _body_dimension(name)
+
+
+def _body_on_springs(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> LinearOnlyModel:
+    n = ctx.integer(opts.get("n_springs", 4), "system.n_springs", minimum=3)
+    layout = opts.get("layout")
+    if layout is not None:
+        layout = ctx.choice(layout, "system.layout", ["rectangle", "general"])
+    conv = ctx.choice(opts.get("product_of_inertia", "tensor"), "system.product_of_inertia", ["tensor", "dissertation"])
+    from ..models import body_on_springs
+
+    with log.step("build the body-on-springs model", f"{n} springs, product of inertia: {conv}"):
+        body = body_on_springs(n, layout=layout, product_of_inertia=conv)
+    return LinearOnlyModel(log, body, f"rigid body on {n} vertical springs (Belyakov 2005), 3-DOF linear model")
+
+
 # ------------------------------------------------------------------------------------------------ other models
 @dataclass
 class SimpleModel:
@@ -274,6 +324,16 @@ MODELS: dict[str, ModelSpec] = {
                 "forces": "list, one per coordinate",
             },
             _lagrangian,
+        ),
+        ModelSpec(
+            "body_on_springs",
+            "rigid body on N vertical springs, 3-DOF (Belyakov 2005)",
+            {
+                "n_springs": "integer >= 3",
+                "layout": '"rectangle" or "general"',
+                "product_of_inertia": '"tensor" or "dissertation"',
+            },
+            _body_on_springs,
         ),
         ModelSpec("mathieu", "Mathieu equation y'' + (a - 2 q cos 2x) y = 0", {}, _mathieu),
         ModelSpec(

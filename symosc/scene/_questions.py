@@ -80,6 +80,8 @@ def natural_frequencies(q: Question) -> QuestionResult:
     if q.model.inverted:
         lines.append("Frequencies of the same chain hanging (the inverted equilibrium is statically unstable).")
     ref = q.opts.get("reference_hz")
+    if ref is None and q.opts.get("reference_rad_s") is not None:
+        ref = [w / (2 * np.pi) for w in q.opts["reference_rad_s"]]
     headers = ["mode", "omega, rad/s", "f, Hz"]
     if ref is not None:
         if len(ref) != len(omega):
@@ -95,9 +97,9 @@ def natural_frequencies(q: Question) -> QuestionResult:
     for i in range(len(omega)):
         row = [str(i + 1), _fmt(omega[i], ".6f"), _fmt(hz[i], ".6f")]
         if ref is not None:
-            row += [_fmt(ref[i]), f"{(hz[i] - ref[i]) / ref[i]:+.2%}"]
+            row += [_fmt(ref[i]), f"{(hz[i] - ref[i]) / ref[i]:+.3%}"]
         if Phi is not None:
-            row.append("(" + ", ".join(f"{c:+.6g}" for c in Phi[:, i]) + ")")
+            row.append("(" + ", ".join(f"{c + 0.0:+.6g}" for c in Phi[:, i]) + ")")
         rows.append(tuple(row))
     data: dict[str, Any] = {"omega_rad_s": omega.tolist(), "frequency_hz": hz.tolist()}
     if Phi is not None:

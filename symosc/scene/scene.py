@@ -89,11 +89,13 @@ def _times(ctx, v, k):
 
 _REF = {
     "reference_hz": (_floats, None),
+    "reference_rad_s": (_floats, None),
     "reference_ratio": (lambda c, v, k: _floats(c, v, k)[0], None),
     "reference": (_str, ""),
     "note": (_str, ""),
 }
 _MECH = ("mechanical",)
+_LIN = ("mechanical", "linear")
 _NL = ("weakly_nonlinear",)
 
 #: question kind -> specification (model categories it applies to, options, handler)
@@ -103,12 +105,12 @@ QUESTIONS: dict[str, QuestionSpec] = {
         QuestionSpec(
             "natural_frequencies",
             "natural frequencies and mass-normalised modes",
-            _MECH,
+            _LIN,
             dict(_REF),
             mq.natural_frequencies,
         ),
         QuestionSpec(
-            "linear_matrices", "M, D, K of the linearised model (LaTeX and numbers)", _MECH, {}, mq.linear_matrices
+            "linear_matrices", "M, D, K of the linearised model (LaTeX and numbers)", _LIN, {}, mq.linear_matrices
         ),
         QuestionSpec(
             "equations_of_motion", "nonlinear equations M(q) q'' = F (LaTeX)", _MECH, {}, mq.equations_of_motion
@@ -138,7 +140,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
         QuestionSpec(
             "sweep",
             "natural frequencies over a range of one parameter",
-            _MECH,
+            _LIN,
             {
                 "parameter": (_str, None),
                 "values": (_any, None),

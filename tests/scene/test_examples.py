@@ -175,6 +175,24 @@ def check_belyakov_identification():
         assert est[key] == pytest.approx(val, rel=5e-3 if key == "Ixz" else 5e-4), key
 
 
+def check_belyakov_stand():
+    """Hand-built 3-DOF stand (springs at the rectangle's corners) and the dissertation's Table 3."""
+    _, res = _run("belyakov_stand")
+    m, rx, rz, Izz, Ixx, Ixz, k, Lx, Lz = 15000, 2, 0.87, 44000, 3000, 400, 7.4e5, 4, 1.74
+
+    def freqs(rz):
+        C = np.array([[1, x - rx, -(z - rz)] for x, z in ((0, 0), (Lx, 0), (Lx, Lz), (0, Lz))])
+        M = np.array([[m, 0, 0], [0, Izz, Ixz], [0, Ixz, Ixx]])
+        return np.sqrt(scipy.linalg.eigh(k * C.T @ C, M, eigvals_only=True))
+
+    omega = res["natural_frequencies"].data["omega_rad_s"]
+    np.testing.assert_allclose(omega, freqs(rz), rtol=1e-12)
+    np.testing.assert_allclose(omega, [14.04726, 16.39794, 27.35160], rtol=1e-4)  # Table 3 as printed
+    sw = res["sweep"].data
+    for r, hz in zip(sw["values"], sw["frequency_hz"], strict=True):
+        np.testing.assert_allclose(np.array(hz) * 2 * np.pi, freqs(r), rtol=1e-12)
+
+
 CHECKS = {name[len("check_") :]: fn for name, fn in globals().items() if name.startswith("check_")}
 
 
