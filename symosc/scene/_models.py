@@ -79,6 +79,10 @@ class MechanicalModel:
     def dimension(self, name: str) -> str | None:
         return self._dimension(name)
 
+    def positive(self, name: str) -> bool:
+        """Parameters of pendulums and of Lagrangians read from a file are positive symbols."""
+        return True
+
 
 def _n_link_pendulum(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> MechanicalModel:
     n = ctx.integer(opts.get("n", 1), "system.n")
@@ -183,6 +187,10 @@ class LinearOnlyModel:
     def dimension(self, name: str) -> str | None:
         return _body_dimension(name)
 
+    def positive(self, name: str) -> bool:
+        """Products of inertia and coordinates of the centre of mass and of the springs may be negative."""
+        return not (name in ("Ixy", "Ixz", "Iyz", "rx", "ry", "rz") or name[0] in "xz")
+
 
 def _body_on_springs(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> LinearOnlyModel:
     n = ctx.integer(opts.get("n_springs", 4), "system.n_springs", minimum=3)
@@ -215,6 +223,9 @@ class SimpleModel:
 
     def dimension(self, name: str) -> str | None:
         return self.params.get(name)
+
+    def positive(self, name: str) -> bool:
+        return self.params.get(name) not in (None, "dimensionless")
 
 
 def _mathieu(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> SimpleModel:

@@ -410,9 +410,7 @@ def _parameters(ctx: Ctx, model: Any, params: Mapping[str, Any]) -> dict[str, fl
             f"add {missing[0]} = <value> under [parameters]",
         )
     return {
-        k: ctx.quantity(
-            params[k], f"parameters.{k}", model.dimension(k), positive=model.dimension(k) not in (None, "dimensionless")
-        )
+        k: ctx.quantity(params[k], f"parameters.{k}", model.dimension(k), positive=model.positive(k))
         for k in valid
         if k in params
     }

@@ -223,3 +223,16 @@ def test_figures_without_matplotlib_say_so(tmp_path, monkeypatch, capsys):
     assert sorted(p.name for p in paths) == ["report.md", "results.json"]
     msg = "figures skipped: matplotlib is not installed (pip install 'symosc[plot]')"
     assert msg in capsys.readouterr().out and msg in (tmp_path / "report.md").read_text()
+
+
+def test_sign_rules_of_parameters():
+    """Pendulum masses and lengths are positive; a product of inertia or a centre-of-mass offset may be negative."""
+    body = (EXAMPLES / "belyakov_stand.toml").read_text()
+    scene = loads(body, overrides={"Ixz": "-400 kg*m^2", "rx": -0.5})
+    assert scene.values["Ixz"] == -400.0 and scene.values["rx"] == -0.5
+    with pytest.raises(SceneError, match=r"parameters\.m1.*positive"):
+        loads(TABLE1_SCENE, overrides={"m1": 0})
+    lagr = '[system]\nmodel = "lagrangian"\ncoordinates = ["x"]\nT = "m*x_dot**2/2"\nV = "k*x**2/2"\n'
+    lagr += '[parameters]\nm = 1\nk = -4\n[[questions]]\nkind = "natural_frequencies"\n'
+    with pytest.raises(SceneError, match=r"parameters\.k.*positive"):
+        loads(lagr)
