@@ -120,6 +120,11 @@ class QuestionResult:
     def __repr__(self) -> str:
         return f"QuestionResult({self.kind!r}, {self.title!r})"
 
+    def _repr_latex_(self) -> str | None:
+        """The LaTeX of the answer (equations of motion) in notebooks; ``None`` when it has none."""
+        latex = self.data.get("latex")
+        return f"$${latex}$$" if isinstance(latex, str) else None
+
 
 @dataclass(frozen=True)
 class SceneResult:
