@@ -484,6 +484,13 @@ def _questions(ctx: Ctx, model: Any, qs: Any) -> list:
                         where, f"{kind} needs the option '{name}'", f"add {name} = ... to this [[questions]] block"
                     )
                 opts[name] = default
+        vib = kind in ("stability_region", "floquet") or (kind == "sweep" and opts.get("of") == "amplitude_bounds")
+        if vib and not (getattr(model, "inverted", False) and getattr(model, "vibrating", False)):
+            raise ctx.error(
+                f"{where}.kind" if kind != "sweep" else f"{where}.of",
+                f"{kind} needs an inverted chain on a vibrating pivot, the system is: {model.describe}",
+                'set inverted = true and pivot = "vertical" in [system]',
+            )
         if kind == "sweep":
             valid = model.parameter_names()
             if opts["parameter"] not in valid:

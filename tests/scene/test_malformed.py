@@ -155,14 +155,27 @@ def test_line_numbers_point_at_the_key(tmp_path):
     assert info.value.line == GOOD_SYSTEM.splitlines().index('m1 = "1 kg"') + 1
 
 
-def test_error_in_a_question_at_run_time_names_the_question(tmp_path, capsys):
-    """A hanging pendulum has no stability region: the run stops before anything is written."""
+def test_a_question_the_system_cannot_answer_is_refused_before_computing(tmp_path, capsys):
+    """A hanging pendulum has no stability region: refused at load, nothing is written."""
     path = tmp_path / "bad.toml"
     path.write_text(GOOD_SYSTEM + Q + '[[questions]]\nkind = "stability_region"\n')
     out = tmp_path / "out"
     assert main(["run", str(path), "-o", str(out)]) == 1
     err = capsys.readouterr().err
     assert "key 'questions[1].kind'" in err and "inverted chain on a vibrating pivot" in err
+    assert not out.exists()
+
+
+def test_failure_while_answering_names_the_question(tmp_path, capsys):
+    """An unstable equilibrium (V = -k x^2/2) has no natural frequencies: the run stops, nothing is written."""
+    path = tmp_path / "bad.toml"
+    text = '[system]\nmodel = "lagrangian"\ncoordinates = ["x"]\nT = "m*x_dot**2/2"\nV = "-k*x**2/2"\n'
+    path.write_text(text + "[parameters]\nm = 1\nk = 4\n" + Q)
+    out = tmp_path / "out"
+    assert main(["run", str(path), "-o", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert "key 'questions[0].kind'" in err and "statically unstable" in err and "Traceback" not in err
+    assert len(err.strip().splitlines()) == 1
     assert not out.exists()
 
 
