@@ -114,6 +114,13 @@ def parse_sympy(ctx: Ctx, text: Any, key: str, symbols: Mapping[str, sp.Basic]) 
     if isinstance(text, int | float) and not isinstance(text, bool):
         return sp.nsimplify(text)
     text = ctx.string(text, key)
+    if re.search(r"__|\.\s*[A-Za-z_]|\blambda\b|[;\[\]{}]", text):
+        raise ctx.error(
+            key,
+            f"{text!r} is not a plain expression: attribute access, lambdas, brackets and ';' are refused "
+            "(the text is parsed by SymPy)",
+            "write arithmetic of names, numbers and functions such as sin, cos, exp, sqrt",
+        )
     from sympy.parsing.sympy_parser import parse_expr, standard_transformations
 
     local: dict[str, Any] = dict(_FUNCS)
