@@ -24,14 +24,6 @@ TOP_KEYS = ("title", "source", "description", "system", "parameters", "excitatio
 EXCITATION_KEYS = ("amplitude", "frequency")
 
 
-def _q(ctx, v, k, dim=None):
-    return ctx.quantity(v, k, dim)
-
-
-def _qs(ctx, v, k, dim=None):
-    return ctx.quantities(v, k, dim)
-
-
 def _int(ctx, v, k):
     return ctx.integer(v, k)
 
