@@ -253,7 +253,9 @@ class Scene:
     def run(self) -> SceneResult:
         """Answer every question; returns a :class:`SceneResult` (report, tables, figures, data, log).
 
-        Errors are raised as :class:`SceneError` naming the question; nothing is written by ``run``.
+        Errors are raised as :class:`SceneError` naming the question; nothing is written by ``run``.  The log
+        covers everything derived for this scene so far: a second ``run`` reuses the derivations of the first
+        and adds only the steps it ran.
         """
         from ..errors import SymoscError
 
