@@ -53,7 +53,7 @@ class MechanicalModel:
 
     @cached_property
     def system(self):
-        with self.log.step("build the Lagrangian system", "kinetic and potential energy T, V"):
+        with self.log.step("build the Lagrangian system", "T, V (the first model also imports the catalogue)"):
             return self._make()
 
     @cached_property
