@@ -1,24 +1,54 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
-* Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`.
+* Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
+  :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`.
+* Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
+  :func:`string_frequencies`, :func:`influence_matrix`.
+* Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
+  :func:`power_iteration`.
 """
 
+from .bounds import (
+    FrequencyBounds,
+    PowerIteration,
+    constrained_eigenvalues,
+    dunkerley,
+    dunkerley_bounds,
+    power_iteration,
+    rayleigh_quotient,
+)
+from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
 from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .routh import RouthArray, routh_array
+from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
 __all__ = [
+    "FrequencyBounds",
+    "ModalAnalysis",
+    "PowerIteration",
     "QuadraticFormVerdict",
     "RouthArray",
     "StabilityDegree",
     "StabilityVerdict",
+    "a_orthonormalize",
+    "chain_matrices",
+    "conservative_modes",
+    "constrained_eigenvalues",
+    "dunkerley",
+    "dunkerley_bounds",
     "hurwitz",
     "hurwitz_at_degree",
     "hurwitz_matrix",
+    "influence_matrix",
     "lienard_chipart",
+    "power_iteration",
+    "rayleigh_quotient",
     "routh_array",
     "routh_form_criteria",
     "shifted_coefficients",
     "stability_degree",
+    "string_frequencies",
+    "string_modes",
 ]
