@@ -326,7 +326,7 @@ def power_iteration(
         u = u0.copy() if mode == 0 else u0 + 0.1 * rng.standard_normal(n)
         u = u / u[np.argmax(np.abs(u))]
         change = np.inf
-        for it in range(1, max_iterations + 1):
+        for it in range(1, max_iterations + 1):  # noqa: B007 (the count is reported)
             w = L @ u
             j = int(np.argmax(np.abs(w)))
             if w[j] == 0:
