@@ -6,6 +6,7 @@
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
   :func:`power_iteration`.
+* D-partition — :func:`d_partition`, :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
 """
 
 from .bounds import (
@@ -20,11 +21,14 @@ from .bounds import (
 from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
 from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
+from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
 __all__ = [
+    "DPartition",
+    "DiscriminantCurve",
     "FrequencyBounds",
     "ModalAnalysis",
     "PowerIteration",
@@ -36,6 +40,8 @@ __all__ = [
     "chain_matrices",
     "conservative_modes",
     "constrained_eigenvalues",
+    "d_partition",
+    "discriminant_curve",
     "dunkerley",
     "dunkerley_bounds",
     "hurwitz",
@@ -51,4 +57,5 @@ __all__ = [
     "stability_degree",
     "string_frequencies",
     "string_modes",
+    "vyshnegradsky_diagram",
 ]
