@@ -6,6 +6,7 @@
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
   :func:`power_iteration`.
+* Regulated loops — :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
 * D-partition — :func:`d_partition`, :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
 """
 
@@ -22,6 +23,7 @@ from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
 from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
+from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
@@ -31,10 +33,12 @@ __all__ = [
     "DiscriminantCurve",
     "FrequencyBounds",
     "ModalAnalysis",
+    "NyquistResult",
     "PowerIteration",
     "QuadraticFormVerdict",
     "RouthArray",
     "StabilityDegree",
+    "StabilityMargins",
     "StabilityVerdict",
     "a_orthonormalize",
     "chain_matrices",
@@ -49,12 +53,14 @@ __all__ = [
     "hurwitz_matrix",
     "influence_matrix",
     "lienard_chipart",
+    "nyquist",
     "power_iteration",
     "rayleigh_quotient",
     "routh_array",
     "routh_form_criteria",
     "shifted_coefficients",
     "stability_degree",
+    "stability_margins",
     "string_frequencies",
     "string_modes",
     "vyshnegradsky_diagram",
