@@ -6,7 +6,8 @@
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
   :func:`power_iteration`.
-* Regulated loops — :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
+* Regulated loops — :func:`chain_transmittance`, :func:`return_difference`, :func:`closed_loop_characteristic`,
+  :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
 * D-partition — :func:`d_partition`, :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
 """
 
@@ -23,6 +24,7 @@ from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
 from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
+from .loops import chain_transmittance, closed_loop_characteristic, return_difference
 from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .routh import RouthArray, routh_array
@@ -42,6 +44,8 @@ __all__ = [
     "StabilityVerdict",
     "a_orthonormalize",
     "chain_matrices",
+    "chain_transmittance",
+    "closed_loop_characteristic",
     "conservative_modes",
     "constrained_eigenvalues",
     "d_partition",
@@ -56,6 +60,7 @@ __all__ = [
     "nyquist",
     "power_iteration",
     "rayleigh_quotient",
+    "return_difference",
     "routh_array",
     "routh_form_criteria",
     "shifted_coefficients",
