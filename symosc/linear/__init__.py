@@ -1,5 +1,7 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
+* Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`frequency_response`,
+  :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`.
 * Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
@@ -24,6 +26,15 @@ from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
 from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
+from .fd_systems import (
+    Compatibility,
+    FrequencyResponse,
+    FundamentalSolutions,
+    compatibility,
+    frequency_response,
+    fundamental_solutions,
+    worst_case_gain,
+)
 from .loops import chain_transmittance, closed_loop_characteristic, return_difference
 from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
@@ -31,9 +42,12 @@ from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
 __all__ = [
+    "Compatibility",
     "DPartition",
     "DiscriminantCurve",
     "FrequencyBounds",
+    "FrequencyResponse",
+    "FundamentalSolutions",
     "ModalAnalysis",
     "NyquistResult",
     "PowerIteration",
@@ -46,12 +60,15 @@ __all__ = [
     "chain_matrices",
     "chain_transmittance",
     "closed_loop_characteristic",
+    "compatibility",
     "conservative_modes",
     "constrained_eigenvalues",
     "d_partition",
     "discriminant_curve",
     "dunkerley",
     "dunkerley_bounds",
+    "frequency_response",
+    "fundamental_solutions",
     "hurwitz",
     "hurwitz_at_degree",
     "hurwitz_matrix",
@@ -69,4 +86,5 @@ __all__ = [
     "string_frequencies",
     "string_modes",
     "vyshnegradsky_diagram",
+    "worst_case_gain",
 ]
