@@ -1,5 +1,6 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
+* One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`frequency_response`,
   :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
@@ -37,6 +38,13 @@ from .fd_systems import (
 )
 from .loops import chain_transmittance, closed_loop_characteristic, return_difference
 from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
+from .one_dof import (
+    LinearFilter,
+    StabilityCoefficients,
+    classify_equilibrium,
+    linear_filter,
+    stability_coefficients,
+)
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
@@ -48,17 +56,20 @@ __all__ = [
     "FrequencyBounds",
     "FrequencyResponse",
     "FundamentalSolutions",
+    "LinearFilter",
     "ModalAnalysis",
     "NyquistResult",
     "PowerIteration",
     "QuadraticFormVerdict",
     "RouthArray",
+    "StabilityCoefficients",
     "StabilityDegree",
     "StabilityMargins",
     "StabilityVerdict",
     "a_orthonormalize",
     "chain_matrices",
     "chain_transmittance",
+    "classify_equilibrium",
     "closed_loop_characteristic",
     "compatibility",
     "conservative_modes",
@@ -74,6 +85,7 @@ __all__ = [
     "hurwitz_matrix",
     "influence_matrix",
     "lienard_chipart",
+    "linear_filter",
     "nyquist",
     "power_iteration",
     "rayleigh_quotient",
@@ -81,6 +93,7 @@ __all__ = [
     "routh_array",
     "routh_form_criteria",
     "shifted_coefficients",
+    "stability_coefficients",
     "stability_degree",
     "stability_margins",
     "string_frequencies",

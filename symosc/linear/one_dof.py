@@ -1,0 +1,218 @@
+"""One degree of freedom ``(k0 D² + k1 D + k2) y = x(t)`` (Bulgakov (1954), §4.5–4.11).
+
+* :func:`linear_filter` — the free motion ``M(t)``, the after-effect (impulse) function ``N(t)`` and the transition
+  (step) function ``A(t)`` of (4.62)–(4.72), evaluated by one formula that is continuous through critical damping.
+* :func:`stability_coefficients` — α (Tsypkin–Bromberg), β (Raushenbakh), γ1 (Moiseev–Fel'dbaum), γ0 (servo) and
+  ϑ (harmonic) of §4.10–4.11.
+* :func:`classify_equilibrium` — the singular point of the phase plane (§4.2, §4.9).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import ParameterError
+
+__all__ = ["LinearFilter", "StabilityCoefficients", "classify_equilibrium", "linear_filter", "stability_coefficients"]
+
+
+def _check(k0, k1, k2):
+    try:
+        k0, k1, k2 = float(k0), float(k1), float(k2)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError("k0, k1, k2 must be real numbers") from exc
+    if not all(np.isfinite([k0, k1, k2])):
+        raise ParameterError("k0, k1, k2 must be finite")
+    if k0 <= 0:
+        raise ParameterError(f"k0 (the mass) must be positive, got {k0}")
+    return k0, k1, k2
+
+
+def _cs(d: float, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``C = cos(√d t)`` and ``S = sin(√d t)/√d`` for any real ``d`` (cosh/sinh for d < 0), series near d t² = 0."""
+    t = np.asarray(t, dtype=float)
+    z = d * t**2
+    C = np.empty_like(t)
+    S = np.empty_like(t)
+    small = np.abs(z) < 1e-3
+    # Taylor series in z: C = Σ (-z)^n/(2n)!, S = t Σ (-z)^n/(2n+1)!  (exact to rounding for |z| < 1e-3)
+    zs = z[small]
+    C[small] = 1 - zs / 2 + zs**2 / 24 - zs**3 / 720 + zs**4 / 40320
+    S[small] = t[small] * (1 - zs / 6 + zs**2 / 120 - zs**3 / 5040 + zs**4 / 362880)
+    big = ~small
+    if d > 0:
+        w = np.sqrt(d)
+        C[big] = np.cos(w * t[big])
+        S[big] = np.sin(w * t[big]) / w
+    elif d < 0:
+        w = np.sqrt(-d)
+        C[big] = np.cosh(w * t[big])
+        S[big] = np.sinh(w * t[big]) / w
+    return C, S
+
+
+@dataclass(frozen=True)
+class LinearFilter:
+    """Result of :func:`linear_filter`; call ``M(t)``, ``N(t)``, ``A(t)`` and ``response(t, x)``.
+
+    Attributes
+    ----------
+    k0, k1, k2 : float
+    y0, v0 : float
+        Initial displacement and velocity for ``M``.
+    """
+
+    k0: float
+    k1: float
+    k2: float
+    y0: float = 0.0
+    v0: float = 0.0
+
+    @property
+    def eps(self) -> float:
+        return self.k1 / (2 * self.k0)
+
+    @property
+    def d(self) -> float:
+        """``ω² = k2/k0 - ε²`` (negative when the roots are real)."""
+        return self.k2 / self.k0 - self.eps**2
+
+    def M(self, t: Any) -> np.ndarray:
+        """Free motion from ``y0, v0`` (4.62), (4.66), (4.70)."""
+        C, S = _cs(self.d, t)
+        return np.exp(-self.eps * np.asarray(t, float)) * (self.y0 * C + (self.v0 + self.eps * self.y0) * S)
+
+    def N(self, t: Any) -> np.ndarray:
+        """After-effect (unit impulse) function (4.63), (4.67), (4.71)."""
+        _, S = _cs(self.d, t)
+        return np.exp(-self.eps * np.asarray(t, float)) * S / self.k0
+
+    def A(self, t: Any) -> np.ndarray:
+        """Transition (unit step) function (4.64), (4.69), (4.72); ``A(0) = 0``, ``A' = N``."""
+        if self.k2 == 0:
+            raise ParameterError("A(t) needs k2 != 0 (a zero root makes the step response grow)")
+        C, S = _cs(self.d, t)
+        return (1 - np.exp(-self.eps * np.asarray(t, float)) * (C + self.eps * S)) / self.k2
+
+    def plot(self, t: Any = None, *, ax=None):
+        """``M``, ``N`` and ``A`` against ``t``; returns the Axes."""
+        from ._util import figure_axes
+
+        ax = figure_axes(ax)
+        t = np.linspace(0, 10 / max(self.eps, 0.1), 500) if t is None else np.asarray(t, float)
+        for name in ("M", "N", "A"):
+            ax.plot(t, getattr(self, name)(t), label=f"{name}(t)")
+        ax.set_xlabel("t")
+        ax.legend()
+        return ax
+
+
+def linear_filter(k0: float, k1: float, k2: float, *, y0: float = 0.0, v0: float = 0.0) -> LinearFilter:
+    """The oscillator ``(k0 D² + k1 D + k2) y = x`` as a linear filter (Bulgakov (1954), §4.8).
+
+    ``y(t) = M(t) + ∫₀ᵗ N(t - u) x(u) du`` (4.55).  The three branches of the book (real, complex, double roots) are
+    one formula in ``C = cos(ωt)``, ``S = sin(ωt)/ω`` continued analytically through ``ω² = 0`` (series there), so
+    values stay accurate arbitrarily close to critical damping.
+
+    Examples
+    --------
+    >>> from symosc.linear import linear_filter
+    >>> f = linear_filter(1, 2, 1)                 # critical damping: N = t e^{-t}
+    >>> round(float(f.N(1.0)), 12) == round(float(1.0 * __import__("math").exp(-1)), 12)
+    True
+
+    See Also
+    --------
+    stability_coefficients, worst_case_gain
+    """
+    k0, k1, k2 = _check(k0, k1, k2)
+    return LinearFilter(k0, k1, k2, float(y0), float(v0))
+
+
+@dataclass(frozen=True)
+class StabilityCoefficients:
+    """Result of :func:`stability_coefficients` (Bulgakov (1954), §4.10–4.11).
+
+    Attributes
+    ----------
+    alpha : float
+        Degree of stability, the smallest ``|Re λ|`` (4.75)–(4.76).
+    beta : float
+        ``1/∫|N| dt`` (Raushenbakh) (4.82); also the accumulation coefficient of §4.11a.
+    gamma1 : float
+        ``1/∫(θ1 y² + θ2 y'²) dt`` after a unit impulse (4.86).
+    gamma0 : float
+        The same after a unit jump of the servo error (4.88).
+    vartheta : float
+        ``min_ν |k2 - k0 ν² + i k1 ν|`` (harmonic disturbances, §4.11b).
+    """
+
+    alpha: float
+    beta: float
+    gamma1: float
+    gamma0: float
+    vartheta: float
+
+
+def stability_coefficients(k0: float, k1: float, k2: float, *, theta: tuple = (1.0, 0.0)) -> StabilityCoefficients:
+    """Quality (stability) coefficients α, β, γ1, γ0, ϑ of ``k0 D² + k1 D + k2`` (Bulgakov (1954), §4.10–4.11).
+
+    Parameters
+    ----------
+    k0, k1, k2 : float
+        Positive coefficients (an asymptotically stable oscillator).
+    theta : (float, float)
+        Weights ``θ1, θ2`` of ``y²`` and ``y'²`` in the quadratic criteria.
+
+    Examples
+    --------
+    >>> from symosc.linear import stability_coefficients
+    >>> c = stability_coefficients(1.3, 0.7, 2.1, theta=(0.8, 0.5))
+    >>> round(1 / c.beta, 6), round(1 / c.gamma1, 6), round(1 / c.gamma0, 6)
+    (1.452266, 0.546834, 1.62619)
+
+    See Also
+    --------
+    linear_filter, stability_degree
+    """
+    k0, k1, k2 = _check(k0, k1, k2)
+    if k1 <= 0 or k2 <= 0:
+        raise ParameterError("the coefficients need k1 > 0 and k2 > 0 (asymptotic stability, (4.73))")
+    t1, t2 = (float(v) for v in theta)
+    disc = k1**2 - 4 * k0 * k2
+    alpha = (k1 - np.sqrt(disc)) / (2 * k0) if disc > 0 else k1 / (2 * k0)
+    beta = k2 if disc >= 0 else k2 * np.tanh(np.pi * k1 / (2 * np.sqrt(-disc)))
+    gamma1 = 2 * k0 * k1 * k2 / (t1 * k0 + t2 * k2)
+    gamma0 = 2 * k1 * k2 / (t1 * (k1**2 + k0 * k2) + t2 * k2**2)
+    vartheta = (k1 / (2 * k0)) * np.sqrt(4 * k0 * k2 - k1**2) if k1**2 < 2 * k0 * k2 else k2
+    return StabilityCoefficients(float(alpha), float(beta), float(gamma1), float(gamma0), float(vartheta))
+
+
+def classify_equilibrium(k0: float, k1: float, k2: float) -> str:
+    """Type of the singular point of ``k0 q'' + k1 q' + k2 q = 0`` in the phase plane (§4.2, §4.9).
+
+    Examples
+    --------
+    >>> from symosc.linear import classify_equilibrium
+    >>> classify_equilibrium(1, 0.5, 4), classify_equilibrium(1, 0, 4), classify_equilibrium(1, 1, -2)
+    ('stable focus', 'center', 'saddle')
+
+    See Also
+    --------
+    stability_coefficients
+    """
+    k0, k1, k2 = _check(k0, k1, k2)
+    if k2 < 0:
+        return "saddle"
+    if k2 == 0:
+        return "degenerate (zero root)"
+    disc = k1**2 - 4 * k0 * k2
+    if k1 == 0:
+        return "center"
+    side = "stable" if k1 > 0 else "unstable"
+    if disc < 0:
+        return f"{side} focus"
+    return f"{side} node" if disc > 0 else f"{side} degenerate node"
