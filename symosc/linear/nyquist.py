@@ -311,7 +311,8 @@ def stability_margins(numerator: Any, denominator: Any) -> StabilityMargins:
         return sorted(float(x.real) for x in r if abs(x.imag) < 1e-7 * (1 + abs(x)) and x.real > 0)
 
     gm, wpc = np.inf, np.nan
-    for w in pos_roots(cross):
+    zero = [0.0] if abs(np.polyval(D0, 0)) > 0 else []
+    for w in zero + pos_roots(cross):
         k = np.polyval(M, 1j * w) / np.polyval(D0, 1j * w)
         if k.real < 0 and 1 / abs(k) < gm:
             gm, wpc = 1 / abs(k), w
