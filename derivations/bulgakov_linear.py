@@ -29,6 +29,7 @@ from symosc.linear import (
     frequency_response,
     fundamental_solutions,
     hurwitz,
+    impulse_response,
     influence_matrix,
     nyquist,
     power_iteration,
@@ -97,6 +98,10 @@ def section_fd_systems() -> dict:
     fs4 = out["E4"]
     cols = [tuple(sp.expand(sp.simplify(v / sp.exp(t))) for v in fs4.matrix[:, j]) for j in (2, 3)]
     _row("E4 modal columns at λ = 1", "[t+4, -t], [1, -1]", cols, "polynomial in t (double root, one divisor)")
+    r11 = impulse_response(cases["E8 Δ (§8.12 Ex. 2)"][0], [0, 10 * D], D, t)
+    _row("E11 S(D) (§8.51)", "[0, 10D - 20]", list(r11.direct), "direct term")
+    _row("E11 kernel of y1", "(5/4)[-e^-4t + cos4t + sin4t]", sp.factor(r11.kernel[0]), "residues")
+    out["E11"] = r11
     v = hurwitz([1, 4, 16, 64])
     _row("E8 Hurwitz Δ2 = k1k2 - k0k3", 0, v.minors[1], "exactly on the stability boundary")
     return out

@@ -1,7 +1,8 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`.
-* Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`frequency_response`,
+* Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
+  :func:`frequency_response`,
   :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`.
@@ -31,9 +32,11 @@ from .fd_systems import (
     Compatibility,
     FrequencyResponse,
     FundamentalSolutions,
+    ImpulseResponse,
     compatibility,
     frequency_response,
     fundamental_solutions,
+    impulse_response,
     worst_case_gain,
 )
 from .loops import chain_transmittance, closed_loop_characteristic, return_difference
@@ -56,6 +59,7 @@ __all__ = [
     "FrequencyBounds",
     "FrequencyResponse",
     "FundamentalSolutions",
+    "ImpulseResponse",
     "LinearFilter",
     "ModalAnalysis",
     "NyquistResult",
@@ -83,6 +87,7 @@ __all__ = [
     "hurwitz",
     "hurwitz_at_degree",
     "hurwitz_matrix",
+    "impulse_response",
     "influence_matrix",
     "lienard_chipart",
     "linear_filter",

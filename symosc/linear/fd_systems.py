@@ -4,6 +4,7 @@
 * :func:`fundamental_solutions` — characteristic determinant, degree (the order of the system) and modal columns
   ``∂^k/∂λ^k [F(λ) e^{λt}]`` (``F = adj f``), polynomial in ``t`` for multiple roots, in real form for complex
   pairs (§8.5, 8.10–8.12).
+* :func:`impulse_response` — direct term ``S(D)`` and kernel ``N(t)`` of the forced solution (§8.50–8.51).
 * :func:`frequency_response` — ``X(iω) = f(iω)⁻¹ e(iω)`` with gain, phase, decibels and nepers (§8.28–8.30).
 * :func:`worst_case_gain` — accumulation of disturbances ``A = |S| + ∫|N| dt`` (§8.54).
 """
@@ -23,9 +24,11 @@ __all__ = [
     "Compatibility",
     "FrequencyResponse",
     "FundamentalSolutions",
+    "ImpulseResponse",
     "compatibility",
     "frequency_response",
     "fundamental_solutions",
+    "impulse_response",
     "worst_case_gain",
 ]
 
@@ -353,3 +356,66 @@ def worst_case_gain(numerator: Any, denominator: Any, *, t_max: float | None = N
     if not np.isfinite(total):
         raise ConvergenceError("the integral of |N| did not converge")
     return abs(S) + total
+
+
+@dataclass(frozen=True)
+class ImpulseResponse:
+    """Result of :func:`impulse_response`: ``y = S(D) x + ∫₀ᵗ N(t - τ) x(τ) dτ`` for zero initial data (§8.50–8.51).
+
+    Attributes
+    ----------
+    direct : sympy.Matrix
+        ``S(D)``: the polynomial part of ``F(D) e(D)/Δ(D)`` (acts on ``x`` directly).
+    kernel : sympy.Matrix
+        ``N(t)``, the original of the proper part (residues at the roots of ``Δ``).
+    """
+
+    direct: sp.Matrix
+    kernel: sp.Matrix
+
+    def __repr__(self) -> str:
+        return f"ImpulseResponse(direct={self.direct.tolist()}, kernel={self.kernel.tolist()})"
+
+    def _sympystr(self, printer) -> str:
+        return f"ImpulseResponse({printer._print(self.direct)}, {printer._print(self.kernel)})"
+
+
+def impulse_response(f: Any, e: Any, var: sp.Symbol, t: sp.Symbol | None = None) -> ImpulseResponse:
+    """Direct term ``S(D)`` and kernel ``N(t)`` of ``f(D) y = e(D) x`` (Bulgakov (1954), §8.50–8.51).
+
+    ``F(D) e(D)/Δ(D) = S(D) + v(D)`` with ``F = adj f``; ``N(t)`` is the original of the proper part ``v``, found by
+    the Heaviside expansion (residues), so that ``y = S(D) x + ∫₀ᵗ N(t - τ) x(τ) dτ`` from rest.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.linear import impulse_response
+    >>> D, t = sp.symbols("D t")
+    >>> r = impulse_response([[D**3 + 2*D**2 + 10*D, -1], [2*D**2 + 6*D + 64, 1]], [0, 10*D], D, t)   # §8.51
+    >>> r.direct.T
+    Matrix([[0, 10*D - 20]])
+
+    See Also
+    --------
+    fundamental_solutions, frequency_response
+    """
+    from ..operational import inverse_carson
+
+    f = _matrix(f, var)
+    e = _matrix(e, var, "e")
+    if e.rows != f.rows:
+        raise ParameterError(f"e must have {f.rows} rows, got {e.rows}")
+    t = sp.Symbol("t") if t is None else t
+    det = sp.expand(f.det())
+    if det == 0:
+        raise ModelError("det f(D) ≡ 0: the system is degenerate; check it with compatibility(f, e, D)")
+    G = (f.adjugate() * e).applyfunc(sp.expand)
+    S = sp.zeros(*G.shape)
+    N = sp.zeros(*G.shape)
+    for i in range(G.rows):
+        for j in range(G.cols):
+            q, r = sp.div(sp.Poly(G[i, j], var), sp.Poly(det, var))
+            S[i, j] = q.as_expr()
+            if not r.is_zero:
+                N[i, j] = sp.simplify(inverse_carson(var * r.as_expr() / det, var, t))
+    return ImpulseResponse(S, N)

@@ -150,3 +150,16 @@ def test_e20_accumulation(zeta):
     assert abs(A - closed) < 1e-8 * closed
     if zeta == 0.15:
         assert round(A, 8) == 1.06881328
+
+
+def test_e11_forced_solution_kernels():
+    """§8.51: f as in E8, e = [0, 10D]: S(D) = [0, 10D - 20]; kernels (5/4)[-e^{-4t} + cos 4t + sin 4t] and
+    5[18 e^{-4t} - 14 cos 4t - 2 sin 4t] as printed."""
+    from symosc.linear import impulse_response
+
+    f = [[D**3 + 2 * D**2 + 10 * D, -1], [2 * D**2 + 6 * D + 64, 1]]
+    r = impulse_response(f, [0, 10 * D], D, t)
+    assert r.direct[0] == 0 and sp.expand(r.direct[1] - (10 * D - 20)) == 0
+    k1 = sp.Rational(5, 4) * (-sp.exp(-4 * t) + sp.cos(4 * t) + sp.sin(4 * t))
+    k2 = 5 * (18 * sp.exp(-4 * t) - 14 * sp.cos(4 * t) - 2 * sp.sin(4 * t))
+    assert sp.simplify(r.kernel[0] - k1) == 0 and sp.simplify(r.kernel[1] - k2) == 0
