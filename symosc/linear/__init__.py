@@ -2,7 +2,7 @@
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
-  :func:`frequency_response`,
+  :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`.
@@ -40,6 +40,7 @@ from .fd_systems import (
     worst_case_gain,
 )
 from .loops import chain_transmittance, closed_loop_characteristic, return_difference
+from .normal_form import NormalForm, modal_normal_form
 from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
 from .one_dof import (
     LinearFilter,
@@ -62,6 +63,7 @@ __all__ = [
     "ImpulseResponse",
     "LinearFilter",
     "ModalAnalysis",
+    "NormalForm",
     "NyquistResult",
     "PowerIteration",
     "QuadraticFormVerdict",
@@ -91,6 +93,7 @@ __all__ = [
     "influence_matrix",
     "lienard_chipart",
     "linear_filter",
+    "modal_normal_form",
     "nyquist",
     "power_iteration",
     "rayleigh_quotient",

@@ -163,3 +163,27 @@ def test_e11_forced_solution_kernels():
     k1 = sp.Rational(5, 4) * (-sp.exp(-4 * t) + sp.cos(4 * t) + sp.sin(4 * t))
     k2 = 5 * (18 * sp.exp(-4 * t) - 14 * sp.cos(4 * t) - 2 * sp.sin(4 * t))
     assert sp.simplify(r.kernel[0] - k1) == 0 and sp.simplify(r.kernel[1] - k2) == 0
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_normal_form_random_pencils(seed):
+    """§8.53: z A v = E and z H v = -diag(λ) for random pencils; M y'' + K y = x via the first-order form has
+    λ = ±i ω with ω from scipy.linalg.eigh."""
+    from scipy.linalg import eigh
+
+    from symosc.linear import modal_normal_form
+
+    rng = np.random.default_rng(seed)
+    A, H = rng.standard_normal((4, 4)) + 4 * np.eye(4), rng.standard_normal((4, 4))
+    nf = modal_normal_form(A, H)
+    assert np.allclose(nf.z @ A @ nf.v, np.eye(4), atol=1e-10)
+    assert np.allclose(nf.z @ H @ nf.v, -np.diag(nf.eigenvalues), atol=1e-10)
+    X = rng.standard_normal((3, 3))
+    M, K = X @ X.T + 3 * np.eye(3), np.diag([1.0, 2.0, 5.0])
+    Z = np.zeros((3, 3))
+    nf2 = modal_normal_form(np.block([[Z, M], [M, Z]]), np.block([[K, Z], [Z, -M]]))
+    w = np.sqrt(eigh(K, M, eigvals_only=True))
+    assert np.allclose(np.sort(nf2.eigenvalues.imag[nf2.eigenvalues.imag > 0]), w, rtol=1e-10)
+    assert np.abs(nf2.eigenvalues.real).max() < 1e-10
+    with pytest.raises(ModelError, match="singular"):
+        modal_normal_form(np.diag([1.0, 0.0]), np.eye(2))
