@@ -5,7 +5,8 @@
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
-  :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`.
+  :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
+  :func:`max_stability_degree_cubic`.
 * Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
@@ -26,7 +27,14 @@ from .bounds import (
 )
 from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
 from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
-from .degree import StabilityDegree, hurwitz_at_degree, shifted_coefficients, stability_degree
+from .degree import (
+    CubicOptimum,
+    StabilityDegree,
+    hurwitz_at_degree,
+    max_stability_degree_cubic,
+    shifted_coefficients,
+    stability_degree,
+)
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
 from .fd_systems import (
     Compatibility,
@@ -55,6 +63,7 @@ from .strings import chain_matrices, influence_matrix, string_frequencies, strin
 
 __all__ = [
     "Compatibility",
+    "CubicOptimum",
     "DPartition",
     "DiscriminantCurve",
     "FrequencyBounds",
@@ -93,6 +102,7 @@ __all__ = [
     "influence_matrix",
     "lienard_chipart",
     "linear_filter",
+    "max_stability_degree_cubic",
     "modal_normal_form",
     "nyquist",
     "power_iteration",

@@ -140,3 +140,49 @@ def stability_degree(coefficients: Any, *, tol: float = 1e-12) -> StabilityDegre
     top = max(r.real for r in roots)
     dom = tuple(r for r in roots if r.real >= top - max(1e3 * err, 1e-14 * (1 + abs(top))))
     return StabilityDegree(-top, dom, tuple(roots), err)
+
+
+@dataclass(frozen=True)
+class CubicOptimum:
+    """Result of :func:`max_stability_degree_cubic`: the best degree of stability and where it is attained."""
+
+    degree: float
+    coefficients: tuple
+    binding: str
+
+    def __repr__(self) -> str:
+        return f"CubicOptimum(degree={self.degree:.12g}, coefficients={self.coefficients}, binding={self.binding!r})"
+
+
+def max_stability_degree_cubic(
+    k0: float, *, k1_max: float | None = None, k2_max: float | None = None, k3_max: float | None = None
+) -> CubicOptimum:
+    """Largest degree of stability of ``k0 λ³ + k1 λ² + k2 λ + k3`` with bounded coefficients (§8.22, (8.138)–(8.141)).
+
+    The optimum is the triple root ``-δ`` at ``L = (3δk0, 3δ²k0, δ³k0)``, with ``δ* = min(k1*/(3k0),
+    sqrt(k2*/(3k0)), (k3*/k0)^(1/3))`` over the bounds given.
+
+    Examples
+    --------
+    >>> from symosc.linear import max_stability_degree_cubic
+    >>> max_stability_degree_cubic(1, k1_max=3, k2_max=12)
+    CubicOptimum(degree=1, coefficients=(3.0, 3.0, 1.0), binding='k1')
+
+    See Also
+    --------
+    stability_degree, hurwitz_at_degree
+    """
+    if not (k0 and k0 > 0):
+        raise ParameterError(f"k0 must be positive, got {k0}")
+    cands = {}
+    if k1_max is not None:
+        cands["k1"] = k1_max / (3 * k0)
+    if k2_max is not None:
+        cands["k2"] = (k2_max / (3 * k0)) ** 0.5
+    if k3_max is not None:
+        cands["k3"] = (k3_max / k0) ** (1 / 3)
+    if not cands or any(not (v > 0) for v in cands.values()):
+        raise ParameterError("give at least one positive bound k1_max, k2_max or k3_max")
+    name = min(cands, key=cands.get)
+    d = cands[name]
+    return CubicOptimum(d, (3 * d * k0, 3 * d**2 * k0, d**3 * k0), name)

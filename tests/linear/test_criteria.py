@@ -162,3 +162,19 @@ def test_routh_quadratic_forms():
     v2 = routh_form_criteria(A, N=N, G=G, H=H)
     lam2 = np.linalg.eigvals(np.block([[np.zeros((2, 2)), np.eye(2)], [-H, -(N + G)]]))
     assert v2.asymptotically_stable is True and lam2.real.max() < 0
+
+
+def test_max_stability_degree_cubic_by_search():
+    """§8.22 (8.138)–(8.141): the optimum over a box of coefficients, against a brute-force search of -max Re λ."""
+    from symosc.linear import max_stability_degree_cubic
+
+    opt = max_stability_degree_cubic(1.0, k1_max=3.0, k2_max=5.0, k3_max=4.0)
+    assert opt.binding == "k1" and abs(opt.degree - 1.0) < 1e-15  # min(3/3, sqrt(5/3), 4^(1/3))
+    best = 0.0
+    for k1 in np.linspace(0.1, 3.0, 30):
+        for k2 in np.linspace(0.1, 5.0, 30):
+            for k3 in np.linspace(0.05, 4.0, 30):
+                best = max(best, -np.roots([1.0, k1, k2, k3]).real.max())
+    assert best <= opt.degree + 1e-6 and best > opt.degree - 0.06
+    # at the optimum the polynomial is (λ + δ)^3
+    assert np.allclose(np.poly([-opt.degree] * 3), [1.0, *opt.coefficients])
