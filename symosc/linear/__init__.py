@@ -13,7 +13,8 @@
   :func:`power_iteration`.
 * Regulated loops — :func:`chain_transmittance`, :func:`return_difference`, :func:`closed_loop_characteristic`,
   :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
-* D-partition — :func:`d_partition`, :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
+* Regions — :func:`stability_region`; D-partition — :func:`d_partition`, :func:`discriminant_curve`,
+  :func:`vyshnegradsky_diagram`.
 """
 
 from .bounds import (
@@ -58,6 +59,7 @@ from .one_dof import (
     stability_coefficients,
 )
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
+from .regions import StabilityRegion, stability_region
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
@@ -80,6 +82,7 @@ __all__ = [
     "StabilityCoefficients",
     "StabilityDegree",
     "StabilityMargins",
+    "StabilityRegion",
     "StabilityVerdict",
     "a_orthonormalize",
     "chain_matrices",
@@ -114,6 +117,7 @@ __all__ = [
     "stability_coefficients",
     "stability_degree",
     "stability_margins",
+    "stability_region",
     "string_frequencies",
     "string_modes",
     "vyshnegradsky_diagram",

@@ -136,3 +136,20 @@ def test_plot_draws_on_given_axes():
     disc.plot(ax=ax)
     assert len(ax.lines) > 1
     plt.close(fig)
+
+
+def test_stability_region_vs_roots():
+    """§8.19: the region of λ³ + xλ² + yλ + 1 is x > 0, xy > 1; checked against numpy root locations; on the
+    paraboloid k1k2 = k0k3 the roots are -k1/k0 and ±i sqrt(k2/k0)."""
+    from symosc.linear import stability_region
+
+    x, y = sp.symbols("x y")
+    r = stability_region([1, x, y, 1], (x, y))
+    rng = np.random.default_rng(3)
+    for xv, yv in rng.uniform(-2, 4, (200, 2)):
+        assert r.contains({x: float(xv), y: float(yv)}) == (np.roots([1, xv, yv, 1]).real.max() < 0)
+    k1, k2 = 1.7, 2.3
+    roots = np.sort_complex(np.roots([1.0, k1, k2, k1 * k2]))
+    assert np.allclose(roots, np.sort_complex([-k1, 1j * np.sqrt(k2), -1j * np.sqrt(k2)]))
+    with pytest.raises(ParameterError, match="not parameters"):
+        stability_region([1, x, y, sp.Symbol("k")], (x, y))
