@@ -13,7 +13,7 @@
   :func:`power_iteration`.
 * Regulated loops — :func:`chain_transmittance`, :func:`return_difference`, :func:`closed_loop_characteristic`,
   :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
-* Regions — :func:`stability_region`; D-partition — :func:`d_partition`, :func:`discriminant_curve`,
+* Regions — :func:`stability_region`, :func:`robust_boundary`; D-partition — :func:`d_partition`, :func:`discriminant_curve`,
   :func:`vyshnegradsky_diagram`.
 """
 
@@ -59,7 +59,7 @@ from .one_dof import (
     stability_coefficients,
 )
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
-from .regions import StabilityRegion, stability_region
+from .regions import StabilityRegion, robust_boundary, stability_region
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
@@ -111,6 +111,7 @@ __all__ = [
     "power_iteration",
     "rayleigh_quotient",
     "return_difference",
+    "robust_boundary",
     "routh_array",
     "routh_form_criteria",
     "shifted_coefficients",

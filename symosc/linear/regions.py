@@ -16,7 +16,7 @@ from ..errors import ParameterError
 from ._util import as_coefficients
 from .criteria import hurwitz
 
-__all__ = ["StabilityRegion", "stability_region"]
+__all__ = ["StabilityRegion", "robust_boundary", "stability_region"]
 
 
 @dataclass(frozen=True)
@@ -115,3 +115,39 @@ def stability_region(coefficients: Any, params: Any) -> StabilityRegion:
     s = len(coeffs) - 1
     conds = tuple(sp.factor(c) for c in v.conditions)
     return StabilityRegion(coeffs, params, conds, coeffs[-1], sp.factor(v.minors[s - 2]) if s >= 2 else sp.Integer(1))
+
+
+def robust_boundary(boundary: Any, params: Any, unreliable: sp.Symbol) -> tuple:
+    """Envelope of a family of stability boundaries over an unreliable parameter (Bulgakov (1954), §8.21, §8.23).
+
+    The boundary ``F(x, y, z) = 0`` moves with the unreliable ``z``; regions of *reliable* stability (or instability)
+    are bounded by its envelope ``F = ∂F/∂z = 0``, found here as the resultant in ``z`` (factors free of the
+    parameters and monomial factors dropped).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.linear import robust_boundary
+    >>> x, y, z, k = sp.symbols("x y z k")
+    >>> robust_boundary((x*z + 1)*(y*z + k) - z, (x, y), z)       # servo of §8.23: the parabola
+    (k**2*x**2 - 2*k*x*y - 2*k*x + y**2 - 2*y + 1,)
+
+    See Also
+    --------
+    stability_region, d_partition
+    """
+    params = tuple(params)
+    F = sp.expand(sp.sympify(boundary))
+    if not F.has(unreliable):
+        raise ParameterError(f"the boundary does not depend on the unreliable parameter {unreliable}")
+    if not F.is_polynomial(unreliable):
+        raise ParameterError(f"the boundary must be polynomial in {unreliable}")
+    R = sp.resultant(F, sp.diff(F, unreliable), unreliable)
+    factors = []
+    for fac, _ in sp.factor_list(R)[1]:
+        if not (fac.free_symbols & set(params)):
+            continue
+        if fac.is_Symbol or (fac.is_Pow and fac.base.is_Symbol):
+            continue
+        factors.append(fac)
+    return tuple(factors)

@@ -153,3 +153,19 @@ def test_stability_region_vs_roots():
     assert np.allclose(roots, np.sort_complex([-k1, 1j * np.sqrt(k2), -1j * np.sqrt(k2)]))
     with pytest.raises(ParameterError, match="not parameters"):
         stability_region([1, x, y, sp.Symbol("k")], (x, y))
+
+
+def test_e10_robust_envelope():
+    """§8.23 (E10): the envelope of (xz+1)(yz+k) = z over unreliable z is k²x² - 2kxy + y² - 2(kx+y) + 1 = 0,
+    tangent to the axes at (1/k, 0), (0, 1); at z = 4k the boundary touches it at (1/(4k), 1/4)."""
+    from symosc.linear import robust_boundary
+
+    x, y, z, k = sp.symbols("x y z k")
+    F = (x * z + 1) * (y * z + k) - z
+    (env,) = robust_boundary(F, (x, y), z)
+    book = k**2 * x**2 - 2 * k * x * y + y**2 - 2 * (k * x + y) + 1
+    assert sp.expand(env - book) == 0 or sp.expand(env + book) == 0
+    kv = sp.Rational(1, 2)
+    pt = {x: 1 / (4 * kv), y: sp.Rational(1, 4), k: kv}
+    assert F.subs(pt).subs(z, 4 * kv) == 0 and book.subs(pt) == 0
+    assert book.subs({x: 1 / k, y: 0}) == 0 and book.subs({x: 0, y: 1}) == 0
