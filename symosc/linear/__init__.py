@@ -13,8 +13,8 @@
   :func:`power_iteration`.
 * Regulated loops — :func:`chain_transmittance`, :func:`return_difference`, :func:`closed_loop_characteristic`,
   :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
-* Regions — :func:`stability_region`, :func:`robust_boundary`; D-partition — :func:`d_partition`, :func:`discriminant_curve`,
-  :func:`vyshnegradsky_diagram`.
+* Regions — :func:`stability_region`, :func:`robust_boundary`; D-partition — :func:`d_partition`,
+  :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
 """
 
 from .bounds import (
