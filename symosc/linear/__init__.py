@@ -3,7 +3,7 @@
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
-  :func:`worst_case_gain`.
+  :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
   :func:`max_stability_degree_cubic`.
@@ -46,6 +46,8 @@ from .fd_systems import (
     frequency_response,
     fundamental_solutions,
     impulse_response,
+    mean_power,
+    resonant_particular,
     worst_case_gain,
 )
 from .loops import chain_transmittance, closed_loop_characteristic, return_difference
@@ -106,10 +108,12 @@ __all__ = [
     "lienard_chipart",
     "linear_filter",
     "max_stability_degree_cubic",
+    "mean_power",
     "modal_normal_form",
     "nyquist",
     "power_iteration",
     "rayleigh_quotient",
+    "resonant_particular",
     "return_difference",
     "robust_boundary",
     "routh_array",

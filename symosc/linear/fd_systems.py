@@ -29,6 +29,8 @@ __all__ = [
     "frequency_response",
     "fundamental_solutions",
     "impulse_response",
+    "mean_power",
+    "resonant_particular",
     "worst_case_gain",
 ]
 
@@ -419,3 +421,67 @@ def impulse_response(f: Any, e: Any, var: sp.Symbol, t: sp.Symbol | None = None)
             if not r.is_zero:
                 N[i, j] = sp.simplify(inverse_carson(var * r.as_expr() / det, var, t))
     return ImpulseResponse(S, N)
+
+
+def resonant_particular(f: Any, e: Any, var: sp.Symbol, xi: Any, lam: Any, t: sp.Symbol | None = None) -> sp.Matrix:
+    """Particular solution of ``f(D) y = e(D) ξ e^{λt}``, also at resonance (Bulgakov (1954), eqs. (8.185), (8.209)).
+
+    If ``λ`` is a root of ``Δ`` of multiplicity ``q``, ``y = ∂^q/∂λ^q [e^{λt} F(λ)] e(λ) ξ / Δ^(q)(λ)`` (growing
+    like ``t^q``); ``q = 0`` gives the steady state ``X(λ) ξ e^{λt}``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.linear import resonant_particular
+    >>> D, t = sp.symbols("D t")
+    >>> resonant_particular([[D**2 + 1]], [1], D, [1], sp.I, t)       # y'' + y = e^{it}
+    Matrix([[-I*t*exp(I*t)/2]])
+
+    See Also
+    --------
+    frequency_response, impulse_response
+    """
+    f = _matrix(f, var)
+    e = _matrix(e, var, "e")
+    t = sp.Symbol("t") if t is None else t
+    xi = sp.Matrix(xi)
+    lam = sp.sympify(lam)
+    det = sp.expand(f.det())
+    if det == 0:
+        raise ModelError("det f(D) ≡ 0: the system is degenerate; check it with compatibility(f, e, D)")
+    q = 0
+    while sp.simplify(sp.diff(det, var, q).subs(var, lam)) == 0:
+        q += 1
+    s = sp.Dummy("s")
+    G = sp.exp(s * t) * f.adjugate().subs(var, s)
+    Gq = sp.diff(G, s, q) if q else G
+    y = Gq.subs(s, lam) * e.subs(var, lam) * xi / sp.diff(det, var, q).subs(var, lam)
+    return y.applyfunc(lambda v: sp.simplify(sp.expand(v)))
+
+
+def mean_power(A: Any, N: Any, G: Any, H: Any, J: Any, xi: Any, omega: float) -> float:
+    """Mean power of a harmonic force ``w = Re(ξ e^{iωt})`` on ``A ÿ + (N + G) ẏ + (H + J) y = w`` (§8.29, (8.220)).
+
+    ``P̄ = ½ Re ζ̄'ᵀ (N - iJ/ω) ζ'`` with ``ζ' = iω ζ``, ``ζ = f(iω)⁻¹ ξ``; gyroscopic forces ``G`` do no work.
+
+    Examples
+    --------
+    >>> from symosc.linear import mean_power
+    >>> round(mean_power([[1]], [[0.5]], [[0]], [[4]], [[0]], [1.0], 2.0), 12)   # resonance: |ζ'| = 1/N
+    1.0
+
+    See Also
+    --------
+    frequency_response
+    """
+    mats = [np.atleast_2d(np.asarray(m, dtype=float)) for m in (A, N, G, H, J)]
+    n = mats[0].shape[0]
+    if any(m.shape != (n, n) for m in mats):
+        raise ParameterError("A, N, G, H, J must be square matrices of one size")
+    A_, N_, G_, H_, J_ = mats
+    if omega <= 0:
+        raise ParameterError(f"omega must be positive, got {omega}")
+    fw = -(omega**2) * A_ + 1j * omega * (N_ + G_) + H_ + J_
+    zeta = np.linalg.solve(fw, np.asarray(xi, dtype=complex))
+    v = 1j * omega * zeta
+    return float(0.5 * np.real(np.conj(v) @ (N_ - 1j * J_ / omega) @ v))

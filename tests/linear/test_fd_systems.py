@@ -187,3 +187,39 @@ def test_normal_form_random_pencils(seed):
     assert np.abs(nf2.eigenvalues.real).max() < 1e-10
     with pytest.raises(ModelError, match="singular"):
         modal_normal_form(np.diag([1.0, 0.0]), np.eye(2))
+
+
+def test_resonant_particular_by_substitution():
+    """(8.185), (8.209): the particular solution satisfies f(D) y = e(D) ξ e^{λt}, at resonance (E7 system,
+    λ = i, growing like t) and off resonance (λ = 2i, equal to X(2i) ξ e^{2it} of E14)."""
+    from symosc.linear import resonant_particular
+
+    f = [[D**2 + 2 * D + 1, D - 1], [D**2 + (1 - b) * D + b + 2, D + b]]
+    fb = [[v.subs(b, 3) for v in row] for row in f]
+    for lam_ in (sp.I, 2 * sp.I):
+        y = resonant_particular(fb, [1, 0], D, [1], lam_, t)
+        lhs = _apply(fb, y)
+        assert (lhs - sp.Matrix([sp.exp(lam_ * t), 0])).applyfunc(sp.simplify) == sp.zeros(2, 1)
+    y_res = resonant_particular(fb, [1, 0], D, [1], sp.I, t)
+    assert y_res[0].has(t * sp.exp(sp.I * t)) or sp.expand(y_res[0]).has(t)
+
+
+def test_mean_power_identities():
+    """§8.29: P = ½ Re ζ̄'ᵀ(N - iJ/ω)ζ' equals (iω/4)(ξ̄ᵀζ - ξᵀζ̄) and the time average of w·ẏ; G does no work."""
+    from symosc.linear import mean_power
+
+    rng = np.random.default_rng(1)
+    n, w = 3, 1.7
+    X = rng.standard_normal((n, n))
+    A, N, H = X @ X.T + n * np.eye(n), np.diag([0.3, 0.1, 0.5]), np.diag([2.0, 3.0, 4.0])
+    S = rng.standard_normal((n, n))
+    G, J = S - S.T, 0.2 * (S.T - S)
+    xi = rng.standard_normal(n) + 1j * rng.standard_normal(n)
+    P = mean_power(A, N, G, H, J, xi, w)
+    zeta = np.linalg.solve(-(w**2) * A + 1j * w * (N + G) + H + J, xi)
+    assert abs(P - np.real(1j * w / 4 * (np.conj(xi) @ zeta - xi @ np.conj(zeta)))) < 1e-12
+    ts = np.linspace(0, 2 * np.pi / w, 4001)[:-1]
+    force = np.real(np.outer(np.exp(1j * w * ts), xi))
+    vel = np.real(np.outer(1j * w * np.exp(1j * w * ts), zeta))
+    assert abs(P - np.mean(np.sum(force * vel, axis=1))) < 1e-12
+    assert abs(mean_power(A, 0 * N, G, H, 0 * J, xi, w)) < 1e-12
