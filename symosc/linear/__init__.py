@@ -1,6 +1,7 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
-* One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`.
+* One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
+  :func:`periodic_forced_response`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
@@ -58,6 +59,7 @@ from .one_dof import (
     StabilityCoefficients,
     classify_equilibrium,
     linear_filter,
+    periodic_forced_response,
     stability_coefficients,
 )
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
@@ -111,6 +113,7 @@ __all__ = [
     "mean_power",
     "modal_normal_form",
     "nyquist",
+    "periodic_forced_response",
     "power_iteration",
     "rayleigh_quotient",
     "resonant_particular",

@@ -5,6 +5,7 @@
 * :func:`stability_coefficients` — α (Tsypkin–Bromberg), β (Raushenbakh), γ1 (Moiseev–Fel'dbaum), γ0 (servo) and
   ϑ (harmonic) of §4.10–4.11.
 * :func:`classify_equilibrium` — the singular point of the phase plane (§4.2, §4.9).
+* :func:`periodic_forced_response` — the τ-periodic response of an undamped oscillator (§4.11c).
 """
 
 from __future__ import annotations
@@ -16,7 +17,14 @@ import numpy as np
 
 from ..errors import ParameterError
 
-__all__ = ["LinearFilter", "StabilityCoefficients", "classify_equilibrium", "linear_filter", "stability_coefficients"]
+__all__ = [
+    "LinearFilter",
+    "StabilityCoefficients",
+    "classify_equilibrium",
+    "linear_filter",
+    "periodic_forced_response",
+    "stability_coefficients",
+]
 
 
 def _check(k0, k1, k2):
@@ -216,3 +224,59 @@ def classify_equilibrium(k0: float, k1: float, k2: float) -> str:
     if disc < 0:
         return f"{side} focus"
     return f"{side} node" if disc > 0 else f"{side} degenerate node"
+
+
+def periodic_forced_response(force: Any, period: float, k0: float, omega: float, t: Any) -> np.ndarray:
+    """τ-periodic steady response of the undamped ``k0 (y'' + ω² y) = x(t)`` (Bulgakov (1954), §4.11c).
+
+    On ``0 ≤ t ≤ τ``: ``y1 = (1/(k0ω)) ∫₀ᵗ x(u) sin ω(t-u) du + (1/(2k0ω))[(s + c cot(ωτ/2)) cos ωt +
+    (s cot(ωτ/2) - c) sin ωt]`` with ``c, s = ∫₀^τ x(u) (cos, sin)(ωu) du``, extended periodically.
+
+    Parameters
+    ----------
+    force : callable
+        ``x(t)`` on ``[0, τ]`` (one period).
+    period : float
+        ``τ``.
+    k0, omega : float
+        Mass and natural angular frequency.
+    t : array_like
+        Times (any real values; reduced modulo ``τ``).
+
+    Raises
+    ------
+    ParameterError
+        At resonance, ``ωτ = 2πn``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from symosc.linear import periodic_forced_response
+    >>> y = periodic_forced_response(lambda u: np.cos(2 * u), np.pi, 1.0, 1.0, [0.0])   # y = cos(2t)/(1 - 4)
+    >>> round(float(y[0]), 12)
+    -0.333333333333
+
+    See Also
+    --------
+    linear_filter, frequency_response
+    """
+    from scipy.integrate import quad
+
+    if not callable(force):
+        raise ParameterError("force must be a callable x(t) on one period")
+    tau, k0, w = float(period), float(k0), float(omega)
+    if tau <= 0 or k0 <= 0 or w <= 0:
+        raise ParameterError("period, k0 and omega must be positive")
+    n = w * tau / (2 * np.pi)
+    if abs(n - round(n)) < 1e-9:
+        raise ParameterError(f"resonance: ωτ = 2π·{round(n)}; the response grows without bound")
+    c = quad(lambda u: force(u) * np.cos(w * u), 0, tau, limit=200, epsabs=1e-13, epsrel=1e-13)[0]
+    s = quad(lambda u: force(u) * np.sin(w * u), 0, tau, limit=200, epsabs=1e-13, epsrel=1e-13)[0]
+    cot = 1 / np.tan(w * tau / 2)
+    out = []
+    for tk in np.atleast_1d(np.asarray(t, dtype=float)):
+        tm = tk % tau
+        conv = quad(lambda u, tm=tm: force(u) * np.sin(w * (tm - u)), 0, tm, limit=200, epsabs=1e-13)[0] if tm else 0
+        free = ((s + c * cot) * np.cos(w * tm) + (s * cot - c) * np.sin(w * tm)) / 2
+        out.append((conv + free) / (k0 * w))
+    return np.array(out)

@@ -223,3 +223,13 @@ def test_mean_power_identities():
     vel = np.real(np.outer(1j * w * np.exp(1j * w * ts), zeta))
     assert abs(P - np.mean(np.sum(force * vel, axis=1))) < 1e-12
     assert abs(mean_power(A, 0 * N, G, H, 0 * J, xi, w)) < 1e-12
+
+
+def test_e12_normal_coordinates_kernel():
+    """§8.52 Ex. 1: y1'' + y2 = x, y1'' + y1' + y2' + y2 = 0, Δ = D(D-1)(D+1); from ξ1' = -x, ξ2' - ξ2 = x,
+    ξ3' + ξ3 = 0, y1 = ξ1 + ξ2 + ξ3, y2 = -ξ2 - ξ3: the kernel of x is [-1 + e^t, -e^t]."""
+    from symosc.linear import impulse_response
+
+    r = impulse_response([[D**2, 1], [D**2 + D, D + 1]], [1, 0], D, t)
+    assert r.direct == sp.zeros(2, 1)
+    assert sp.simplify(r.kernel[0] - (-1 + sp.exp(t))) == 0 and sp.simplify(r.kernel[1] + sp.exp(t)) == 0

@@ -87,3 +87,33 @@ def test_classification_and_errors():
         linear_filter(0, 1, 1)
     with pytest.raises(ParameterError, match="k1 > 0"):
         stability_coefficients(1, 0, 1)
+
+
+@pytest.mark.parametrize("omega", [0.7, 2.3])
+def test_periodic_forced_response_is_periodic_solution(omega):
+    """§4.11c: starting the ODE from (y1(0), y1'(0)) returns to it after one period τ, and y1 matches the ODE
+    solution along the period (sawtooth force, a non-smooth periodic input)."""
+    from symosc.linear import periodic_forced_response
+
+    tau, k0 = 2.0, 1.5
+
+    def force(u):
+        return (u % tau) - tau / 2
+
+    h = 1e-3  # one-sided third-order difference inside the period (the force jumps at t = τ)
+    y0, y1, y2, y3 = periodic_forced_response(force, tau, k0, omega, [0.0, h, 2 * h, 3 * h])
+    v0 = (-11 * y0 + 18 * y1 - 9 * y2 + 2 * y3) / (6 * h)
+    ts = np.linspace(0, tau, 9)
+    sol = solve_ivp(
+        lambda s, z: [z[1], force(s) / k0 - omega**2 * z[0]],
+        (0, tau),
+        [y0, v0],
+        t_eval=ts,
+        rtol=1e-11,
+        atol=1e-13,
+        max_step=0.01,
+    )
+    assert np.allclose(sol.y[0], periodic_forced_response(force, tau, k0, omega, ts), atol=1e-7)
+    assert abs(sol.y[0][-1] - y0) < 1e-7
+    with pytest.raises(ParameterError, match="resonance"):
+        periodic_forced_response(force, tau, k0, np.pi, [0.0])
