@@ -1,7 +1,7 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
-  :func:`periodic_forced_response`.
+  :func:`periodic_forced_response`, :func:`volterra_march`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
@@ -61,6 +61,7 @@ from .one_dof import (
     linear_filter,
     periodic_forced_response,
     stability_coefficients,
+    volterra_march,
 )
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .regions import StabilityRegion, robust_boundary, stability_region
@@ -128,6 +129,7 @@ __all__ = [
     "stability_region",
     "string_frequencies",
     "string_modes",
+    "volterra_march",
     "vyshnegradsky_diagram",
     "worst_case_gain",
 ]

@@ -6,6 +6,7 @@
   ϑ (harmonic) of §4.10–4.11.
 * :func:`classify_equilibrium` — the singular point of the phase plane (§4.2, §4.9).
 * :func:`periodic_forced_response` — the τ-periodic response of an undamped oscillator (§4.11c).
+* :func:`volterra_march` — the integral-equation form of a perturbed linear system (§4.4).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ __all__ = [
     "linear_filter",
     "periodic_forced_response",
     "stability_coefficients",
+    "volterra_march",
 ]
 
 
@@ -280,3 +282,47 @@ def periodic_forced_response(force: Any, period: float, k0: float, omega: float,
         free = ((s + c * cot) * np.cos(w * tm) + (s * cot - c) * np.sin(w * tm)) / 2
         out.append((conv + free) / (k0 * w))
     return np.array(out)
+
+
+def volterra_march(g: Any, kernel: Any, t: Any) -> np.ndarray:
+    """Left-rectangle solution of ``x(t) = g(t) + ∫_{t0}^t K(t, τ, x(τ)) dτ`` (Bulgakov (1954), §4.4, eq. (4.40)).
+
+    The integral equation is the reduction of ``ẋ + f(t) x = y(t) + ψ(x, t)`` with ``K = Θ(t) Θ⁻¹(τ) ψ`` and
+    ``g = Θ(t) Θ⁻¹(t0) x(t0) + ∫ Θ(t) Θ⁻¹(τ) y dτ`` (4.34)–(4.36).  First order in the step.
+
+    Parameters
+    ----------
+    g : callable
+        ``g(t)`` → array of shape ``(m,)``.
+    kernel : callable
+        ``K(t, τ, x)`` → array of shape ``(m,)``.
+    t : array_like
+        Increasing grid, ``t[0] = t0``.
+
+    Returns
+    -------
+    ndarray, shape (len(t), m)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from symosc.linear import volterra_march
+    >>> x = volterra_march(lambda s: np.array([1.0]), lambda s, u, x: -x, np.linspace(0, 1, 201))   # x' = -x
+    >>> bool(abs(x[-1, 0] - np.exp(-1)) < 1e-3)
+    True
+
+    See Also
+    --------
+    linear_filter
+    """
+    tt = np.asarray(t, dtype=float)
+    if tt.ndim != 1 or tt.size < 2 or np.any(np.diff(tt) <= 0):
+        raise ParameterError("t must be an increasing 1-D grid with at least two points")
+    x = [np.atleast_1d(np.asarray(g(tt[0]), dtype=float))]
+    dt = np.diff(tt)
+    for j in range(1, tt.size):
+        acc = np.atleast_1d(np.asarray(g(tt[j]), dtype=float)).copy()
+        for k in range(j):
+            acc += np.asarray(kernel(tt[j], tt[k], x[k]), dtype=float) * dt[k]
+        x.append(acc)
+    return np.array(x)
