@@ -67,6 +67,9 @@ class ModalAnalysis:
             + printer._print(sp.Matrix(self.modes))
         )
 
+    def _repr_latex_(self) -> str:
+        return f"$${sp.latex(self)}$$"
+
     def plot(self, *, ax=None, n_modes: int | None = None):
         """Mode shapes against the coordinate index; returns the Axes."""
         from ._util import figure_axes

@@ -127,6 +127,9 @@ class DPartition:
     def _latex(self, printer) -> str:
         return rf"\mu(\omega) = {printer._print(self.mu)},\ \nu(\omega) = {printer._print(self.nu)}"
 
+    def _repr_latex_(self) -> str:
+        return f"$${sp.latex(self)}$$"
+
     def plot(self, *, ax=None, xlim=(-5, 5), ylim=(-5, 5), n_omega: int = 4001, grid: int = 60, hatch_every: int = 80):
         """Boundary ``T_ε`` with its shading ticks, singular lines and region labels ``C_ε(j)`` from root counts."""
         from ._util import figure_axes

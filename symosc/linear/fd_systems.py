@@ -150,6 +150,9 @@ class FundamentalSolutions:
     def _latex(self, printer) -> str:
         return printer._print(self.matrix)
 
+    def _repr_latex_(self) -> str:
+        return f"$${sp.latex(self)}$$"
+
 
 def fundamental_solutions(
     f: Any, var: sp.Symbol, t: sp.Symbol | None = None, *, real: bool = True

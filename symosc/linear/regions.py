@@ -63,6 +63,9 @@ class StabilityRegion:
     def _latex(self, printer) -> str:
         return printer._print(self.inequalities)
 
+    def _repr_latex_(self) -> str:
+        return f"$${sp.latex(self)}$$"
+
     def plot(self, *, ax=None, xlim=(-1.0, 5.0), ylim=(-1.0, 5.0), grid: int = 200):
         """Shade the region in the plane of two parameters; draw ``T1`` and ``Δ_(s-1) = 0``; returns the Axes."""
         from ._util import figure_axes
