@@ -137,6 +137,10 @@ def _margin(k: list[Fraction]) -> float:
 
 def _prepare(coefficients: Any):
     coeffs = as_coefficients(coefficients)
+    if any(c.is_number and c.is_real is False for c in coeffs):
+        raise ParameterError(
+            "the Hurwitz criterion needs real coefficients; for complex ones count roots with d_partition or nyquist"
+        )
     numeric = is_numeric(coeffs)
     if numeric and coeffs[0] < 0:
         coeffs = tuple(-c for c in coeffs)

@@ -132,6 +132,8 @@ def test_bad_input():
         routh_array([1])
     with pytest.raises(ParameterError, match="finite"):
         hurwitz([1, float("nan")])
+    with pytest.raises(ParameterError, match="real coefficients"):
+        hurwitz([1, 2j, 3])
     with pytest.raises(ParameterError, match="form"):
         lienard_chipart([1, 2, 3], form=5)
 

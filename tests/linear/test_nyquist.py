@@ -89,6 +89,7 @@ def test_neutral_links_need_indentation():
 )
 def test_margins_vs_python_control(num, den):
     import control
+
     gm, pm, _wpc, _wgc = control.margin(control.tf(num, den))
     m = stability_margins(num, den)
     assert np.isclose(m.gain_margin, gm, rtol=1e-6) or (np.isinf(gm) and np.isinf(m.gain_margin))
