@@ -1,0 +1,135 @@
+"""Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
+
+* One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
+  :func:`periodic_forced_response`, :func:`volterra_march`.
+* Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
+  :func:`modal_normal_form`, :func:`frequency_response`,
+  :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
+* Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
+  :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
+  :func:`max_stability_degree_cubic`.
+* Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
+  :func:`string_frequencies`, :func:`influence_matrix`.
+* Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
+  :func:`power_iteration`.
+* Regulated loops — :func:`chain_transmittance`, :func:`return_difference`, :func:`closed_loop_characteristic`,
+  :func:`nyquist` (indentation, shifted axis, Feldbaum sector), :func:`stability_margins`.
+* Regions — :func:`stability_region`, :func:`robust_boundary`; D-partition — :func:`d_partition`,
+  :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
+"""
+
+from .bounds import (
+    FrequencyBounds,
+    PowerIteration,
+    constrained_eigenvalues,
+    dunkerley,
+    dunkerley_bounds,
+    power_iteration,
+    rayleigh_quotient,
+)
+from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
+from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
+from .degree import (
+    CubicOptimum,
+    StabilityDegree,
+    hurwitz_at_degree,
+    max_stability_degree_cubic,
+    shifted_coefficients,
+    stability_degree,
+)
+from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
+from .fd_systems import (
+    Compatibility,
+    FrequencyResponse,
+    FundamentalSolutions,
+    ImpulseResponse,
+    compatibility,
+    frequency_response,
+    fundamental_solutions,
+    impulse_response,
+    mean_power,
+    resonant_particular,
+    worst_case_gain,
+)
+from .loops import chain_transmittance, closed_loop_characteristic, return_difference
+from .normal_form import NormalForm, modal_normal_form
+from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
+from .one_dof import (
+    LinearFilter,
+    StabilityCoefficients,
+    classify_equilibrium,
+    linear_filter,
+    periodic_forced_response,
+    stability_coefficients,
+    volterra_march,
+)
+from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
+from .regions import StabilityRegion, robust_boundary, stability_region
+from .routh import RouthArray, routh_array
+from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
+
+__all__ = [
+    "Compatibility",
+    "CubicOptimum",
+    "DPartition",
+    "DiscriminantCurve",
+    "FrequencyBounds",
+    "FrequencyResponse",
+    "FundamentalSolutions",
+    "ImpulseResponse",
+    "LinearFilter",
+    "ModalAnalysis",
+    "NormalForm",
+    "NyquistResult",
+    "PowerIteration",
+    "QuadraticFormVerdict",
+    "RouthArray",
+    "StabilityCoefficients",
+    "StabilityDegree",
+    "StabilityMargins",
+    "StabilityRegion",
+    "StabilityVerdict",
+    "a_orthonormalize",
+    "chain_matrices",
+    "chain_transmittance",
+    "classify_equilibrium",
+    "closed_loop_characteristic",
+    "compatibility",
+    "conservative_modes",
+    "constrained_eigenvalues",
+    "d_partition",
+    "discriminant_curve",
+    "dunkerley",
+    "dunkerley_bounds",
+    "frequency_response",
+    "fundamental_solutions",
+    "hurwitz",
+    "hurwitz_at_degree",
+    "hurwitz_matrix",
+    "impulse_response",
+    "influence_matrix",
+    "lienard_chipart",
+    "linear_filter",
+    "max_stability_degree_cubic",
+    "mean_power",
+    "modal_normal_form",
+    "nyquist",
+    "periodic_forced_response",
+    "power_iteration",
+    "rayleigh_quotient",
+    "resonant_particular",
+    "return_difference",
+    "robust_boundary",
+    "routh_array",
+    "routh_form_criteria",
+    "shifted_coefficients",
+    "stability_coefficients",
+    "stability_degree",
+    "stability_margins",
+    "stability_region",
+    "string_frequencies",
+    "string_modes",
+    "volterra_march",
+    "vyshnegradsky_diagram",
+    "worst_case_gain",
+]
