@@ -2,8 +2,9 @@
 
 The cache directory is ``$SYMOSC_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/symosc``, else
 ``~/.cache/symosc``.  A library is named by a hash of its source, the compiler flags and the compiler's
-version, and carries that hash in the symbol ``symosc_build_id``: a file that does not load or carries
-another id (a corrupted or truncated file) is rebuilt, never used.  Builds write to a temporary file and
+version, carries that hash in the symbol ``symosc_build_id``, and has the SHA-256 of its bytes stored beside
+it: a file whose bytes do not match (corrupted or truncated), that does not load or that carries another id is
+rebuilt, never used.  Builds write to a temporary file and
 ``os.replace`` it into place, so concurrent processes building the same library all succeed.
 
 The compiler is ``$SYMOSC_CC``, else ``$CC``, else ``cc``.
@@ -92,8 +93,18 @@ def load(source: str) -> ctypes.CDLL:
         return lib
 
 
+def _digest_path(path: Path) -> Path:
+    return path.with_name(path.name + ".sha256")
+
+
 def _try_load(path: Path, key: str) -> ctypes.CDLL | None:
-    if not path.exists():
+    """Load ``path`` if its bytes match the stored digest and it carries ``key`` (never dlopen a damaged file)."""
+    try:
+        data = path.read_bytes()
+        digest = _digest_path(path).read_text().strip()
+    except OSError:
+        return None
+    if hashlib.sha256(data).hexdigest() != digest:
         return None
     try:
         lib = ctypes.CDLL(str(path))
@@ -120,7 +131,12 @@ def _compile(cc: str, source: str, directory: Path, path: Path) -> None:
         if res.returncode != 0 or not out.exists():
             tail = "\n".join(res.stderr.strip().splitlines()[-15:])
             raise CompilerError(f"C compilation failed ({' '.join(cmd)}):\n{tail}")
-        os.replace(out, path)  # atomic: a concurrent builder either sees the old file or the complete new one
+        digest = Path(tmp) / "digest"
+        digest.write_text(hashlib.sha256(out.read_bytes()).hexdigest())
+        # Atomic renames: a concurrent builder or reader sees either the old files or complete new ones (a
+        # library and a digest from two builders that differ only make a reader rebuild once more).
+        os.replace(out, path)
+        os.replace(digest, _digest_path(path))
 
 
 def clear_memory_cache() -> None:

@@ -128,6 +128,7 @@ def numpy_source(fname: str, doc: str, arg_names: list[str], replacements, reduc
     lines.append(f"            return _scalar_out(_{fname}_scalar({args}), {shape or ()!r})")
     lines.append("        except (ArithmeticError, ValueError, TypeError):")
     lines.append("            pass  # 1/0, a domain error or an overflow: NumPy's inf/nan semantics below")
+    lines += [f"    {a} = numpy.asarray({a})" for a in arg_names]
     for sym, sub in replacements:
         lines.append(f"    {sym} = {_printed(array_printer, sub)}")
     element_code = [_printed(array_printer, e) for e in reduced]
