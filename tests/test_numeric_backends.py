@@ -60,9 +60,7 @@ def _reference(xv: float, yv: float, mv: float) -> list[float]:
 
 
 @settings(max_examples=40, deadline=None)
-@given(
-    st.floats(-3, 3, allow_subnormal=False), st.floats(-2, 2, allow_subnormal=False), st.floats(0.01, 5)
-)
+@given(st.floats(-3, 3, allow_subnormal=False), st.floats(-2, 2, allow_subnormal=False), st.floats(0.01, 5))
 def test_all_backends_agree_with_30_digit_evalf(compiled, xv, yv, mv):
     ref = np.array(_reference(xv, yv, mv))
     for backend, f in compiled.items():
@@ -169,7 +167,9 @@ def test_two_processes_building_at_once_both_succeed(tmp_path):
     )
     env = {**os.environ, "SYMOSC_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(REPO)}
     procs = [
-        subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True)
+        subprocess.Popen(
+            [sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True
+        )
         for _ in range(2)
     ]
     outs = [p.communicate(timeout=120) for p in procs]
@@ -198,7 +198,7 @@ def test_pickle_round_trip(backend):
 
 def test_missing_compiler_is_named(monkeypatch):
     monkeypatch.setenv("SYMOSC_CC", "/nonexistent/cc")
-    with pytest.raises(CompilerError, match="no C compiler found.*install gcc or clang"):
+    with pytest.raises(CompilerError, match=r"no C compiler found.*install gcc or clang"):
         compile(x * 13 + 1, [x], backend="c")
 
 

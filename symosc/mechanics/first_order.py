@@ -131,7 +131,9 @@ class FirstOrderSystem:
         >>> jac(0.0, [0.0, 0.0]).tolist()
         [[0.0, 1.0], [-4.905, 0.0]]
         """
-        return _OdeFunction(self._evaluator(values, backend, jacobian=True), "jacobian", 2 * len(self.system.coordinates))
+        return _OdeFunction(
+            self._evaluator(values, backend, jacobian=True), "jacobian", 2 * len(self.system.coordinates)
+        )
 
     def _evaluator(self, values: Mapping[Any, Any], backend: str, jacobian: bool) -> Any:
         from ..numeric import _ode, available_backends

@@ -95,4 +95,3 @@ def _short(v: Any) -> str:
         return repr(v)
     arr = np.asarray(v)
     return repr(v) if arr.size <= 4 else f"<array of shape {arr.shape}>"
-

@@ -373,5 +373,3 @@ def _argument_names(symbols: list[sp.Symbol]) -> list[str]:
         ok = ok and s.name not in reserved and s.name not in names and not s.name.endswith("_scalar")
         names.append(s.name if ok else f"_a{i}")
     return names
-
-

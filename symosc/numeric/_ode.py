@@ -106,7 +106,9 @@ static int symosc_solve(int n, double *A, double *B, int nrhs)
         if (!(best > 0.0) || !isfinite(best)) return 1;
         if (piv != c) {
             for (int k = 0; k < n; k++) { double s = A[c * n + k]; A[c * n + k] = A[piv * n + k]; A[piv * n + k] = s; }
-            for (int k = 0; k < nrhs; k++) { double s = B[c * nrhs + k]; B[c * nrhs + k] = B[piv * nrhs + k]; B[piv * nrhs + k] = s; }
+            for (int k = 0; k < nrhs; k++) {
+                double s = B[c * nrhs + k]; B[c * nrhs + k] = B[piv * nrhs + k]; B[piv * nrhs + k] = s;
+            }
         }
         for (int r = c + 1; r < n; r++) {
             double f = A[r * n + c] / A[c * n + c];

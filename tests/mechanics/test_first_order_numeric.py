@@ -40,9 +40,13 @@ def closed_form(_t: float, y: np.ndarray) -> np.ndarray:
     d = th1 - th2
     den = 2 * m1 + m2 - m2 * np.cos(2 * d)
     a1 = (
-        -g * (2 * m1 + m2) * np.sin(th1) - m2 * g * np.sin(th1 - 2 * th2) - 2 * np.sin(d) * m2 * (w2**2 * l2 + w1**2 * l1 * np.cos(d))
+        -g * (2 * m1 + m2) * np.sin(th1)
+        - m2 * g * np.sin(th1 - 2 * th2)
+        - 2 * np.sin(d) * m2 * (w2**2 * l2 + w1**2 * l1 * np.cos(d))
     ) / (l1 * den)
-    a2 = (2 * np.sin(d) * (w1**2 * l1 * (m1 + m2) + g * (m1 + m2) * np.cos(th1) + w2**2 * l2 * m2 * np.cos(d))) / (l2 * den)
+    a2 = (2 * np.sin(d) * (w1**2 * l1 * (m1 + m2) + g * (m1 + m2) * np.cos(th1) + w2**2 * l2 * m2 * np.cos(d))) / (
+        l2 * den
+    )
     return np.array([w1, w2, a1, a2])
 
 
