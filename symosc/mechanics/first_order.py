@@ -152,7 +152,11 @@ class FirstOrderSystem:
         if parts is None:
             symbolic = (s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters)
             if backend == "c":
-                parts = _ode.c_first_order_source(*symbolic, jacobian=jacobian)
+                from ..numeric import _build
+
+                items = [*s.mass_matrix, *s.forcing, t, *s.coordinates, *s.velocities, *s.parameters]
+                tag = _build.expression_digest(items, "first_order", str(jacobian), str(len(s.coordinates)))
+                parts = _build.memoized_source(tag, lambda: _ode.c_first_order_source(*symbolic, jacobian=jacobian))
             else:
                 parts = _ode.numpy_parts(*symbolic, jacobian=jacobian)
             self._parts[key] = parts

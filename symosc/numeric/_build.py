@@ -143,3 +143,57 @@ def clear_memory_cache() -> None:
     """Forget the libraries loaded in this process (the disk cache is kept); used by the tests."""
     with _lock:
         _loaded.clear()
+
+
+CODEGEN_VERSION = "1"  # bump when generated code changes for the same expressions
+
+
+def expression_digest(exprs: list, *extra: str) -> str:
+    """A process-independent digest of SymPy expressions (shared subtrees hashed once) and ``extra`` strings.
+
+    Used to find previously generated source without repeating the common-subexpression elimination, so
+    that a cached rebuild costs milliseconds even for large systems.
+    """
+    import sympy as sp
+
+    memo: dict = {}
+
+    def digest(e) -> bytes:
+        d = memo.get(e)
+        if d is None:
+            if e.args:
+                h = hashlib.blake2b(type(e).__name__.encode(), digest_size=16)
+                for a in e.args:
+                    h.update(digest(a))
+                d = h.digest()
+            else:
+                d = hashlib.blake2b(sp.srepr(e).encode(), digest_size=16).digest()
+            memo[e] = d
+        return d
+
+    h = hashlib.sha256(CODEGEN_VERSION.encode())
+    for e in exprs:
+        h.update(digest(sp.sympify(e)))
+    for s in extra:
+        h.update(b"\0" + s.encode())
+    return h.hexdigest()[:_ID_LEN]
+
+
+def memoized_source(tag: str, make) -> str:
+    """The source generated earlier for ``tag`` (checked against its stored SHA-256), else ``make()`` (stored)."""
+    path = cache_dir() / f"source_{tag}.c"
+    try:
+        stored_digest, text = path.read_text().split("\n", 1)
+        if hashlib.sha256(text.encode()).hexdigest() == stored_digest:
+            return text
+    except (OSError, ValueError):
+        pass
+    text = make()
+    try:
+        cache_dir().mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile("w", dir=cache_dir(), prefix=".source_", delete=False) as fh:
+            fh.write(hashlib.sha256(text.encode()).hexdigest() + "\n" + text)
+        os.replace(fh.name, path)
+    except OSError:
+        pass  # an unwritable cache only costs time
+    return text
