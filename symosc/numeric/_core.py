@@ -218,8 +218,12 @@ def compile(
     args : sequence of Symbol
         The arguments, in call order.  Nested sequences and column matrices of symbols are flattened.
         Every free symbol of ``exprs`` must be among them.
-    backend : {"numpy", "mpmath"}
-        ``"numpy"`` broadcasts over array arguments; ``"mpmath"`` evaluates scalars at ``dps`` digits.
+    backend : {"numpy", "mpmath", "c", "llvm", "auto"}
+        ``"numpy"`` broadcasts over array arguments; ``"mpmath"`` evaluates scalars at ``dps`` digits;
+        ``"c"`` generates C99, builds it with the system compiler (cached on disk, see
+        :func:`~symosc.numeric.cache_dir`) and loops over array arguments in C; ``"llvm"`` uses symengine's
+        LLVM JIT (extra ``symosc[fast]``); ``"auto"`` picks ``"c"``, else ``"llvm"``, else ``"numpy"``
+        (``.backend`` tells which).  "c" and "llvm" evaluate real values only.
     dps : int, optional
         Decimal digits for the mpmath backend (default: the current ``mpmath.mp.dps``).
     check : bool
@@ -236,7 +240,20 @@ def compile(
     ------
     ParameterError
         If ``exprs`` has free symbols that are not arguments (all of them are named), if an argument is
-        not a Symbol, or if argument names repeat.
+        not a Symbol, if argument names repeat, or if the backend cannot print a function (named).
+    CompilerError
+        ``backend="c"`` without a working C compiler (the message says what to install).
+
+    See Also
+    --------
+    symosc.codegen.export : the same expressions written to C, Python, Julia, Fortran or Octave files.
+    symosc.mechanics.FirstOrderSystem.rhs : compiled right-hand sides of equations of motion.
+
+    Notes
+    -----
+    Evaluation follows IEEE/NumPy semantics: ``1/x`` at ``x = 0`` gives ``inf``, ``sqrt(-1)`` gives ``nan``.
+    A checked call whose finite arguments give a non-finite result also warns (``RuntimeWarning`` naming the
+    function and the argument values); ``.raw`` does not.
 
     Examples
     --------
@@ -253,6 +270,9 @@ def compile(
     >>> h = compile(sp.exp(x), [x], backend="mpmath", dps=30)
     >>> mpmath.nstr(h(1), 30)
     '2.71828182845904523536028747135'
+    >>> c = compile(sp.cos(k * x), [x, k], backend="c")  # needs a C compiler
+    >>> c([0.0, 1.0], 2.0).round(6).tolist()
+    [1.0, -0.416147]
     """
     if backend not in _BACKENDS:
         raise ParameterError(f"unknown backend {backend!r}; choose one of {_BACKENDS}")
@@ -277,8 +297,22 @@ def compile(
         from . import _llvm
 
         source, func = _llvm.build(fname, arg_syms, items, shape)
-        slow = _SlowPath(fname, tuple(arg_syms), backend, func)
-        return CompiledFunction(tuple(arg_syms), backend, shape, source, dps, check, fname, originals, func, slow)
+        names = [f"_a{i}" for i in range(len(arg_syms))]
+        conditions = [python_condition(s, a) for s, a in zip(arg_syms, names, strict=True)]
+        test = " and ".join([f"type({a}) in _REAL_TYPES" for a in names] + conditions) or "True"
+        wrapper = (
+            f"def _checked({', '.join(names)}):\n"
+            f"    if {test}:\n"
+            f"        _out = _func({', '.join(names)})\n"
+            "        if _isfinite(_out).all():\n"
+            "            return _out\n"
+            f"    return _slow({', '.join(names)})\n"
+        )
+        namespace = {"_func": func, "_slow": _SlowPath(fname, tuple(arg_syms), backend, func), "_INF": float("inf")}
+        namespace |= {"_REAL_TYPES": frozenset({float, int, np.float64}), "_isfinite": np.isfinite}
+        exec(builtins.compile(wrapper, f"<symosc:{fname}:checked>", "exec"), namespace)
+        checked = namespace["_checked"]
+        return CompiledFunction(tuple(arg_syms), backend, shape, source, dps, check, fname, originals, func, checked)
 
     arg_names = _argument_names(arg_syms)
     renamed = {s: sp.Symbol(n, **s.assumptions0) for s, n in zip(arg_syms, arg_names, strict=True)}

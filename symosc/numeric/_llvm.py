@@ -60,6 +60,9 @@ def build(fname: str, arg_syms: list[sp.Symbol], items: list[sp.Expr], shape) ->
     return source, _Caller(func, len(items), shape)
 
 
+_REAL_TYPES = frozenset({float, int, np.float64})
+
+
 class _Caller:
     """Broadcasting wrapper of a symengine Lambdify with the output layout of the other backends."""
 
@@ -67,6 +70,8 @@ class _Caller:
         self.func, self.nout, self.shape = func, nout, shape or ()
 
     def __call__(self, *values: Any) -> np.ndarray:
+        if all(type(v) in _REAL_TYPES for v in values):  # scalar fast path: one call, no broadcasting
+            return np.asarray(self.func(values) if values else self.func(), dtype=float).reshape(self.shape)
         arrays = [np.asarray(v, dtype=float) for v in values]
         batch = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
         if batch == ():
