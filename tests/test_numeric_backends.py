@@ -252,3 +252,16 @@ def test_imports_only_what_the_expression_needs():
     assert "scipy" not in plain and "import math" in plain
     special = compile(sp.besselj(0, x), [x]).source
     assert "import scipy.special" in special
+
+
+def test_a_damaged_source_memo_is_regenerated():
+    expr = sp.sin(x) * 17 - y
+    before = set(cache_dir().glob("source_*.c"))
+    compile(expr, [x, y], backend="c")
+    (memo,) = set(cache_dir().glob("source_*.c")) - before
+    digest, text = memo.read_text().split("\n", 1)
+    memo.write_text(digest + "\n" + text.replace("17", "19"))  # stale or tampered text under a valid-looking name
+    clear_memory_cache()
+    f = compile(expr, [x, y], backend="c")
+    assert float(f(np.pi / 2, 1.0)) == 16.0
+    assert "17" in f.source and memo.read_text() == digest + "\n" + text
