@@ -28,13 +28,14 @@ m = sp.Symbol("m", positive=True)
 COMPILED = ["c", "llvm"]
 REPO = Path(__file__).resolve().parents[1]
 
-# Elementary functions every backend prints; evaluated independently by SymPy's evalf at 30 digits.
+# Functions every backend prints; evaluated independently by SymPy's evalf at 30 digits.
 EXPRS = [
     sp.sin(x) * sp.exp(-m * y**2) + sp.Rational(1, 3) * sp.pi,
     sp.sqrt(m) * sp.cos(x - y) / (1 + x**2),
     sp.log(m + y**2) * sp.atan(x) - sp.tanh(y) ** 3,
     m ** sp.Rational(3, 2) + sp.Abs(x) * sp.cosh(y / 3) + sp.asinh(x * y),
     (x**2 + y**2) ** 2 / (m + 1) - sp.exp(sp.sin(x) * sp.cos(y)),
+    sp.gamma(m) * sp.erf(x) + sp.loggamma(m + 1) - sp.erfc(y),  # special functions C99 and LLVM provide
 ]
 
 
@@ -205,6 +206,8 @@ def test_missing_compiler_is_named(monkeypatch):
 def test_unprintable_function_is_named():
     with pytest.raises(ParameterError, match="C backend cannot print besselj"):
         compile(sp.besselj(1, x), [x], backend="c")
+    with pytest.raises(ParameterError, match=r"llvm backend cannot compile .*besselj"):
+        compile(sp.besselj(1, x), [x], backend="llvm")
     with pytest.raises(ParameterError, match="real-valued"):
         compile(sp.exp(sp.I * x), [x], backend="c")
 
