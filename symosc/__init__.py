@@ -43,6 +43,7 @@ def __getattr__(name: str):
         "algebra",
         "operational",
         "nonlinear",
+        "codegen",
         "identification",
         "linear",
         "plotting",
