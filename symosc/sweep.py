@@ -198,31 +198,64 @@ def _pack(results: list, shape: tuple[int, ...], failed: set[int]) -> np.ndarray
     return out.reshape(shape)
 
 
-def _serial_plain(func, names, axes_lists, consts, results, start, stop, nan_error, finished, bad) -> None:
+def _positional(func, names: tuple[str, ...]) -> bool:
+    """True when ``func(*values)`` means ``func(**dict(zip(names, values)))`` (leading parameters named so)."""
+    import inspect
+
+    try:
+        params = list(inspect.signature(func).parameters.values())
+    except (TypeError, ValueError):
+        return False
+    if len(params) < len(names):
+        return False
+    return all(
+        p.name == name and p.kind is inspect.Parameter.POSITIONAL_OR_KEYWORD
+        for p, name in zip(params, names, strict=False)
+    )
+
+
+def _serial_plain(func, names, points, consts, results, start, stop, nan_error, finished, bad, positional) -> None:
     """The serial hot loop (no timeout): fill ``results[start:stop]``, append ``(i, error, traceback)`` to ``bad``.
 
     On Ctrl-C the points already run are marked in ``finished`` before ``KeyboardInterrupt`` propagates.
     """
     n_bad = len(bad)
-    points = itertools.islice(itertools.product(*axes_lists), start, stop)
-    i = start
+    out: list = []
+    append = out.append
     try:
-        if len(names) == 1 and not consts:
-            (name,) = names
-            for i, (v,) in enumerate(points, start):
+        if positional and not consts and len(names) == 1:  # points are the values themselves
+            for v in points:
                 try:
-                    results[i] = func(**{name: v})
+                    append(func(v))
                 except (Exception, SystemExit) as exc:
-                    bad.append((i, f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    append(None)
+        elif positional and not consts:  # func(x, y) with the grid's names in order: positional call, same meaning
+            for p in points:
+                try:
+                    append(func(*p))
+                except (Exception, SystemExit) as exc:
+                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    append(None)
+        elif positional:
+            for p in points:
+                try:
+                    append(func(*p, **consts))
+                except (Exception, SystemExit) as exc:
+                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    append(None)
         else:
-            for i, p in enumerate(points, start):
+            for p in points:
                 try:
-                    results[i] = func(**dict(zip(names, p, strict=True)), **consts)
+                    append(func(**dict(zip(names, p, strict=True)), **consts))
                 except (Exception, SystemExit) as exc:
-                    bad.append((i, f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                    append(None)
     except KeyboardInterrupt:
-        finished[start:i] = True
+        results[start : start + len(out)] = out
+        finished[start : start + len(out)] = True
         raise
+    results[start:stop] = out
     finished[start:stop] = True
     if nan_error:
         failed = {b[0] for b in bad[n_bad:]}
@@ -322,8 +355,8 @@ def sweep(
         if isinstance(timeout, bool) or not isinstance(timeout, int | float) or not (0 < timeout < math.inf):
             raise ParameterError(f"timeout must be a positive number of seconds, got {timeout!r}")
         timeout = float(timeout)
-    ncpu = os.cpu_count() or 1
-    kind, client, own_client = _resolve_executor(executor, func, ncpu)
+    kind, client, own_client = _resolve_executor(executor, func)
+    ncpu = (os.cpu_count() or 1) if kind != "serial" else 1
     if timeout is not None and kind not in ("auto", "serial", "processes"):
         raise ParameterError(
             "timeout= needs executor 'serial', 'processes' or 'auto' (a per-point timer in the worker process); "
@@ -351,7 +384,7 @@ def sweep(
                     kind, note = _auto_choice(func, total, first, per_point, ncpu, workers)
                     state.bar.note(kind)
                 if kind == "serial":
-                    step = int(chunksize) if chunksize else max(1, math.ceil(total / 100))
+                    step = int(chunksize) if chunksize else (max(1, math.ceil(total / 100)) if progress else total)
                     while start < total:
                         stop = min(total, start + step)
                         state.run_serial(func, consts, start, stop, timeout, nan)
@@ -398,24 +431,43 @@ class _State:
         self.finished = np.zeros(total, dtype=bool) if total else np.zeros(0, dtype=bool)
         self.interrupted = False
         self.bar = _tasks.Progress(total, progress)
+        self._points = itertools.product(*axes_lists)  # serial chunks run in order and share this iterator
+        self._next = 0
+        self._call_style: dict[int, bool] = {}
+
+    def _positional(self, func) -> bool:
+        key = id(func)
+        if key not in self._call_style:
+            self._call_style[key] = _positional(func, self.names)
+        return self._call_style[key]
 
     def run_serial(self, func, consts, start, stop, timeout, nan) -> None:
-        if timeout is None:
-            _serial_plain(
-                func,
-                self.names,
-                self.axes_lists,
-                consts,
-                self.results,
-                start,
-                stop,
-                nan == "error",
-                self.finished,
-                self.bad,
-            )
-        else:
+        if timeout is not None:
             task = _tasks.Task(func, self.names, self.axes_lists, consts, start, stop, timeout, nan)
-            self.collect(start, _tasks.run_task(task))
+            self.collect(start, _tasks.run_task(task))  # (updates the bar)
+            return
+        positional = self._positional(func)
+        if len(self.names) == 1 and positional and not consts:
+            points = self.axes_lists[0][start:stop]  # the values themselves
+        else:
+            if start != self._next:  # bring the shared product iterator to ``start`` (it only moves forward)
+                for _ in itertools.islice(self._points, start - self._next):
+                    pass
+            points = itertools.islice(self._points, stop - start)
+            self._next = stop
+        _serial_plain(
+            func,
+            self.names,
+            points,
+            consts,
+            self.results,
+            start,
+            stop,
+            nan == "error",
+            self.finished,
+            self.bad,
+            positional,
+        )
         self.bar.update(stop - start)
 
     def collect(self, start: int, out: list) -> None:
@@ -497,7 +549,7 @@ def _picklable(obj: Any) -> bool:
     return True
 
 
-def _resolve_executor(executor: Any, func: Any, ncpu: int) -> tuple[str, Any, bool]:
+def _resolve_executor(executor: Any, func: Any) -> tuple[str, Any, bool]:
     if executor is None:
         executor = "auto"
     if isinstance(executor, str):
