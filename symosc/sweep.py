@@ -17,6 +17,7 @@ function, the axes and a range of point indices; the points are generated where 
 from __future__ import annotations
 
 import difflib
+import functools
 import itertools
 import math
 import os
@@ -172,7 +173,7 @@ _REAL_TYPES = frozenset({int, float, bool, np.float64, np.float32, np.int64, np.
 
 def _pack(results: list, shape: tuple[int, ...], failed: set[int]) -> np.ndarray:
     if not failed and set(map(type, results)) <= _REAL_TYPES:
-        return np.array(results, dtype=float).reshape(shape)
+        return np.fromiter(results, dtype=float, count=len(results)).reshape(shape)
     good = [r for i, r in enumerate(results) if i not in failed]
 
     def is_real_scalar(v: Any) -> bool:
@@ -221,36 +222,21 @@ def _serial_plain(func, names, points, consts, results, start, stop, nan_error, 
     """
     n_bad = len(bad)
     out: list = []
-    append = out.append
+    if positional and len(names) == 1:  # points are the values themselves
+        call = functools.partial(map, functools.partial(func, **consts) if consts else func)
+    elif positional:
+        call = functools.partial(itertools.starmap, functools.partial(func, **consts) if consts else func)
+    else:
+        call = functools.partial(map, lambda p: func(**dict(zip(names, p, strict=True)), **consts))
+    it = iter(points)
     try:
-        if positional and not consts and len(names) == 1:  # points are the values themselves
-            for v in points:
-                try:
-                    append(func(v))
-                except (Exception, SystemExit) as exc:
-                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
-                    append(None)
-        elif positional and not consts:  # func(x, y) with the grid's names in order: positional call, same meaning
-            for p in points:
-                try:
-                    append(func(*p))
-                except (Exception, SystemExit) as exc:
-                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
-                    append(None)
-        elif positional:
-            for p in points:
-                try:
-                    append(func(*p, **consts))
-                except (Exception, SystemExit) as exc:
-                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
-                    append(None)
-        else:
-            for p in points:
-                try:
-                    append(func(**dict(zip(names, p, strict=True)), **consts))
-                except (Exception, SystemExit) as exc:
-                    bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
-                    append(None)
+        while True:
+            try:
+                out.extend(call(it))  # a C loop; on an exception the points before it are already in ``out``
+                break
+            except (Exception, SystemExit) as exc:  # the failing point was consumed: record it and go on
+                bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                out.append(None)
     except KeyboardInterrupt:
         results[start : start + len(out)] = out
         finished[start : start + len(out)] = True
@@ -447,7 +433,7 @@ class _State:
             self.collect(start, _tasks.run_task(task))  # (updates the bar)
             return
         positional = self._positional(func)
-        if len(self.names) == 1 and positional and not consts:
+        if len(self.names) == 1 and positional:
             points = self.axes_lists[0][start:stop]  # the values themselves
         else:
             if start != self._next:  # bring the shared product iterator to ``start`` (it only moves forward)
