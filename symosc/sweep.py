@@ -124,6 +124,10 @@ class SweepResult:
         >>> da = res.to_xarray()
         >>> float(da.sel(x=2.0, y=30.0))
         60.0
+
+        See Also
+        --------
+        to_pandas
         """
         try:
             import xarray as xr
@@ -136,6 +140,17 @@ class SweepResult:
         """The values as a ``pandas.Series`` indexed by a MultiIndex named after the grid axes.
 
         Array-valued results give a ``DataFrame`` with one column per entry of the flattened value.  Needs pandas.
+
+        Examples
+        --------
+        >>> res = sweep(lambda x, y: x * y, {"x": [1.0, 2.0], "y": [10.0, 20.0]}, executor="serial")
+        >>> s = res.to_pandas()
+        >>> list(s.index.names), float(s.loc[(2.0, 20.0)])
+        (['x', 'y'], 40.0)
+
+        See Also
+        --------
+        to_xarray
         """
         try:
             import pandas as pd
