@@ -280,12 +280,19 @@ def mathieu_characteristic(
     return MathieuValues(kind, n_flat.reshape(shape), qfb.copy(), values.reshape(shape), errors.reshape(shape), method)
 
 
+_SCIPY_SEEDS: dict = {}
+
+
 def _seed(kind: str, n: int, q):
     """SciPy's value as an (unverified) seed for the batched refinement."""
-    import scipy.special as sp
+    if not _SCIPY_SEEDS:
+        import scipy.special as sp
 
+        _SCIPY_SEEDS.update(a=sp.mathieu_a, b=sp.mathieu_b)
+    if isinstance(q, float):
+        return _SCIPY_SEEDS[kind](n, q)
     with np.errstate(all="ignore"):
-        return (sp.mathieu_a if kind == "a" else sp.mathieu_b)(n, q)
+        return _SCIPY_SEEDS[kind](n, q)
 
 
 def _exact_at_zero(fam, k: int) -> float:
