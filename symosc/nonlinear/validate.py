@@ -18,7 +18,6 @@ from typing import Any
 import mpmath
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError, ParameterError
 from ..numeric import compile as _compile
@@ -109,6 +108,8 @@ def _half_swings(rhs: Any, jac: Any, eps: float, x0: float, method: str, rtol: f
 
     ev_down.terminal = True  # type: ignore[attr-defined]
     ev_down.direction = -1  # type: ignore[attr-defined]
+    from scipy.integrate import solve_ivp
+
     s1 = solve_ivp(fun, (0.0, tmax), [x0, 0.0, 0.0], events=ev_up, **kwargs)
     if s1.status != 1:
         raise ConvergenceError(
@@ -248,6 +249,8 @@ def numeric_orbit(
     if cyc.stiff:
         kw["jac"] = lambda t, y: np.pad(np.asarray(jac.raw(y[0], y[1], float(eps)), dtype=float), ((0, 1), (0, 1)))
     ts = np.linspace(0.0, cyc.period, samples)
+    from scipy.integrate import solve_ivp
+
     sol = solve_ivp(
         lambda t, y: np.asarray(rhs.raw(y[0], y[1], float(eps)), dtype=float),
         (0.0, cyc.period),
