@@ -80,7 +80,7 @@ def reduce_coordinates(system: Any, parametrization: Mapping[Any, Any], coordina
     Q = [f.xreplace(sub) for f in system.forces]
     forces = [sp.Add(*(Qi * mapping[q].diff(s) for Qi, q in zip(Q, system.coordinates, strict=True))) for s in new]
     hol = []
-    for k, phi in enumerate(system.holonomic_constraints):
+    for phi in system.holonomic_constraints:
         e = phi.xreplace(mapping)
         if sp.simplify(e) != 0:
             hol.append(e)

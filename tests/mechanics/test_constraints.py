@@ -248,7 +248,7 @@ def test_hoop_angle_form_split_and_jacobi_integral():
 
 def test_rheonomic_constraints_have_no_jacobi_integral():
     with pytest.raises(ModelError, match="rheonomic"):
-        hoop_cartesian().jacobi_integral
+        _ = hoop_cartesian().jacobi_integral
 
 
 def test_christoffel_polar():
@@ -298,4 +298,4 @@ def test_bad_constraints():
     with pytest.raises(ModelError, match="constraints"):
         cartesian_pendulum().first_order()
     with pytest.raises(ModelError, match="no constraints"):
-        LagrangianSystem(T, 0, [x, y, z]).constrained
+        _ = LagrangianSystem(T, 0, [x, y, z]).constrained
