@@ -1,10 +1,29 @@
-"""Analytic mechanics: Lagrange equations, linearisation, first-order form.
+"""Analytic mechanics: Lagrange equations (with constraints), Routh, Hamilton, canonical transformations,
+Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 
->>> from symosc.mechanics import LagrangianSystem, LinearModel, FirstOrderSystem
+>>> from symosc.mechanics import LagrangianSystem, LinearModel, FirstOrderSystem, HamiltonianSystem
 """
 
+from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
+from .constraints import ConstrainedForm, MinimalForm
 from .first_order import FirstOrderSystem
+from .hamiltonian import HamiltonianSystem, poisson_bracket
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
+from .routh import RouthReduction, SteadyMotion, routh_reduction
 
-__all__ = ["FirstOrderSystem", "LagrangianSystem", "LinearModel"]
+__all__ = [
+    "CanonicalTransformation",
+    "ConstrainedForm",
+    "FirstOrderSystem",
+    "HamiltonianSystem",
+    "LagrangianSystem",
+    "LinearModel",
+    "MinimalForm",
+    "RouthReduction",
+    "SteadyMotion",
+    "canonical_transformation",
+    "is_canonical",
+    "poisson_bracket",
+    "routh_reduction",
+]
