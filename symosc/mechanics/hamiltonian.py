@@ -181,14 +181,16 @@ class HamiltonianSystem:
         """The inverse Legendre transform ``L(q, q', t)`` (H must be quadratic in the momenta)."""
         p = sp.Matrix(self._p)
         grad = sp.Matrix([self._H.diff(x) for x in self._p])
-        hess = grad.jacobian(p)
+        hess = grad.jacobian(p).applyfunc(sp.cancel)
         if any(e.free_symbols & set(self._p) for e in hess):
             raise ModelError("lagrangian() needs H quadratic in the momenta")
-        if hess.det() == 0:
+        from .constraints import generic_rank
+
+        if generic_rank(hess) < hess.rows:
             raise ModelError("H is degenerate in the momenta (singular Hessian): no Legendre transform")
         v = sp.Matrix([dot(q) for q in self._q])
         p0 = grad.xreplace({x: 0 for x in self._p})
-        psol = hess.LUsolve(v - p0)
+        psol = (hess.inv(method="LU").applyfunc(sp.cancel) * (v - p0)).applyfunc(sp.expand)
         sub = dict(zip(self._p, psol, strict=True))
         return sp.expand((p.T * v)[0].xreplace(sub) - self._H.xreplace(sub))
 

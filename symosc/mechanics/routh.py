@@ -171,16 +171,18 @@ class RouthReduction:
         hess = sp.Matrix(len(self.noncyclic), len(self.noncyclic), lambda i, j: self._at(
             VR.diff(self.noncyclic[i], self.noncyclic[j]), pt
         ))
+        hess = hess.applyfunc(sp.simplify)
         stable: bool | None = None
-        if hess.free_symbols:
-            stable = None
-        elif hess.is_positive_definite:
+        if hess.is_positive_definite:
             stable = True
-        else:
-            neg = sum(mult for ev, mult in hess.eigenvals().items() if ev < 0)
+        elif not hess.free_symbols or hess.rows == 1:
+            if hess.rows == 1:
+                neg = 1 if hess[0, 0].is_negative else (0 if hess[0, 0].is_nonnegative else None)
+            else:
+                neg = sum(mult for ev, mult in hess.eigenvals().items() if ev < 0)
             vn = [self.system.velocities[self.system.coordinates.index(x)] for x in self.noncyclic]
             gyroscopic = any(sp.simplify(self.routhian.diff(v).xreplace({w: 0 for w in vn})) != 0 for v in vn)
-            if neg % 2 == 1 or (neg > 0 and not gyroscopic):
+            if neg is not None and (neg % 2 == 1 or (neg > 0 and not gyroscopic)):
                 stable = False
         return SteadyMotion(point=pt, momenta=mom, hessian=hess, stable=stable)
 
