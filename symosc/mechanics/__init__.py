@@ -7,12 +7,24 @@ Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
 from .constraints import ConstrainedForm, MinimalForm
 from .first_order import FirstOrderSystem
+from .hamilton_jacobi import (
+    ActionVariable,
+    HamiltonJacobiSeparation,
+    action_variable,
+    action_variable_numeric,
+    separate_hamilton_jacobi,
+)
 from .hamiltonian import HamiltonianSystem, poisson_bracket
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
 from .routh import RouthReduction, SteadyMotion, routh_reduction
 
 __all__ = [
+    "ActionVariable",
+    "HamiltonJacobiSeparation",
+    "action_variable",
+    "action_variable_numeric",
+    "separate_hamilton_jacobi",
     "CanonicalTransformation",
     "ConstrainedForm",
     "FirstOrderSystem",

@@ -41,9 +41,7 @@ def poisson_bracket(f: Any, g: Any, coordinates: Sequence[sp.Symbol], momenta: S
     f, g = sp.sympify(f), sp.sympify(g)
     if len(coordinates) != len(momenta):
         raise ModelError(f"{len(coordinates)} coordinates but {len(momenta)} momenta")
-    return sp.Add(
-        *(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q) for q, p in zip(coordinates, momenta, strict=True))
-    )
+    return sp.Add(*(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q) for q, p in zip(coordinates, momenta, strict=True)))
 
 
 class HamiltonianSystem:
@@ -159,9 +157,7 @@ class HamiltonianSystem:
     def vector_field(self) -> sp.Matrix:
         """``(dH/dp, -dH/dq + Q)``: the right-hand side for the state ``(q, p)``."""
         H = self._H
-        return sp.Matrix(
-            [H.diff(p) for p in self._p] + [-H.diff(q) + f for q, f in zip(self._q, self._Q, strict=True)]
-        )
+        return sp.Matrix([H.diff(p) for p in self._p] + [-H.diff(q) + f for q, f in zip(self._q, self._Q, strict=True)])
 
     def equations(self) -> list[sp.Eq]:
         """Hamilton's canonical equations as ``Eq(dot(q), dH/dp)``, then ``Eq(dot(p), -dH/dq + Q)``."""

@@ -168,9 +168,11 @@ class RouthReduction:
                     f"not a steady motion: dV_R/d{x.name} = {resid} at {pt} (it must vanish); adjust the point or "
                     "the cyclic momenta"
                 )
-        hess = sp.Matrix(len(self.noncyclic), len(self.noncyclic), lambda i, j: self._at(
-            VR.diff(self.noncyclic[i], self.noncyclic[j]), pt
-        ))
+        hess = sp.Matrix(
+            len(self.noncyclic),
+            len(self.noncyclic),
+            lambda i, j: self._at(VR.diff(self.noncyclic[i], self.noncyclic[j]), pt),
+        )
         hess = hess.applyfunc(sp.simplify)
         stable: bool | None = None
         if hess.is_positive_definite:

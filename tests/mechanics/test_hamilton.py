@@ -27,7 +27,9 @@ m, w, k, c, g, l = sp.symbols("m omega k c g l", positive=True)
 
 def elastic_pendulum():
     r = sp.Symbol("r", positive=True)
-    return LagrangianSystem(m / 2 * (dot(r) ** 2 + r**2 * dot(th) ** 2), k / 2 * (r - l) ** 2 - m * g * r * sp.cos(th), [r, th])
+    return LagrangianSystem(
+        m / 2 * (dot(r) ** 2 + r**2 * dot(th) ** 2), k / 2 * (r - l) ** 2 - m * g * r * sp.cos(th), [r, th]
+    )
 
 
 def rotating_frame():
@@ -143,7 +145,10 @@ def test_two_dof_polar_point_transformation():
     ct = canonical_transformation(-S, [x, y], [px, py], [r, ph], [pr, pphi], kind=3)
     assert ct.relations[0] == sp.Eq(x, r * sp.cos(ph))
     assert is_canonical(
-        [sp.sqrt(x**2 + y**2), sp.atan(y / x)], [(x * px + y * py) / sp.sqrt(x**2 + y**2), x * py - y * px], [x, y], [px, py]
+        [sp.sqrt(x**2 + y**2), sp.atan(y / x)],
+        [(x * px + y * py) / sp.sqrt(x**2 + y**2), x * py - y * px],
+        [x, y],
+        [px, py],
     )
 
 
