@@ -95,7 +95,7 @@ class RouthReduction:
     @cached_property
     def routhian(self) -> sp.Expr:
         """The Routh function ``R = L - sum p q'_c`` in the book's sign convention (Bulgakov (1954), eq. (3.110))."""
-        ic, inn, M, b, _, _, B, Ainv, w = self._blocks
+        _, inn, M, b, _, _, B, Ainv, w = self._blocks
         vn = sp.Matrix([self.system.velocities[i] for i in inn])
         Mr = M.extract(inn, inn) - B.T * Ainv * B
         gyro = b.extract(inn, [0]) + B.T * Ainv * w
