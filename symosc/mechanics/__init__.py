@@ -6,7 +6,9 @@ Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 
 from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
 from .constraints import ConstrainedForm, MinimalForm
+from .electromechanical import electromechanical_system
 from .first_order import FirstOrderSystem
+from .governor import GovernorStatics, governor_statics, stodola_time_constant, vyshnegradsky_cubic
 from .hamilton_jacobi import (
     ActionVariable,
     HamiltonJacobiSeparation,
@@ -18,24 +20,41 @@ from .hamiltonian import HamiltonianSystem, poisson_bracket
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
 from .routh import RouthReduction, SteadyMotion, routh_reduction
+from .variational import (
+    ForceDecomposition,
+    StabilityVerdict,
+    VariationalEquations,
+    decompose_forces,
+    variational_equations,
+)
 
 __all__ = [
     "ActionVariable",
     "CanonicalTransformation",
     "ConstrainedForm",
     "FirstOrderSystem",
+    "ForceDecomposition",
+    "GovernorStatics",
     "HamiltonJacobiSeparation",
     "HamiltonianSystem",
     "LagrangianSystem",
     "LinearModel",
     "MinimalForm",
     "RouthReduction",
+    "StabilityVerdict",
     "SteadyMotion",
+    "VariationalEquations",
     "action_variable",
     "action_variable_numeric",
     "canonical_transformation",
+    "decompose_forces",
+    "electromechanical_system",
+    "governor_statics",
     "is_canonical",
     "poisson_bracket",
     "routh_reduction",
     "separate_hamilton_jacobi",
+    "stodola_time_constant",
+    "variational_equations",
+    "vyshnegradsky_cubic",
 ]
