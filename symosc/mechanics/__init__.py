@@ -5,6 +5,7 @@ Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 """
 
 from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
+from .circuits import LoopEquations, loop_equations
 from .constraints import ConstrainedForm, MinimalForm
 from .electromechanical import electromechanical_system
 from .first_order import FirstOrderSystem
@@ -29,6 +30,8 @@ from .variational import (
 )
 
 __all__ = [
+    "LoopEquations",
+    "loop_equations",
     "ActionVariable",
     "CanonicalTransformation",
     "ConstrainedForm",
