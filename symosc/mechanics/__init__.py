@@ -30,8 +30,6 @@ from .variational import (
 )
 
 __all__ = [
-    "LoopEquations",
-    "loop_equations",
     "ActionVariable",
     "CanonicalTransformation",
     "ConstrainedForm",
@@ -42,6 +40,7 @@ __all__ = [
     "HamiltonianSystem",
     "LagrangianSystem",
     "LinearModel",
+    "LoopEquations",
     "MinimalForm",
     "RouthReduction",
     "StabilityVerdict",
@@ -54,6 +53,7 @@ __all__ = [
     "electromechanical_system",
     "governor_statics",
     "is_canonical",
+    "loop_equations",
     "poisson_bracket",
     "routh_reduction",
     "separate_hamilton_jacobi",
