@@ -75,6 +75,17 @@ class CanonicalTransformation:
         Old variables in terms of ``(u, v, t)`` (empty when SymPy cannot solve the relations).
     hamiltonian_shift : Expr
         ``dS/dt``: the new Hamiltonian is ``H' = H + dS/dt`` (eq. (3.136)).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> q, p, u, v = sp.symbols("q p u v", real=True)
+    >>> canonical_transformation(q * u, [q], [p], [u], [v], kind=1).forward
+    {u: p, v: -q}
+
+    See Also
+    --------
+    canonical_transformation, is_canonical
     """
 
     generating_function: sp.Expr

@@ -31,6 +31,10 @@ class LoopEquations:
         ``Z = B_l diag(z) B_l^T``.
     emf : Matrix
         ``B_l e``.
+
+    See Also
+    --------
+    loop_equations
     """
 
     loop_matrix: sp.Matrix

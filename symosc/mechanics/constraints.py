@@ -267,6 +267,21 @@ class MinimalForm:
         Dependent velocity symbol -> its expression in ``(q, u, t)``.
     mass_matrix, forcing : sympy.Matrix
         ``M_r = S^T M S`` and ``F_r = S^T (F - M (S' u + s0'))``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc import dot
+    >>> from symosc.mechanics import LagrangianSystem
+    >>> X, Y, th = sp.symbols("X Y theta", real=True)
+    >>> s = LagrangianSystem((dot(X)**2 + dot(Y)**2 + dot(th)**2) / 2, 0, [X, Y, th],
+    ...     nonholonomic=[-sp.sin(th) * dot(X) + sp.cos(th) * dot(Y)])
+    >>> s.constrained.minimal_form(independent=[X, th]).dependent
+    {Y_dot: X_dot*tan(theta)}
+
+    See Also
+    --------
+    ConstrainedForm.minimal_form, LagrangianSystem.reduce_coordinates
     """
 
     independent: tuple[sp.Symbol, ...]

@@ -60,6 +60,10 @@ def electromechanical_system(
     ...     elastance=sp.Matrix([[1 / C]]), resistance=sp.Matrix([[R]]), emf=[e])
     >>> s.equations()[1]
     L*q_ddot + R*q_dot - e + q/C
+
+    See Also
+    --------
+    LagrangianSystem, loop_equations
     """
     from .lagrange import LagrangianSystem
 

@@ -30,6 +30,10 @@ def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None =
     >>> J, K0, c, w = sp.symbols("J K0 c omega", positive=True)
     >>> stodola_time_constant(J, K0 - c * w, w)
     J/c
+
+    See Also
+    --------
+    governor_statics, vyshnegradsky_cubic
     """
     dK = sp.sympify(K).diff(omega)
     if steady is not None:
@@ -41,7 +45,11 @@ def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None =
 
 @dataclass(frozen=True)
 class GovernorStatics:
-    """``omega^2(z) = E(z)/A(z)`` and the stability index ``E' - A' omega^2`` (positive: stable)."""
+    """``omega^2(z) = E(z)/A(z)`` and the stability index ``E' - A' omega^2`` (positive: stable).
+
+    See Also
+    --------
+    governor_statics"""
 
     speed_squared: sp.Expr
     stability_index: sp.Expr
@@ -62,6 +70,10 @@ def governor_statics(E: Any, A: Any, z: sp.Symbol) -> GovernorStatics:
     >>> st = governor_statics(e0 + e1 * z, a0, z)
     >>> st.speed_squared, st.stability_index
     ((e0 + e1*z)/a0, e1)
+
+    See Also
+    --------
+    stodola_time_constant, vyshnegradsky_cubic
     """
     E, A = sp.sympify(E), sp.sympify(A)
     if sp.simplify(A) == 0:
@@ -83,6 +95,10 @@ def vyshnegradsky_cubic(U: Any, V2: Any, W: Any, delta: Any, N: Any = 0, symbol:
     >>> poly, cond = vyshnegradsky_cubic(U, V2, W, d)
     >>> cond
     U**2*W*delta - U*V2 > 0
+
+    See Also
+    --------
+    variational_equations, governor_statics
     """
     lam = symbol if symbol is not None else sp.Symbol("lambda")
     U, V2, W, delta, N = (sp.sympify(x) for x in (U, V2, W, delta, N))

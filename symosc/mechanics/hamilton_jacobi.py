@@ -53,6 +53,17 @@ class ActionVariable:
         ``nu = dh/dJ = 1 / J'(h)`` (angular frequency of the libration).
     period : Expr
         ``2 pi / nu = 2 pi dJ/dh``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> q, p = sp.symbols("q p", real=True)
+    >>> action_variable(p**2 / 2 + q**2 / 2, q, p).period
+    2*pi
+
+    See Also
+    --------
+    action_variable, action_variable_numeric
     """
 
     action: sp.Expr
@@ -143,6 +154,20 @@ def action_variable_numeric(
     ``turning_points`` are guesses of the ends of the libration (``U(q) = h`` there), refined with
     :func:`mpmath.findroot`; the substitution ``q = c + d sin s`` makes both integrands smooth (Gauss-Legendre).
     Raises :class:`ConvergenceError` when the quadrature error estimate exceeds ``10**(5 - dps)``.
+
+    Examples
+    --------
+    The oscillator ``H = (p^2 + q^2)/2`` at ``h = 1/2``: ``J = h = 1/2``, period ``2 pi``.
+
+    >>> import sympy as sp
+    >>> q, p = sp.symbols("q p", real=True)
+    >>> J, T = action_variable_numeric(p**2 / 2 + q**2 / 2, q, p, 0.5, {}, (-0.9, 0.9))
+    >>> round(float(J), 12), round(float(T), 12)
+    (0.5, 6.28318530718)
+
+    See Also
+    --------
+    action_variable
     """
     h = sp.Symbol("h_")
     q = coordinate
@@ -193,6 +218,17 @@ class HamiltonJacobiSeparation:
         Momentum -> ``dW/dq`` in terms of the coordinates, the constants and ``h``.
     characteristic_function : Expr
         ``W`` with the last quadrature left as an unevaluated ``Integral``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> q, p = sp.symbols("q p", positive=True)
+    >>> separate_hamilton_jacobi(p**2 / 2 + q, [q], [p]).characteristic_function
+    Integral(sqrt(2*h - 2*q), q)
+
+    See Also
+    --------
+    separate_hamilton_jacobi
     """
 
     constants: dict

@@ -43,6 +43,10 @@ class SteadyMotion:
     stable : bool or None
         True when the Hessian is positive definite (Routh's theorem: stable), False when it has a negative
         eigenvalue and no gyroscopic coupling can help (an odd number of them: Kelvin-Tait), None otherwise.
+
+    See Also
+    --------
+    RouthReduction.steady_motion, routh_reduction
     """
 
     point: dict
@@ -56,7 +60,18 @@ class SteadyMotion:
 
 
 class RouthReduction:
-    """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`."""
+    (
+        """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`."""
+        """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`.
+
+    Attributes ``routhian``, ``reduced_potential``, ``reduced_system`` and ``cyclic_velocities`` are computed on
+    first access; ``momenta`` are the symbols ``p_<q>`` of the cyclic momenta.
+
+    See Also
+    --------
+    routh_reduction, SteadyMotion
+    """
+    )
 
     def __init__(self, system: LagrangianSystem, cyclic: Sequence[sp.Symbol]):
         self.system = system

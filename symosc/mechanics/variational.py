@@ -45,6 +45,10 @@ class VariationalEquations:
         ``-phi(q_bar, q_bar', q_bar'', t)``; zero when the motion solves the equations (eq. (7.14)).
     coordinates : tuple of Symbol
         The variations ``y`` (named as the coordinates).
+
+    See Also
+    --------
+    variational_equations, decompose_forces
     """
 
     coefficients: tuple[sp.Matrix, sp.Matrix, sp.Matrix]
@@ -144,7 +148,15 @@ def variational_equations(
 
 @dataclass(frozen=True)
 class StabilityVerdict:
-    """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``."""
+    (
+        """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``."""
+        """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``.
+
+    See Also
+    --------
+    ForceDecomposition.stability
+    """
+    )
 
     stable: bool | None
     asymptotically: bool
@@ -158,7 +170,11 @@ class StabilityVerdict:
 @dataclass(frozen=True)
 class ForceDecomposition:
     """``A`` inertia, ``N`` dissipative, ``G`` gyroscopic, ``H`` potential, ``J`` non-conservative positional
-    (circulatory) matrices: ``N, H`` symmetric, ``G, J`` skew (Bulgakov (1954), eqs. (7.75), (7.81))."""
+    (circulatory) matrices: ``N, H`` symmetric, ``G, J`` skew (Bulgakov (1954), eqs. (7.75), (7.81)).
+
+    See Also
+    --------
+    decompose_forces"""
 
     A: sp.Matrix
     N: sp.Matrix
