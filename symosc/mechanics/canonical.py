@@ -163,7 +163,8 @@ def canonical_transformation(
 
         Examples
         --------
-        The harmonic oscillator's action-angle variables (Goldstein, Classical Mechanics, §9.3): ``S = (w q^2 / 2) cot u``.
+        The harmonic oscillator's action-angle variables (Goldstein, Classical Mechanics, §9.3):
+    ``S = (w q^2 / 2) cot u``.
 
         >>> import sympy as sp
         >>> q, p, u, v = sp.symbols("q p u v", positive=True)
