@@ -124,3 +124,33 @@ def test_bad_input():
     red = routh_reduction(central(), [ph])
     with pytest.raises(ModelError, match="missing"):
         red.steady_motion({}, {})
+
+
+def test_gyroscopic_stabilization_of_a_gimballed_rotor():
+    """A rotor (cyclic psi) on a gimbal (a, b) with inverted stiffness: the Routh function has a gyroscopic term
+    G = [[0, -p], [p, 0]] at rest (§7.9) and the steady state is stable iff p^2 > 4 A k, from
+    det [[A s^2 - k, -p s], [p s, A s^2 - k]] = 0 (Merkin, Introduction to the Theory of Stability, §6.5)."""
+    from symosc.mechanics import decompose_forces
+
+    a, b, psi = sp.symbols("a b psi", real=True)
+    A, Cr, kk = sp.symbols("A C k", positive=True)
+    T = A / 2 * (dot(a) ** 2 + dot(b) ** 2) + Cr / 2 * (dot(psi) + sp.sin(a) * dot(b)) ** 2
+    s = LagrangianSystem(T, -kk / 2 * (a**2 + b**2), [a, b, psi])
+    red = routh_reduction(s, [psi])
+    p = red.momenta[0]
+    sm = red.steady_motion({a: 0, b: 0}, {p: 3})
+    assert sm.stable is None  # two negative stiffnesses: an even degree of instability, gyroscopic forces may help
+    for pv, stable in ((3, True), (1, False)):
+        lin = red.small_oscillations({a: 0, b: 0}, {p: pv})
+        assert sp.simplify(lin.D - sp.Matrix([[0, -pv], [pv, 0]])) == sp.zeros(2, 2)
+        fd = decompose_forces(lin.M, lin.D, lin.K)
+        verdict = fd.stability({"A": 1, "k": 1, "C": 1})
+        assert verdict.stable is None and "gyroscopic" in verdict.reason
+        Mn, Dn, Kn = (np.array(mm.xreplace({A: 1, kk: 1, Cr: 1}), dtype=float) for mm in (lin.M, lin.D, lin.K))
+        lam = np.linalg.eigvals(
+            np.vstack([np.hstack([np.zeros((2, 2)), np.eye(2)]), -np.linalg.solve(Mn, np.hstack([Kn, Dn]))])
+        )
+        assert bool(np.abs(lam.real).max() < 1e-9) == stable
+        # closed form: s^2 = (-(p^2 - 2) +- sqrt((p^2 - 2)^2 - 4)) / 2 for A = k = 1
+        roots = np.roots([1, pv**2 - 2, 1]).astype(complex)
+        assert np.allclose(np.sort(np.abs(lam) ** 2), np.sort(np.repeat(np.abs(roots), 2)), rtol=1e-9)
