@@ -321,3 +321,19 @@ def test_dae_and_index_reduced_forms_and_numeric_accelerations():
     assert np.allclose(mult, np.array(lam.xreplace(subs), dtype=float).ravel(), rtol=1e-12)
     assert np.max(np.abs(c.residuals(vals, 0.0, state))) < 1e-14
     assert np.max(np.abs(c.residuals(vals, 0.0, [3.0, 0.0, 0.0, 1.0]))) > 1
+
+
+def test_dynamicsymbols_input_and_pickling():
+    """Coordinates and constraints given as dynamicsymbols give the same augmented system; results pickle."""
+    import pickle
+
+    xd, yd = dynamicsymbols("x y")
+    s = LagrangianSystem(
+        m / 2 * (xd.diff(t) ** 2 + yd.diff(t) ** 2), m * g * yd, [xd, yd], constraints=[xd**2 + yd**2 - l**2]
+    )
+    ref = cartesian_pendulum()
+    assert s.constrained.augmented_mass_matrix == ref.constrained.augmented_mass_matrix
+    assert s.constrained.augmented_forcing == ref.constrained.augmented_forcing
+    mf = ref.constrained.minimal_form()
+    back = pickle.loads(pickle.dumps(mf))
+    assert back.mass_matrix == mf.mass_matrix and back.dependent == mf.dependent

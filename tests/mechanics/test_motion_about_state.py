@@ -192,3 +192,23 @@ def test_bridge_loop_equations_against_nodal_analysis():
     assert sym.is_reciprocal
     active = type(sym)(sym.loop_matrix, sym.impedance + sp.Matrix([[0, 0], [R1, 0]]), sym.emf)
     assert not active.is_reciprocal
+
+
+def test_result_objects_pickle_and_print():
+    import pickle
+
+    from symosc.mechanics import action_variable, canonical_transformation, loop_equations
+
+    p_, u_, v_ = sp.symbols("p u v", real=True)
+    objs = [
+        action_variable(p_**2 / 2 + q**2 / 2, q, p_),
+        canonical_transformation(q * u_, [q], [p_], [u_], [v_], kind=1),
+        decompose_forces(sp.eye(1), sp.Matrix([[c]]), sp.Matrix([[k]])),
+        loop_equations([(0, 1, R, e), (1, 0, R)]),
+        variational_equations([ddot(x) + k * x], [x]),
+        governor_statics(k + c * z, sp.Integer(1), z),
+    ]
+    for o in objs:
+        back = pickle.loads(pickle.dumps(o))
+        assert back == o
+        assert type(o).__name__ in repr(o)
