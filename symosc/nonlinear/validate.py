@@ -21,6 +21,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError, ParameterError
+from .._validate import check_finite, check_positive
 from ..numeric import compile as _compile
 
 __all__ = [
@@ -270,6 +271,7 @@ def numeric_period(
     >>> round(numeric_period(sp.Integer(0) * sp.Symbol("x"), 0.3, 1.0), 10)
     6.2831853072
     """
+    eps, A, rtol = check_finite("eps", eps), check_finite("A", A), check_positive("rtol", rtol)
     rhs, jac = _rhs_functions(sp.sympify(f), x, sp.Symbol("_v_unused"), eps_symbol, "numpy")
     T, _, _ = _half_swings(rhs, jac, float(eps), float(A), "DOP853", rtol, 1e3)
     return float(T)
@@ -414,6 +416,7 @@ def validate_lindstedt(ls: Any, eps: float, A: float, *, orders: Any = None, rto
     >>> val.rows[0]["frequency_error"] < 1e-9
     True
     """
+    eps, A = check_finite("eps", eps), check_finite("A", A)
     T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps, rtol=rtol)
     om_num = 2 * np.pi / T
     orders = [ls.order] if orders is None else [int(o) for o in orders]
