@@ -106,9 +106,7 @@ def check_known_names(what: str, given: Iterable[Any], valid: Iterable[Any]) -> 
     unknown = [g for g in given if str(g) not in valid_names]
     if unknown:
         hints = "".join(_suggest(u, valid_names) for u in unknown[:1])
-        raise ParameterError(
-            f"unknown {what} {sorted(map(str, unknown))}{hints}; valid names: {sorted(valid_names)}"
-        )
+        raise ParameterError(f"unknown {what} {sorted(map(str, unknown))}{hints}; valid names: {sorted(valid_names)}")
 
 
 def check_finite_array(name: str, value: Any, *, ndim: int | None = None, complex_ok: bool = False) -> np.ndarray:
@@ -118,7 +116,9 @@ def check_finite_array(name: str, value: Any, *, ndim: int | None = None, comple
     try:
         arr = np.asarray(value, dtype=complex if complex_ok else float)
     except (TypeError, ValueError) as exc:
-        raise ParameterError(f"{name} must be an array of {'complex' if complex_ok else 'real'} numbers: {exc}") from exc
+        raise ParameterError(
+            f"{name} must be an array of {'complex' if complex_ok else 'real'} numbers: {exc}"
+        ) from exc
     if ndim is not None and arr.ndim != ndim:
         raise ParameterError(f"{name} must have {ndim} dimension(s), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from ..errors import ModelError
+from .._validate import check_known_names
+from ..errors import ModelError, ParameterError
 from ..numeric import compile
 from ..symbols import sort_symbols, t
 from . import _terms
@@ -124,6 +125,14 @@ class LinearModel:
 
     def matrices(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Numeric ``(M, D, K0)``; array-valued parameters give stacks of shape ``(..., n, n)``."""
+        if not isinstance(values, Mapping):
+            raise ParameterError(
+                f"values must be a mapping of parameter names to numbers, got {type(values).__name__}; "
+                f"parameters: {[s.name for s in self.parameters]}"
+            )
+        check_known_names(
+            "parameter name(s)", [getattr(k, "name", k) for k in values], [s.name for s in self.parameters]
+        )
         n, fn = self._compiled
         out = fn.call(values)
         return out[..., :, :n], out[..., :, n : 2 * n], out[..., :, 2 * n :]

@@ -20,8 +20,8 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ..errors import ConvergenceError, ParameterError
 from .._validate import check_finite, check_positive
+from ..errors import ConvergenceError, ParameterError
 from ..numeric import compile as _compile
 
 __all__ = [
