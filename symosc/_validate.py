@@ -18,6 +18,7 @@ from .errors import ParameterError
 __all__ = [
     "check_bool",
     "check_choice",
+    "check_complete_names",
     "check_finite",
     "check_finite_array",
     "check_int",
@@ -107,6 +108,24 @@ def check_known_names(what: str, given: Iterable[Any], valid: Iterable[Any]) -> 
     if unknown:
         hints = "".join(_suggest(u, valid_names) for u in unknown[:1])
         raise ParameterError(f"unknown {what} {sorted(map(str, unknown))}{hints}; valid names: {sorted(valid_names)}")
+
+
+def check_complete_names(what: str, given: Iterable[Any], needed: Iterable[Any]) -> None:
+    """Raise when a needed name is missing, listing the unknown names given (with the closest match).
+
+    Extra names are harmless when every needed name is present (a shared dict of values); when one is missing, an
+    unknown name given instead is most likely a misspelling, and the error says so.
+    """
+    given_names = [str(getattr(g, "name", g)) for g in given]
+    needed_names = [str(getattr(v, "name", v)) for v in needed]
+    missing = sorted(set(needed_names) - set(given_names))
+    if not missing:
+        return
+    unknown = [g for g in given_names if g not in needed_names]
+    hints = [f"{u!r} -> {close[0]!r}" for u in unknown if (close := difflib.get_close_matches(u, missing, n=1))]
+    extra = f"; unknown {what} given: {', '.join(sorted(unknown))}" if unknown else ""
+    hint = f" (misspelt? {', '.join(hints)})" if hints else ""
+    raise ParameterError(f"missing values for: {', '.join(missing)}{extra}{hint}; valid names: {sorted(needed_names)}")
 
 
 def check_finite_array(name: str, value: Any, *, ndim: int | None = None, complex_ok: bool = False) -> np.ndarray:

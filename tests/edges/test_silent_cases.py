@@ -133,7 +133,9 @@ def test_pendulum_and_linear_model_arguments():
     with pytest.raises(ParameterError, match="inverted"):
         n_link_pendulum(2, inverted="yes")
     lin = n_link_pendulum(2).linearize()
-    with pytest.raises(ParameterError, match=r"did you mean 'g'\?.*valid names"):
+    with pytest.raises(
+        ParameterError, match=r"missing values for: g; unknown .* gg \(misspelt\? 'gg' -> 'g'\); valid names"
+    ):
         lin.natural_frequencies({"m1": 1, "m2": 1, "l1": 1, "l2": 1, "gg": 1})
     with pytest.raises(ParameterError, match="mapping"):
         lin.natural_frequencies(None)
@@ -158,3 +160,26 @@ def test_prony_oversampled_noisy_record(snr_db):
         assert est.details["decimate"] > 1
         np.testing.assert_allclose(est.frequencies, [3.0, 7.0], rtol=2e-3)
         np.testing.assert_allclose(est.damping, [0.1, 0.2], atol=0.01)
+
+
+def test_ill_conditioned_rigid_chain_warns():
+    """A rigid 3-link chain whose last link is 1e-6 of the others: the whitening by the mass matrix loses digits;
+    an AccuracyWarning says so, while an ordinary chain stays silent."""
+    from symosc.errors import AccuracyWarning
+    from symosc.models import n_link_pendulum
+
+    lin = n_link_pendulum(3, links="rigid").linearize()
+
+    def values(r):
+        return {"m1": 1, "m2": 1, "m3": r, "l1": 1, "l2": 1, "lc1": 0.5, "lc2": 0.5, "lc3": r / 2, "I1": 1 / 12,
+                "I2": 1 / 12, "I3": r**3 / 12, "g": 9.81}  # fmt: skip
+
+    with pytest.warns(AccuracyWarning, match="ill-conditioned"):
+        lin.natural_frequencies(values(1e-6))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        w = lin.natural_frequencies(values(0.5))
+    M, _, K = lin.matrices(values(0.5))
+    import scipy.linalg as sla
+
+    np.testing.assert_allclose(w, np.sqrt(sla.eigh(K, M, eigvals_only=True)), rtol=1e-10)
