@@ -12,8 +12,11 @@ from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
+from sympy import Basic as sp_Basic
+from sympy.polys.polyerrors import BasePolynomialError
 
 from .errors import ParameterError
+from .errors import SymoscError as SymoscError_
 
 __all__ = [
     "check_bool",
@@ -143,3 +146,121 @@ def check_finite_array(name: str, value: Any, *, ndim: int | None = None, comple
     if not np.all(np.isfinite(arr)):
         raise ParameterError(f"{name} must contain only finite numbers (found nan or inf)")
     return arr
+
+
+# ------------------------------------------------------------------------------------------ boundary guard
+#: exceptions that must not leave the public API when an argument is invalid
+_GENERIC = (TypeError, ValueError, AttributeError, ZeroDivisionError, IndexError, KeyError, OverflowError,
+            ArithmeticError, LookupError, NotImplementedError, MemoryError, RecursionError,
+            BasePolynomialError)  # fmt: skip
+_NUMERIC_WORDS = ("float", "int", "Any", "complex", "Number", "Real", "Expr", "ArrayLike", "ndarray", "Basic")
+
+
+def _suspicious(value: Any, annotation: str) -> str | None:
+    """Why ``value`` looks invalid for a parameter annotated ``annotation`` (None when it looks fine)."""
+    ann = str(annotation)
+    if value is None:
+        return "None"
+    if isinstance(value, str | bytes):
+        return f"the string {_show(value)}"
+    if isinstance(value, bool | np.bool_):
+        return None
+    if isinstance(value, numbers.Number):
+        try:
+            f = complex(value)
+        except (TypeError, ValueError):
+            return None
+        if not (np.isfinite(f.real) and np.isfinite(f.imag)):
+            return f"the non-finite number {value}"
+        if f == 0:
+            return "zero"
+        if f.imag == 0 and f.real < 0:
+            return f"the negative number {value}"
+        if "int" in ann and "float" not in ann and f.real != int(f.real):
+            return f"the non-integer {value}"
+        if callable_expected(ann):
+            return f"the number {value} (a callable is expected)"
+        if not any(w in ann for w in _NUMERIC_WORDS):
+            return f"the number {value} (expected {ann})"
+        return None
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
+            return "an array with nan/inf"
+        return f"an array of shape {value.shape}"
+    return None
+
+
+def callable_expected(annotation: str) -> bool:
+    return "Callable" in annotation and "Expr" not in annotation and "Any" not in annotation
+
+
+def guard(fn):
+    """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
+    raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
+    of the wrong shape) becomes a :class:`ParameterError` naming those arguments (the original is chained)."""
+    import functools
+    import inspect
+
+    if getattr(fn, "__symosc_guarded__", False):
+        return fn
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        return fn
+    params = sig.parameters
+    name = fn.__name__
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        try:
+            bound = sig.bind(*args, **kwargs)
+        except TypeError as exc:
+            raise ParameterError(f"{name}(): {exc}") from None
+        for pname, value in bound.arguments.items():
+            p = params[pname]
+            if value is None and p.default is not None and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                ann = str(p.annotation)
+                typed = p.annotation is not inspect.Parameter.empty
+                if typed and not any(k in ann for k in ("None", "Any", "Optional")):
+                    raise ParameterError(f"{name}(): {pname} must not be None (expected {ann})")
+        try:
+            return fn(*args, **kwargs)
+        except SymoscError_:
+            raise
+        except _GENERIC as exc:
+            bad = []
+            for pname, value in bound.arguments.items():
+                p = params[pname]
+                if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                    continue
+                why = _suspicious(value, str(p.annotation))
+                if why is None and not isinstance(value, sp_Basic) and f"'{type(value).__name__}' object" in str(exc):
+                    why = f"a {type(value).__name__} ({_show(value)})"  # the error is about this argument's type
+                if why is not None:
+                    bad.append(f"{pname} = {why}")
+            if not bad:
+                raise
+            raise ParameterError(
+                f"{name}(): invalid argument(s): {'; '.join(bad)} ({type(exc).__name__}: {str(exc)[:200]}); "
+                f"see help({name}) for the expected values"
+            ) from exc
+
+    wrapper.__symosc_guarded__ = True  # type: ignore[attr-defined]
+    return wrapper
+
+
+def guard_public_api(package: str) -> None:
+    """Wrap every function of ``package.__all__`` with :func:`guard`, in the package and its defining module."""
+    import inspect
+    import sys
+
+    pkg = sys.modules[package]
+    for attr in getattr(pkg, "__all__", []):
+        obj = getattr(pkg, attr, None)
+        if not inspect.isfunction(obj) or getattr(obj, "__symosc_guarded__", False):
+            continue
+        wrapped = guard(obj)
+        setattr(pkg, attr, wrapped)
+        home = sys.modules.get(obj.__module__)
+        if home is not None and getattr(home, obj.__name__, None) is obj:
+            setattr(home, obj.__name__, wrapped)

@@ -149,3 +149,8 @@ __all__ = [
     "vibrational_averaging_of",
     "vibrational_stiffness",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)
