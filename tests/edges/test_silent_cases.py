@@ -183,3 +183,19 @@ def test_ill_conditioned_rigid_chain_warns():
     import scipy.linalg as sla
 
     np.testing.assert_allclose(w, np.sqrt(sla.eigh(K, M, eigvals_only=True)), rtol=1e-10)
+
+
+def test_very_large_series_orders_are_refused_up_front():
+    """Order 500 used to run for minutes (Mathieu order 300: 72 s; limit cycle order 100: 65 s)."""
+    from symosc.nonlinear import limit_cycle
+    from symosc.periodic import mathieu_series_a
+
+    x, v = sp.symbols("x v")
+    with pytest.raises(ParameterError, match="supported range"):
+        mathieu_series_a(0, 500)
+    with pytest.raises(ParameterError, match="supported range"):
+        limit_cycle((1 - x**2) * v, 500)
+    # inside the range the exact coefficients are right: a_0(q) = -q^2/2 + 7 q^4/128 - ... (DLMF 28.6.1)
+    q = sp.Symbol("q")
+    a0 = sp.expand(mathieu_series_a(0, 6, symbol=q))
+    assert a0 == -(q**2) / 2 + sp.Rational(7, 128) * q**4 - sp.Rational(29, 2304) * q**6
