@@ -17,6 +17,7 @@ from .averaging_ndof import (
     dry_friction_ratio,
     dry_friction_torus_average,
 )
+from .conservative import Equilibrium, classify_equilibrium, libration_period, rotation_period
 from .delay import (
     DelayRoots,
     QuasiPolynomial,
@@ -87,6 +88,7 @@ __all__ = [
     "CoulombMotion",
     "DelayRoots",
     "EpsSeries",
+    "Equilibrium",
     "FastAveragedSystem",
     "FlywheelDesign",
     "Fold",
@@ -114,6 +116,7 @@ __all__ = [
     "backlash_critical_gap",
     "callender_hartree_porter_optimum",
     "characteristic_quasipolynomial",
+    "classify_equilibrium",
     "clock_escapement",
     "coulomb_oscillator",
     "count_roots",
@@ -123,6 +126,7 @@ __all__ = [
     "fast_averaged_system",
     "half_swing_map",
     "harmonic_linearisation",
+    "libration_period",
     "limit_cycle",
     "lindstedt",
     "linearisation_boundary",
@@ -137,6 +141,7 @@ __all__ = [
     "quasi_polynomial",
     "quasi_polynomial_roots",
     "radinger_flywheel",
+    "rotation_period",
     "self_oscillations",
     "servo_characteristic",
     "servo_equations",
