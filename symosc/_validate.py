@@ -194,6 +194,21 @@ def callable_expected(annotation: str) -> bool:
     return "Callable" in annotation and "Expr" not in annotation and "Any" not in annotation
 
 
+_MIXED: dict[type, type] = {}
+
+
+def _parameter_error_like(exc: BaseException) -> type:
+    """ParameterError that is also an instance of the original exception's class (``except KeyError`` keeps
+    working for callers that relied on it), when Python allows the mix; plain ParameterError otherwise."""
+    kind = type(exc)
+    if kind not in _MIXED:
+        try:
+            _MIXED[kind] = type("ParameterError", (ParameterError, kind), {"__module__": "symosc.errors"})
+        except TypeError:  # incompatible instance layouts
+            _MIXED[kind] = ParameterError
+    return _MIXED[kind]
+
+
 def guard(fn):
     """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
     raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
@@ -234,13 +249,15 @@ def guard(fn):
                 if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
                     continue
                 why = _suspicious(value, str(p.annotation))
-                if why is None and not isinstance(value, sp_Basic) and f"'{type(value).__name__}' object" in str(exc):
+                tname = type(value).__name__
+                named = f"'{tname}' object" in str(exc) or f"type '{tname}'" in str(exc)
+                if why is None and not isinstance(value, sp_Basic) and named:
                     why = f"a {type(value).__name__} ({_show(value)})"  # the error is about this argument's type
                 if why is not None:
                     bad.append(f"{pname} = {why}")
             if not bad:
                 raise
-            raise ParameterError(
+            raise _parameter_error_like(exc)(
                 f"{name}(): invalid argument(s): {'; '.join(bad)} ({type(exc).__name__}: {str(exc)[:200]}); "
                 f"see help({name}) for the expected values"
             ) from exc

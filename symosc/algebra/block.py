@@ -221,6 +221,8 @@ def cyclic_block_determinant(g: Sequence[Any], d: Sequence[Any]) -> sp.Expr:
     --------
     block_determinant
     """
+    if not isinstance(g, Sequence) or not isinstance(d, Sequence):
+        raise ParameterError(f"g and d must be sequences of matrices, got {type(g).__name__} and {type(d).__name__}")
     if len(g) != len(d) or len(g) < 2:
         raise ParameterError(f"g and d must have the same length >= 2, got {len(g)} and {len(d)}")
     gs = [as_square_matrix(x, f"g{k + 1}") for k, x in enumerate(g)]
