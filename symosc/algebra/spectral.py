@@ -211,6 +211,13 @@ def _exact_roots(A: sp.Matrix) -> list[tuple[sp.Expr, int]]:
     _, factors = sp.factor_list(poly.as_expr(), poly.gen)
     for fac, mult in factors:
         pf = sp.Poly(fac, poly.gen)
+        if pf.degree() >= 3 and pf.free_symbols - {poly.gen}:
+            raise ModelError(
+                f"det(λE - A) has an irreducible factor of degree {pf.degree()} with symbolic coefficients; its roots "
+                "are Cardano/Ferrari radicals and the projectors built from them grow beyond a practical size (a "
+                "generic symbolic 3x3 runs for minutes). Substitute numbers for some parameters (exact numbers "
+                "give exact CRootOf roots), or use sympy's eigenvals for the roots alone"
+            )
         if pf.degree() >= 3 and not A.free_symbols and pf.get_domain().is_Exact:
             rts = {}
             for r in pf.all_roots():

@@ -199,3 +199,17 @@ def test_very_large_series_orders_are_refused_up_front():
     q = sp.Symbol("q")
     a0 = sp.expand(mathieu_series_a(0, 6, symbol=q))
     assert a0 == -(q**2) / 2 + sp.Rational(7, 128) * q**4 - sp.Rational(29, 2304) * q**6
+
+
+def test_generic_symbolic_3x3_spectral_decomposition_refused_up_front():
+    """A generic symbolic 3x3 used to run for minutes; the refusal names the cause (a symbolic cubic factor), while
+    a symbolic matrix whose characteristic polynomial splits into low-degree factors still works."""
+    from symosc.algebra import spectral_decomposition
+    from symosc.errors import ModelError
+
+    a, b, c, d, e, f, g, h, i = sp.symbols("a:i")
+    with pytest.raises(ModelError, match="degree 3 with symbolic coefficients"):
+        spectral_decomposition(sp.Matrix([[a, b, c], [d, e, f], [g, h, i]]))
+    w = sp.Symbol("w", positive=True)
+    S = spectral_decomposition(sp.Matrix([[0, 1, 0], [-(w**2), 0, 0], [0, 0, a]]))
+    assert sp.simplify(sum(S.projectors, sp.zeros(3, 3)) - sp.eye(3)) == sp.zeros(3, 3)
