@@ -55,6 +55,7 @@ def sort_symbols(symbols: Iterable[sp.Symbol]) -> tuple[sp.Symbol, ...]:
     """
     return tuple(sorted(set(symbols), key=natural_key))
 
+
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 from ._validate import guard_public_api as _guard_public_api  # noqa: E402
 
