@@ -62,6 +62,7 @@ from .piecewise import (
 )
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
+from .point_map import PointMapFixedPoint, point_map_fixed_point
 from .special_systems import (
     ClockEscapement,
     FlywheelDesign,
@@ -102,6 +103,7 @@ __all__ = [
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
+    "PointMapFixedPoint",
     "QuasiPolynomial",
     "RadiusEstimate",
     "SeriesValidation",
@@ -135,6 +137,7 @@ __all__ = [
     "numeric_orbit",
     "numeric_period",
     "periodic_solution_ndof",
+    "point_map_fixed_point",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",
