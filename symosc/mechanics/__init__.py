@@ -61,3 +61,8 @@ __all__ = [
     "variational_equations",
     "vyshnegradsky_cubic",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

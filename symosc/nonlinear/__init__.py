@@ -17,6 +17,7 @@ from .averaging_ndof import (
     dry_friction_ratio,
     dry_friction_torus_average,
 )
+from .conservative import Equilibrium, classify_equilibrium, libration_period, rotation_period
 from .delay import (
     DelayRoots,
     QuasiPolynomial,
@@ -61,6 +62,7 @@ from .piecewise import (
 )
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
+from .point_map import PointMapFixedPoint, point_map_fixed_point
 from .special_systems import (
     ClockEscapement,
     FlywheelDesign,
@@ -87,6 +89,7 @@ __all__ = [
     "CoulombMotion",
     "DelayRoots",
     "EpsSeries",
+    "Equilibrium",
     "FastAveragedSystem",
     "FlywheelDesign",
     "Fold",
@@ -100,6 +103,7 @@ __all__ = [
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
+    "PointMapFixedPoint",
     "QuasiPolynomial",
     "RadiusEstimate",
     "SeriesValidation",
@@ -114,6 +118,7 @@ __all__ = [
     "backlash_critical_gap",
     "callender_hartree_porter_optimum",
     "characteristic_quasipolynomial",
+    "classify_equilibrium",
     "clock_escapement",
     "coulomb_oscillator",
     "count_roots",
@@ -123,6 +128,7 @@ __all__ = [
     "fast_averaged_system",
     "half_swing_map",
     "harmonic_linearisation",
+    "libration_period",
     "limit_cycle",
     "lindstedt",
     "linearisation_boundary",
@@ -131,12 +137,14 @@ __all__ = [
     "numeric_orbit",
     "numeric_period",
     "periodic_solution_ndof",
+    "point_map_fixed_point",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",
     "quasi_polynomial",
     "quasi_polynomial_roots",
     "radinger_flywheel",
+    "rotation_period",
     "self_oscillations",
     "servo_characteristic",
     "servo_equations",
@@ -149,3 +157,8 @@ __all__ = [
     "vibrational_averaging_of",
     "vibrational_stiffness",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)
