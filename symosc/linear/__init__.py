@@ -1,7 +1,7 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
-  :func:`periodic_forced_response`, :func:`volterra_march`.
+  :func:`phase_portrait`, :func:`periodic_forced_response`, :func:`volterra_march`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
@@ -63,6 +63,7 @@ from .one_dof import (
     stability_coefficients,
     volterra_march,
 )
+from .phase_plane import PhasePortrait, phase_portrait
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .regions import StabilityRegion, robust_boundary, stability_region
 from .routh import RouthArray, routh_array
@@ -81,6 +82,7 @@ __all__ = [
     "ModalAnalysis",
     "NormalForm",
     "NyquistResult",
+    "PhasePortrait",
     "PowerIteration",
     "QuadraticFormVerdict",
     "RouthArray",
@@ -115,6 +117,7 @@ __all__ = [
     "modal_normal_form",
     "nyquist",
     "periodic_forced_response",
+    "phase_portrait",
     "power_iteration",
     "rayleigh_quotient",
     "resonant_particular",
