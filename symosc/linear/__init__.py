@@ -1,7 +1,8 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
-  :func:`phase_portrait`, :func:`periodic_forced_response`, :func:`volterra_march`.
+  :func:`phase_portrait`, :func:`periodic_forced_response`, :func:`volterra_march`;
+  :func:`optimize_regulator`, :func:`equal_stability_lines`; with delay :func:`delay_equal_stability_lines`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
@@ -37,6 +38,7 @@ from .degree import (
     shifted_coefficients,
     stability_degree,
 )
+from .delay_lines import DelayStabilityLines, delay_equal_stability_lines
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
 from .fd_systems import (
     Compatibility,
@@ -66,6 +68,7 @@ from .one_dof import (
 from .phase_plane import PhasePortrait, phase_portrait
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .regions import StabilityRegion, robust_boundary, stability_region
+from .regulator import EqualStabilityLines, RegulatorOptimum, equal_stability_lines, optimize_regulator
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 
@@ -73,7 +76,9 @@ __all__ = [
     "Compatibility",
     "CubicOptimum",
     "DPartition",
+    "DelayStabilityLines",
     "DiscriminantCurve",
+    "EqualStabilityLines",
     "FrequencyBounds",
     "FrequencyResponse",
     "FundamentalSolutions",
@@ -85,6 +90,7 @@ __all__ = [
     "PhasePortrait",
     "PowerIteration",
     "QuadraticFormVerdict",
+    "RegulatorOptimum",
     "RouthArray",
     "StabilityCoefficients",
     "StabilityDegree",
@@ -100,9 +106,11 @@ __all__ = [
     "conservative_modes",
     "constrained_eigenvalues",
     "d_partition",
+    "delay_equal_stability_lines",
     "discriminant_curve",
     "dunkerley",
     "dunkerley_bounds",
+    "equal_stability_lines",
     "frequency_response",
     "fundamental_solutions",
     "hurwitz",
@@ -116,6 +124,7 @@ __all__ = [
     "mean_power",
     "modal_normal_form",
     "nyquist",
+    "optimize_regulator",
     "periodic_forced_response",
     "phase_portrait",
     "power_iteration",
