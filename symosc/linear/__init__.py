@@ -2,7 +2,8 @@
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
   :func:`phase_portrait`, :func:`periodic_forced_response`, :func:`volterra_march`;
-  :func:`optimize_regulator`, :func:`equal_stability_lines`; with delay :func:`delay_equal_stability_lines`.
+  :func:`optimize_regulator`, :func:`equal_stability_lines`; with delay
+  :func:`delay_equal_stability_lines`, :func:`delay_response_series`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
   :func:`modal_normal_form`, :func:`frequency_response`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
@@ -39,6 +40,7 @@ from .degree import (
     stability_degree,
 )
 from .delay_lines import DelayStabilityLines, delay_equal_stability_lines
+from .delay_response import DelayResponseSeries, delay_response_series
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
 from .fd_systems import (
     Compatibility,
@@ -76,6 +78,7 @@ __all__ = [
     "Compatibility",
     "CubicOptimum",
     "DPartition",
+    "DelayResponseSeries",
     "DelayStabilityLines",
     "DiscriminantCurve",
     "EqualStabilityLines",
@@ -107,6 +110,7 @@ __all__ = [
     "constrained_eigenvalues",
     "d_partition",
     "delay_equal_stability_lines",
+    "delay_response_series",
     "discriminant_curve",
     "dunkerley",
     "dunkerley_bounds",
