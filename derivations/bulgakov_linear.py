@@ -23,6 +23,7 @@ from symosc.linear import (
     compatibility,
     conservative_modes,
     d_partition,
+    delay_equal_stability_lines,
     discriminant_curve,
     dunkerley,
     dunkerley_bounds,
@@ -32,11 +33,14 @@ from symosc.linear import (
     impulse_response,
     influence_matrix,
     nyquist,
+    optimize_regulator,
     power_iteration,
     rayleigh_quotient,
     stability_coefficients,
     stability_degree,
     string_frequencies,
+    two_dof_beats,
+    two_dof_system,
     vyshnegradsky_diagram,
     worst_case_gain,
 )
@@ -74,7 +78,21 @@ def section_ch4() -> dict:
     alphas = np.array([stability_coefficients(1.0, k, 2.0).alpha for k in k1])
     best = float(k1[alphas.argmax()])
     _row("α-optimal k1 (k0 = 1, k2 = 2)", "2√(k0k2) = 2.8284", best, "grid maximum of α(k1)")
-    return {"inv_beta": 1 / c.beta, "inv_gamma1": 1 / c.gamma1, "inv_gamma0": 1 / c.gamma0, "alpha_opt_k1": best}
+    opt = optimize_regulator(1.0, k2=2.0, criterion="alpha")
+    _row("optimize_regulator, α (4.97)", "k1 = 2√(k0k2) = 2.8284", opt.k1, opt.kind)
+    g0 = optimize_regulator(1.0, k2=2.0, criterion="gamma0")
+    _row("optimize_regulator, servo γ0 (4.98)", "k1 = √(k0k2), γ0 = √(k2/k0)", (g0.k1, g0.value), g0.kind)
+    chp = delay_equal_stability_lines("callender-hartree-porter", 2 - np.sqrt(2))
+    _row("§4.16 cusp at s* = 2 - √2 (4.138)", "ρ* = 0.46116, σ* = 0.07913", chp.cusp, "σ* = 0.079122 unrounded")
+    return {
+        "inv_beta": 1 / c.beta,
+        "inv_gamma1": 1 / c.gamma1,
+        "inv_gamma0": 1 / c.gamma0,
+        "alpha_opt_k1": best,
+        "opt_alpha_k1": opt.k1,
+        "opt_gamma0": (g0.k1, g0.value),
+        "chp_cusp": chp.cusp,
+    }
 
 
 # ------------------------------------------------------------------------------------------------ chapter 8
@@ -145,7 +163,11 @@ def section_two_dof() -> dict:
     _row("ω1, ω2 (8.79)", "(derived) 1.33234666, 2.05799018", r.frequencies, "")
     ratio = tuple(float(r.modes[1, k] / r.modes[0, k]) for k in range(2))
     _row("mode ratios y2/y1 (8.90)", "1.08792237, -1.67615766", ratio, "")
-    return {"omega": r.frequencies, "ratios": ratio}
+    s2 = two_dof_system(2, 0.3, 1, 5, -0.8, 3)
+    _row("ω1, ω2 by (8.79) (two_dof_system)", "(derived) 1.33234666, 2.05799018", s2.frequencies, "")
+    beats = two_dof_beats(two_dof_system(1, 0, 1, 1.1, -0.1, 1.1), [1.0, 0.0])
+    _row("tuned pendulums, y1 envelope (8.96)", "complete exchange: 0 .. 1", tuple(beats.limits[0]), "§8.14")
+    return {"omega": r.frequencies, "ratios": ratio, "omega_8_79": s2.frequencies, "tuned_limits": beats.limits[0]}
 
 
 # ------------------------------------------------------------------------------------------------ chapter 9 A

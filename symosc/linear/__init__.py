@@ -5,7 +5,8 @@
   :func:`optimize_regulator`, :func:`equal_stability_lines`; with delay
   :func:`delay_equal_stability_lines`, :func:`delay_response_series`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
-  :func:`modal_normal_form`, :func:`frequency_response`,
+  :func:`modal_normal_form`, :func:`frequency_response`, two degrees of freedom :func:`two_dof_system`,
+  :func:`two_dof_beats`, :func:`tuning_curves`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
@@ -73,6 +74,7 @@ from .regions import StabilityRegion, robust_boundary, stability_region
 from .regulator import EqualStabilityLines, RegulatorOptimum, equal_stability_lines, optimize_regulator
 from .routh import RouthArray, routh_array
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
+from .two_dof import TuningCurves, TwoDOFBeats, TwoDOFSystem, tuning_curves, two_dof_beats, two_dof_system
 
 __all__ = [
     "Compatibility",
@@ -100,6 +102,9 @@ __all__ = [
     "StabilityMargins",
     "StabilityRegion",
     "StabilityVerdict",
+    "TuningCurves",
+    "TwoDOFBeats",
+    "TwoDOFSystem",
     "a_orthonormalize",
     "chain_matrices",
     "chain_transmittance",
@@ -145,6 +150,9 @@ __all__ = [
     "stability_region",
     "string_frequencies",
     "string_modes",
+    "tuning_curves",
+    "two_dof_beats",
+    "two_dof_system",
     "volterra_march",
     "vyshnegradsky_diagram",
     "worst_case_gain",

@@ -41,6 +41,14 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     assert abs(res["ch4"]["inv_beta"] - (1 + delta) / (1 - delta) / k2) < 1e-12
     assert abs(res["ch4"]["inv_gamma1"] - (0.8 * k0 + 0.5 * k2) / (2 * k0 * k1 * k2)) < 1e-12
     assert abs(res["ch4"]["alpha_opt_k1"] - 2 * np.sqrt(2)) < 2e-3
+    assert abs(res["ch4"]["opt_alpha_k1"] - 2 * np.sqrt(2)) < 1e-12
+    assert np.allclose(res["ch4"]["opt_gamma0"], (np.sqrt(2), np.sqrt(2)), atol=1e-12)
+    s_star = 2 - np.sqrt(2)  # (4.136) at s*: the book's closed form
+    assert np.allclose(
+        res["ch4"]["chp_cusp"],
+        (np.exp(-s_star) * (2 * s_star - s_star**2), np.exp(-s_star) * s_star**2 * (1 - s_star)),
+        atol=1e-14,
+    )
     # E1
     assert res["fd_systems"]["E1_operator"] == sp.Symbol("D") + 1
     # Vyshnegradsky cusp: λ³ + 3λ² + 3λ + 1 has the triple root -1
@@ -73,6 +81,8 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     c2, c1, c0 = np.linalg.det(M), -(M[0, 0] * K[1, 1] + M[1, 1] * K[0, 0] - 2 * M[0, 1] * K[0, 1]), np.linalg.det(K)
     lam2 = np.sort(np.roots([c2, c1, c0]).real)
     assert np.allclose(res["two_dof"]["omega"], np.sqrt(lam2), rtol=1e-12)
+    assert np.allclose(res["two_dof"]["omega_8_79"], np.sqrt(lam2), rtol=1e-12)
+    assert np.allclose(res["two_dof"]["tuned_limits"], (0.0, 1.0), atol=1e-12)  # equal pendulums: full exchange
     # T12 scaling computed from the printed data
     assert abs(res["regulated"]["T12"][1] - 1.295 * 2.007 / 0.6601) < 1e-12
     assert res["regulated"]["nyquist"].closed_loop_roots == 0
