@@ -36,6 +36,7 @@ from symosc.linear import (
     optimize_regulator,
     power_iteration,
     rayleigh_quotient,
+    servo_optimum,
     stability_coefficients,
     stability_degree,
     string_frequencies,
@@ -139,7 +140,21 @@ def section_stability_regions() -> dict:
     _row("E13 label at (0, 0) and (1, 1)", "C0(1), C0(0)", (ne.roots_right(0, 0), ne.roots_right(1, 1)), "")
     dd = discriminant_curve(F, lam, (mu, nu))
     _row("E13 discriminant μ(e)", "(not printed)", sp.factor(dd.mu), "derived (§8.27)")
-    return {"cusp": cusp, "delta": sd.degree, "neimark": ne, "vyshnegradsky": (dp, disc), "neimark_disc": dd}
+    so = servo_optimum(8.0, k=1.0)
+    _row(
+        "E10 §8.24 servo optimum, z = 8, k = 1",
+        "δ = z^(1/3), x_M, y_M",
+        (so.delta, so.x, so.y),
+        "(3δ-1)/δ³, (3δ²-k)/δ³",
+    )
+    return {
+        "cusp": cusp,
+        "delta": sd.degree,
+        "neimark": ne,
+        "vyshnegradsky": (dp, disc),
+        "neimark_disc": dd,
+        "servo": (so.delta, so.x, so.y),
+    }
 
 
 def section_forced() -> dict:

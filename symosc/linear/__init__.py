@@ -10,7 +10,8 @@
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
-  :func:`max_stability_degree_cubic`.
+  :func:`max_stability_degree_cubic`,
+  :func:`servo_stability_lines`, :func:`servo_optimum`.
 * Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
@@ -73,6 +74,7 @@ from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .regions import StabilityRegion, robust_boundary, stability_region
 from .regulator import EqualStabilityLines, RegulatorOptimum, equal_stability_lines, optimize_regulator
 from .routh import RouthArray, routh_array
+from .servo import ServoOptimum, ServoStabilityLines, servo_optimum, servo_stability_lines
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
 from .two_dof import TuningCurves, TwoDOFBeats, TwoDOFSystem, tuning_curves, two_dof_beats, two_dof_system
 
@@ -97,6 +99,8 @@ __all__ = [
     "QuadraticFormVerdict",
     "RegulatorOptimum",
     "RouthArray",
+    "ServoOptimum",
+    "ServoStabilityLines",
     "StabilityCoefficients",
     "StabilityDegree",
     "StabilityMargins",
@@ -143,6 +147,8 @@ __all__ = [
     "robust_boundary",
     "routh_array",
     "routh_form_criteria",
+    "servo_optimum",
+    "servo_stability_lines",
     "shifted_coefficients",
     "stability_coefficients",
     "stability_degree",

@@ -53,6 +53,9 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     assert res["fd_systems"]["E1_operator"] == sp.Symbol("D") + 1
     # Vyshnegradsky cusp: λ³ + 3λ² + 3λ + 1 has the triple root -1
     assert res["stability_regions"]["cusp"] == (3, 3)
+    # E10 §8.24: the servo optimum is the triple root -2 of λ³ + (8x + 1)λ² + (8y + 1)λ + 8
+    d, x, y = res["stability_regions"]["servo"]
+    assert np.allclose(np.poly([-d, -d, -d]), [1, 8 * x + 1, 8 * y + 1, 8], atol=1e-12) and d == 2.0
     assert np.allclose(np.poly([-1, -1, -1]), [1, 3, 3, 1])
     # T7: roots of the integer matrix and the product 56
     L7 = np.array([[9, 22, 7], [11, 32, 11], [7, 22, 9]], dtype=float)
