@@ -121,6 +121,11 @@ def section_fd_systems() -> dict:
     _row("E11 S(D) (§8.51)", "[0, 10D - 20]", list(r11.direct), "direct term")
     _row("E11 kernel of y1", "(5/4)[-e^-4t + cos4t + sin4t]", sp.factor(r11.kernel[0]), "residues")
     out["E11"] = r11
+    f12 = [[D**2 - 2 * D - 1, D - 1], [D - 2, 1]]  # E12 §8.52 Ex. 2: singular leading matrix, Δ = D - 3
+    r12 = impulse_response(f12, sp.eye(2), D, t)
+    _row("E12 Ex. 2 S(D) (§8.52)", "[[0, -1], [-1, D + 1]]", r12.direct.tolist(), "explicit constraints")
+    _row("E12 Ex. 2 kernel", "e^{3t} [1, -1]ᵀ [1, -2]", sp.factor(r12.kernel / sp.exp(3 * t)).tolist(), "v b")
+    out["E12"] = r12
     v = hurwitz([1, 4, 16, 64])
     _row("E8 Hurwitz Δ2 = k1k2 - k0k3", 0, v.minors[1], "exactly on the stability boundary")
     return out

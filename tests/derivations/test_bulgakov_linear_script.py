@@ -51,6 +51,11 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     )
     # E1
     assert res["fd_systems"]["E1_operator"] == sp.Symbol("D") + 1
+    # E12 Ex. 2 (§8.52): the book's S(D) and e^{3t} v b, v = [1, -1], b = [1, -2]
+    Ds, ts = sp.symbols("D t")
+    e12 = res["fd_systems"]["E12"]
+    assert sp.simplify(e12.direct - sp.Matrix([[0, -1], [-1, Ds + 1]])) == sp.zeros(2, 2)
+    assert sp.simplify(e12.kernel - sp.exp(3 * ts) * sp.Matrix([[1, -2], [-1, 2]])) == sp.zeros(2, 2)
     # Vyshnegradsky cusp: λ³ + 3λ² + 3λ + 1 has the triple root -1
     assert res["stability_regions"]["cusp"] == (3, 3)
     # E10 §8.24: the servo optimum is the triple root -2 of λ³ + (8x + 1)λ² + (8y + 1)λ + 8
