@@ -114,3 +114,33 @@ def test_bad_input():
         tuning_curves(1.0, 0.0)
     with pytest.raises(ParameterError, match="y0"):
         two_dof_beats(two_dof_system(1, 0, 1, 1, 0, 2), [1.0])
+
+
+def test_new_results_pickle_and_repr():
+    """The result objects added for §4.1–4.17 and §8.13–8.24 survive pickling and print their key numbers."""
+    import pickle
+
+    from symosc.linear import (
+        delay_equal_stability_lines,
+        equal_stability_lines,
+        optimize_regulator,
+        phase_portrait,
+        servo_optimum,
+        servo_stability_lines,
+    )
+
+    objs = [
+        phase_portrait(1, 0.5, 2),
+        optimize_regulator(1.0, k2=2.0),
+        equal_stability_lines("gamma1", 0.5, theta=(1, 1)),
+        delay_equal_stability_lines("andronov-maier", 0.2),
+        two_dof_system(2, 0.3, 1, 5, -0.8, 3),
+        two_dof_beats(two_dof_system(2, 0.3, 1, 5, -0.8, 3), [1, 0]),
+        tuning_curves(0.1, 0.2),
+        servo_stability_lines(8.0, 1.0),
+        servo_optimum(8.0),
+    ]
+    for o in objs:
+        back = pickle.loads(pickle.dumps(o))
+        assert repr(back) == repr(o)
+    assert "stationary point" in repr(objs[1]) and "ω1 = 1.33235" in repr(objs[4])
