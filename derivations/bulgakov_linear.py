@@ -34,6 +34,7 @@ from symosc.linear import (
     influence_matrix,
     nyquist,
     optimize_regulator,
+    phase_portrait,
     power_iteration,
     rayleigh_quotient,
     servo_optimum,
@@ -84,7 +85,8 @@ def section_ch4() -> dict:
     g0 = optimize_regulator(1.0, k2=2.0, criterion="gamma0")
     _row("optimize_regulator, servo γ0 (4.98)", "k1 = √(k0k2), γ0 = √(k2/k0)", (g0.k1, g0.value), g0.kind)
     chp = delay_equal_stability_lines("callender-hartree-porter", 2 - np.sqrt(2))
-    _row("§4.16 cusp at s* = 2 - √2 (4.138)", "ρ* = 0.46116, σ* = 0.07913", chp.cusp, "σ* = 0.079122 unrounded")
+    note = "recomputed σ* = 0.079122 (printed 0.07913)"
+    _row("§4.16 cusp at s* = 2 - √2 (4.138)", "ρ* = 0.46116, σ* = 0.07913", chp.cusp, note)
     return {
         "inv_beta": 1 / c.beta,
         "inv_gamma1": 1 / c.gamma1,
@@ -93,6 +95,8 @@ def section_ch4() -> dict:
         "opt_alpha_k1": opt.k1,
         "opt_gamma0": (g0.k1, g0.value),
         "chp_cusp": chp.cusp,
+        "phase_portraits": [phase_portrait(1.0, k1, k2) for k1, k2 in ((0.5, 4.0), (5.0, 4.0), (1.0, -2.0))],
+        "delay_lines": [delay_equal_stability_lines("callender-hartree-porter", s) for s in (0.0, 0.3, 0.5)],
     }
 
 
@@ -323,6 +327,17 @@ def _figures(out_dir: Path, results: dict) -> None:
         results["stability_regions"]["neimark_disc"].plot(ax=ax)
         ax.set_title("Neimark's example (Bulgakov §8.26)")
         fig.savefig(out_dir / "neimark.png", dpi=100)
+    if "ch4" in results:
+        fig, axes = plt.subplots(1, 3, figsize=(12, 4))
+        for ax, pp in zip(axes, results["ch4"]["phase_portraits"], strict=True):
+            pp.plot(ax=ax)
+        fig.tight_layout()
+        fig.savefig(out_dir / "phase_portraits.png", dpi=100)
+        fig, ax = plt.subplots(figsize=(6, 5))
+        for dl in results["ch4"]["delay_lines"]:
+            dl.plot(ax=ax)
+        ax.set_title("Callender-Hartree-Porter: equal degree of stability (Bulgakov §4.16)")
+        fig.savefig(out_dir / "delay_equal_stability.png", dpi=100)
     if "regulated" in results:
         fig, ax = plt.subplots(figsize=(5, 5))
         results["regulated"]["nyquist"].plot(ax=ax, clip=5)

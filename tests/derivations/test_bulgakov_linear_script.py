@@ -33,7 +33,14 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     out = tmp_path_factory.mktemp("bulgakov_linear")
     res = _run(str(out))
     # figures written to --out
-    for name in ("vyshnegradsky.png", "neimark.png", "nyquist_unstable_link.png", "t8_power_iteration.png"):
+    for name in (
+        "vyshnegradsky.png",
+        "neimark.png",
+        "nyquist_unstable_link.png",
+        "t8_power_iteration.png",
+        "phase_portraits.png",
+        "delay_equal_stability.png",
+    ):
         assert (out / name).stat().st_size > 1000
     # §4.10 Raushenbakh integral, the book's closed form evaluated here
     k0, k1, k2 = 1.3, 0.7, 2.1
