@@ -66,6 +66,13 @@ class TwoDOFSystem:
             f"ω1 = {w1:.6g}, ω2 = {w2:.6g})"
         )
 
+    def _repr_latex_(self) -> str:
+        w1, w2 = self.frequencies
+        return (
+            rf"$\omega_a = {self.omega_a:.6g},\ \omega_b = {self.omega_b:.6g},\ k = {self.k:.6g},\ "
+            rf"l = {self.l:.6g};\ \omega_1 = {w1:.6g},\ \omega_2 = {w2:.6g}$"
+        )
+
 
 def two_dof_system(L: float, M: float, N: float, A: float, B: float, C: float) -> TwoDOFSystem:
     """Partial frequencies, coupling coefficients, normal frequencies and modes of (8.68) (Bulgakov (1954), §8.13–8.14).

@@ -144,3 +144,4 @@ def test_new_results_pickle_and_repr():
         back = pickle.loads(pickle.dumps(o))
         assert repr(back) == repr(o)
     assert "stationary point" in repr(objs[1]) and "ω1 = 1.33235" in repr(objs[4])
+    assert r"\alpha = 1.41421" in objs[1]._repr_latex_() and r"\omega_1 = 1.33235" in objs[4]._repr_latex_()
