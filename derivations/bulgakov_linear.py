@@ -23,6 +23,7 @@ from symosc.linear import (
     compatibility,
     conservative_modes,
     d_partition,
+    delay_equal_stability_lines,
     discriminant_curve,
     dunkerley,
     dunkerley_bounds,
@@ -32,11 +33,16 @@ from symosc.linear import (
     impulse_response,
     influence_matrix,
     nyquist,
+    optimize_regulator,
+    phase_portrait,
     power_iteration,
     rayleigh_quotient,
+    servo_optimum,
     stability_coefficients,
     stability_degree,
     string_frequencies,
+    two_dof_beats,
+    two_dof_system,
     vyshnegradsky_diagram,
     worst_case_gain,
 )
@@ -74,7 +80,24 @@ def section_ch4() -> dict:
     alphas = np.array([stability_coefficients(1.0, k, 2.0).alpha for k in k1])
     best = float(k1[alphas.argmax()])
     _row("α-optimal k1 (k0 = 1, k2 = 2)", "2√(k0k2) = 2.8284", best, "grid maximum of α(k1)")
-    return {"inv_beta": 1 / c.beta, "inv_gamma1": 1 / c.gamma1, "inv_gamma0": 1 / c.gamma0, "alpha_opt_k1": best}
+    opt = optimize_regulator(1.0, k2=2.0, criterion="alpha")
+    _row("optimize_regulator, α (4.97)", "k1 = 2√(k0k2) = 2.8284", opt.k1, opt.kind)
+    g0 = optimize_regulator(1.0, k2=2.0, criterion="gamma0")
+    _row("optimize_regulator, servo γ0 (4.98)", "k1 = √(k0k2), γ0 = √(k2/k0)", (g0.k1, g0.value), g0.kind)
+    chp = delay_equal_stability_lines("callender-hartree-porter", 2 - np.sqrt(2))
+    note = "recomputed σ* = 0.079122 (printed 0.07913)"
+    _row("§4.16 cusp at s* = 2 - √2 (4.138)", "ρ* = 0.46116, σ* = 0.07913", chp.cusp, note)
+    return {
+        "inv_beta": 1 / c.beta,
+        "inv_gamma1": 1 / c.gamma1,
+        "inv_gamma0": 1 / c.gamma0,
+        "alpha_opt_k1": best,
+        "opt_alpha_k1": opt.k1,
+        "opt_gamma0": (g0.k1, g0.value),
+        "chp_cusp": chp.cusp,
+        "phase_portraits": [phase_portrait(1.0, k1, k2) for k1, k2 in ((0.5, 4.0), (5.0, 4.0), (1.0, -2.0))],
+        "delay_lines": [delay_equal_stability_lines("callender-hartree-porter", s) for s in (0.0, 0.3, 0.5)],
+    }
 
 
 # ------------------------------------------------------------------------------------------------ chapter 8
@@ -102,6 +125,11 @@ def section_fd_systems() -> dict:
     _row("E11 S(D) (§8.51)", "[0, 10D - 20]", list(r11.direct), "direct term")
     _row("E11 kernel of y1", "(5/4)[-e^-4t + cos4t + sin4t]", sp.factor(r11.kernel[0]), "residues")
     out["E11"] = r11
+    f12 = [[D**2 - 2 * D - 1, D - 1], [D - 2, 1]]  # E12 §8.52 Ex. 2: singular leading matrix, Δ = D - 3
+    r12 = impulse_response(f12, sp.eye(2), D, t)
+    _row("E12 Ex. 2 S(D) (§8.52)", "[[0, -1], [-1, D + 1]]", r12.direct.tolist(), "explicit constraints")
+    _row("E12 Ex. 2 kernel", "e^{3t} [1, -1]ᵀ [1, -2]", sp.factor(r12.kernel / sp.exp(3 * t)).tolist(), "v b")
+    out["E12"] = r12
     v = hurwitz([1, 4, 16, 64])
     _row("E8 Hurwitz Δ2 = k1k2 - k0k3", 0, v.minors[1], "exactly on the stability boundary")
     return out
@@ -121,7 +149,21 @@ def section_stability_regions() -> dict:
     _row("E13 label at (0, 0) and (1, 1)", "C0(1), C0(0)", (ne.roots_right(0, 0), ne.roots_right(1, 1)), "")
     dd = discriminant_curve(F, lam, (mu, nu))
     _row("E13 discriminant μ(e)", "(not printed)", sp.factor(dd.mu), "derived (§8.27)")
-    return {"cusp": cusp, "delta": sd.degree, "neimark": ne, "vyshnegradsky": (dp, disc), "neimark_disc": dd}
+    so = servo_optimum(8.0, k=1.0)
+    _row(
+        "E10 §8.24 servo optimum, z = 8, k = 1",
+        "δ = z^(1/3), x_M, y_M",
+        (so.delta, so.x, so.y),
+        "(3δ-1)/δ³, (3δ²-k)/δ³",
+    )
+    return {
+        "cusp": cusp,
+        "delta": sd.degree,
+        "neimark": ne,
+        "vyshnegradsky": (dp, disc),
+        "neimark_disc": dd,
+        "servo": (so.delta, so.x, so.y),
+    }
 
 
 def section_forced() -> dict:
@@ -145,7 +187,11 @@ def section_two_dof() -> dict:
     _row("ω1, ω2 (8.79)", "(derived) 1.33234666, 2.05799018", r.frequencies, "")
     ratio = tuple(float(r.modes[1, k] / r.modes[0, k]) for k in range(2))
     _row("mode ratios y2/y1 (8.90)", "1.08792237, -1.67615766", ratio, "")
-    return {"omega": r.frequencies, "ratios": ratio}
+    s2 = two_dof_system(2, 0.3, 1, 5, -0.8, 3)
+    _row("ω1, ω2 by (8.79) (two_dof_system)", "(derived) 1.33234666, 2.05799018", s2.frequencies, "")
+    beats = two_dof_beats(two_dof_system(1, 0, 1, 1.1, -0.1, 1.1), [1.0, 0.0])
+    _row("tuned pendulums, y1 envelope (8.96)", "complete exchange: 0 .. 1", tuple(beats.limits[0]), "§8.14")
+    return {"omega": r.frequencies, "ratios": ratio, "omega_8_79": s2.frequencies, "tuned_limits": beats.limits[0]}
 
 
 # ------------------------------------------------------------------------------------------------ chapter 9 A
@@ -281,6 +327,17 @@ def _figures(out_dir: Path, results: dict) -> None:
         results["stability_regions"]["neimark_disc"].plot(ax=ax)
         ax.set_title("Neimark's example (Bulgakov §8.26)")
         fig.savefig(out_dir / "neimark.png", dpi=100)
+    if "ch4" in results:
+        fig, axes = plt.subplots(1, 3, figsize=(12, 4))
+        for ax, pp in zip(axes, results["ch4"]["phase_portraits"], strict=True):
+            pp.plot(ax=ax)
+        fig.tight_layout()
+        fig.savefig(out_dir / "phase_portraits.png", dpi=100)
+        fig, ax = plt.subplots(figsize=(6, 5))
+        for dl in results["ch4"]["delay_lines"]:
+            dl.plot(ax=ax)
+        ax.set_title("Callender-Hartree-Porter: equal degree of stability (Bulgakov §4.16)")
+        fig.savefig(out_dir / "delay_equal_stability.png", dpi=100)
     if "regulated" in results:
         fig, ax = plt.subplots(figsize=(5, 5))
         results["regulated"]["nyquist"].plot(ax=ax, clip=5)

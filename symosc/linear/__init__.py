@@ -1,13 +1,17 @@
 """Linear systems (Bulgakov, "Oscillations" (1954), ch. 4, 8, 9 A and 10).
 
 * One degree of freedom — :func:`linear_filter`, :func:`stability_coefficients`, :func:`classify_equilibrium`,
-  :func:`periodic_forced_response`, :func:`volterra_march`.
+  :func:`phase_portrait`, :func:`periodic_forced_response`, :func:`volterra_march`;
+  :func:`optimize_regulator`, :func:`equal_stability_lines`; with delay
+  :func:`delay_equal_stability_lines`, :func:`delay_response_series`.
 * Systems f(D) y = e(D) x — :func:`compatibility`, :func:`fundamental_solutions`, :func:`impulse_response`,
-  :func:`modal_normal_form`, :func:`frequency_response`,
+  :func:`modal_normal_form`, :func:`frequency_response`, two degrees of freedom :func:`two_dof_system`,
+  :func:`two_dof_beats`, :func:`tuning_curves`,
   :func:`resonant_particular`, :func:`mean_power`, :func:`worst_case_gain`.
 * Stability criteria — :func:`routh_array` (fraction-free), :func:`hurwitz`, :func:`lienard_chipart`,
   :func:`routh_form_criteria`; degree of stability :func:`stability_degree`, :func:`hurwitz_at_degree`,
-  :func:`max_stability_degree_cubic`.
+  :func:`max_stability_degree_cubic`,
+  :func:`servo_stability_lines`, :func:`servo_optimum`.
 * Conservative systems — :func:`conservative_modes`, :func:`a_orthonormalize`, :func:`chain_matrices`,
   :func:`string_frequencies`, :func:`influence_matrix`.
 * Bounds — :func:`rayleigh_quotient`, :func:`constrained_eigenvalues`, :func:`dunkerley`, :func:`dunkerley_bounds`,
@@ -37,6 +41,8 @@ from .degree import (
     shifted_coefficients,
     stability_degree,
 )
+from .delay_lines import DelayStabilityLines, delay_equal_stability_lines
+from .delay_response import DelayResponseSeries, delay_response_series
 from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
 from .fd_systems import (
     Compatibility,
@@ -63,16 +69,23 @@ from .one_dof import (
     stability_coefficients,
     volterra_march,
 )
+from .phase_plane import PhasePortrait, phase_portrait
 from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
 from .regions import StabilityRegion, robust_boundary, stability_region
+from .regulator import EqualStabilityLines, RegulatorOptimum, equal_stability_lines, optimize_regulator
 from .routh import RouthArray, routh_array
+from .servo import ServoOptimum, ServoStabilityLines, servo_optimum, servo_stability_lines
 from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
+from .two_dof import TuningCurves, TwoDOFBeats, TwoDOFSystem, tuning_curves, two_dof_beats, two_dof_system
 
 __all__ = [
     "Compatibility",
     "CubicOptimum",
     "DPartition",
+    "DelayResponseSeries",
+    "DelayStabilityLines",
     "DiscriminantCurve",
+    "EqualStabilityLines",
     "FrequencyBounds",
     "FrequencyResponse",
     "FundamentalSolutions",
@@ -81,14 +94,21 @@ __all__ = [
     "ModalAnalysis",
     "NormalForm",
     "NyquistResult",
+    "PhasePortrait",
     "PowerIteration",
     "QuadraticFormVerdict",
+    "RegulatorOptimum",
     "RouthArray",
+    "ServoOptimum",
+    "ServoStabilityLines",
     "StabilityCoefficients",
     "StabilityDegree",
     "StabilityMargins",
     "StabilityRegion",
     "StabilityVerdict",
+    "TuningCurves",
+    "TwoDOFBeats",
+    "TwoDOFSystem",
     "a_orthonormalize",
     "chain_matrices",
     "chain_transmittance",
@@ -98,9 +118,12 @@ __all__ = [
     "conservative_modes",
     "constrained_eigenvalues",
     "d_partition",
+    "delay_equal_stability_lines",
+    "delay_response_series",
     "discriminant_curve",
     "dunkerley",
     "dunkerley_bounds",
+    "equal_stability_lines",
     "frequency_response",
     "fundamental_solutions",
     "hurwitz",
@@ -114,7 +137,9 @@ __all__ = [
     "mean_power",
     "modal_normal_form",
     "nyquist",
+    "optimize_regulator",
     "periodic_forced_response",
+    "phase_portrait",
     "power_iteration",
     "rayleigh_quotient",
     "resonant_particular",
@@ -122,6 +147,8 @@ __all__ = [
     "robust_boundary",
     "routh_array",
     "routh_form_criteria",
+    "servo_optimum",
+    "servo_stability_lines",
     "shifted_coefficients",
     "stability_coefficients",
     "stability_degree",
@@ -129,6 +156,9 @@ __all__ = [
     "stability_region",
     "string_frequencies",
     "string_modes",
+    "tuning_curves",
+    "two_dof_beats",
+    "two_dof_system",
     "volterra_march",
     "vyshnegradsky_diagram",
     "worst_case_gain",

@@ -33,7 +33,14 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     out = tmp_path_factory.mktemp("bulgakov_linear")
     res = _run(str(out))
     # figures written to --out
-    for name in ("vyshnegradsky.png", "neimark.png", "nyquist_unstable_link.png", "t8_power_iteration.png"):
+    for name in (
+        "vyshnegradsky.png",
+        "neimark.png",
+        "nyquist_unstable_link.png",
+        "t8_power_iteration.png",
+        "phase_portraits.png",
+        "delay_equal_stability.png",
+    ):
         assert (out / name).stat().st_size > 1000
     # §4.10 Raushenbakh integral, the book's closed form evaluated here
     k0, k1, k2 = 1.3, 0.7, 2.1
@@ -41,10 +48,26 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     assert abs(res["ch4"]["inv_beta"] - (1 + delta) / (1 - delta) / k2) < 1e-12
     assert abs(res["ch4"]["inv_gamma1"] - (0.8 * k0 + 0.5 * k2) / (2 * k0 * k1 * k2)) < 1e-12
     assert abs(res["ch4"]["alpha_opt_k1"] - 2 * np.sqrt(2)) < 2e-3
+    assert abs(res["ch4"]["opt_alpha_k1"] - 2 * np.sqrt(2)) < 1e-12
+    assert np.allclose(res["ch4"]["opt_gamma0"], (np.sqrt(2), np.sqrt(2)), atol=1e-12)
+    s_star = 2 - np.sqrt(2)  # (4.136) at s*: the book's closed form
+    assert np.allclose(
+        res["ch4"]["chp_cusp"],
+        (np.exp(-s_star) * (2 * s_star - s_star**2), np.exp(-s_star) * s_star**2 * (1 - s_star)),
+        atol=1e-14,
+    )
     # E1
     assert res["fd_systems"]["E1_operator"] == sp.Symbol("D") + 1
+    # E12 Ex. 2 (§8.52): the book's S(D) and e^{3t} v b, v = [1, -1], b = [1, -2]
+    Ds, ts = sp.symbols("D t")
+    e12 = res["fd_systems"]["E12"]
+    assert sp.simplify(e12.direct - sp.Matrix([[0, -1], [-1, Ds + 1]])) == sp.zeros(2, 2)
+    assert sp.simplify(e12.kernel - sp.exp(3 * ts) * sp.Matrix([[1, -2], [-1, 2]])) == sp.zeros(2, 2)
     # Vyshnegradsky cusp: λ³ + 3λ² + 3λ + 1 has the triple root -1
     assert res["stability_regions"]["cusp"] == (3, 3)
+    # E10 §8.24: the servo optimum is the triple root -2 of λ³ + (8x + 1)λ² + (8y + 1)λ + 8
+    d, x, y = res["stability_regions"]["servo"]
+    assert np.allclose(np.poly([-d, -d, -d]), [1, 8 * x + 1, 8 * y + 1, 8], atol=1e-12) and d == 2.0
     assert np.allclose(np.poly([-1, -1, -1]), [1, 3, 3, 1])
     # T7: roots of the integer matrix and the product 56
     L7 = np.array([[9, 22, 7], [11, 32, 11], [7, 22, 9]], dtype=float)
@@ -73,6 +96,8 @@ def test_script_runs_and_reproduces(tmp_path_factory):
     c2, c1, c0 = np.linalg.det(M), -(M[0, 0] * K[1, 1] + M[1, 1] * K[0, 0] - 2 * M[0, 1] * K[0, 1]), np.linalg.det(K)
     lam2 = np.sort(np.roots([c2, c1, c0]).real)
     assert np.allclose(res["two_dof"]["omega"], np.sqrt(lam2), rtol=1e-12)
+    assert np.allclose(res["two_dof"]["omega_8_79"], np.sqrt(lam2), rtol=1e-12)
+    assert np.allclose(res["two_dof"]["tuned_limits"], (0.0, 1.0), atol=1e-12)  # equal pendulums: full exchange
     # T12 scaling computed from the printed data
     assert abs(res["regulated"]["T12"][1] - 1.295 * 2.007 / 0.6601) < 1e-12
     assert res["regulated"]["nyquist"].closed_loop_roots == 0
