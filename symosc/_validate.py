@@ -27,6 +27,7 @@ __all__ = [
     "check_int",
     "check_known_names",
     "check_positive",
+    "check_sympy_matrix",
 ]
 
 
@@ -129,6 +130,22 @@ def check_complete_names(what: str, given: Iterable[Any], needed: Iterable[Any])
     extra = f"; unknown {what} given: {', '.join(sorted(unknown))}" if unknown else ""
     hint = f" (misspelt? {', '.join(hints)})" if hints else ""
     raise ParameterError(f"missing values for: {', '.join(missing)}{extra}{hint}; valid names: {sorted(needed_names)}")
+
+
+def check_sympy_matrix(name: str, value: Any) -> Any:
+    """``value`` as a SymPy Matrix (a scalar, None or a ragged nesting is refused, naming the argument)."""
+    import sympy
+
+    if isinstance(value, sympy.MatrixBase):
+        return value
+    if value is None or isinstance(value, str | bytes | numbers.Number | sp_Basic) or np.ndim(value) == 0:
+        raise ParameterError(
+            f"{name} must be a matrix (nested list, NumPy array or SymPy Matrix), got {_show(value)}"
+        )
+    try:
+        return sympy.Matrix(value)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a rectangular matrix: {exc}") from exc
 
 
 def check_finite_array(name: str, value: Any, *, ndim: int | None = None, complex_ok: bool = False) -> np.ndarray:

@@ -163,3 +163,8 @@ __all__ = [
     "vyshnegradsky_diagram",
     "worst_case_gain",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._validate import check_sympy_matrix
 from ..errors import ModelError, ParameterError
 from ._util import as_spd_pair
 
@@ -100,7 +101,7 @@ def a_orthonormalize(V: Any, A: Any) -> sp.Matrix:
     --------
     conservative_modes
     """
-    V, A = sp.Matrix(V), sp.Matrix(A)
+    V, A = check_sympy_matrix("V", V), check_sympy_matrix("A", A)
     out: list[sp.Matrix] = []
     for j in range(V.cols):
         u = V[:, j]

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._validate import check_finite_array
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = [
@@ -477,10 +478,12 @@ def mean_power(A: Any, N: Any, G: Any, H: Any, J: Any, xi: Any, omega: float) ->
     --------
     frequency_response
     """
-    mats = [np.atleast_2d(np.asarray(m, dtype=float)) for m in (A, N, G, H, J)]
-    n = mats[0].shape[0]
-    if any(m.shape != (n, n) for m in mats):
-        raise ParameterError("A, N, G, H, J must be square matrices of one size")
+    mats = [check_finite_array(name, m) for name, m in zip("ANGHJ", (A, N, G, H, J), strict=True)]
+    if any(m.ndim != 2 or m.shape[0] != m.shape[1] for m in mats) or len({m.shape for m in mats}) != 1:
+        shapes = [m.shape for m in mats]
+        raise ParameterError(f"A, N, G, H, J must be square matrices of one size, got shapes {shapes}")
+    if np.shape(xi) != (mats[0].shape[0],):
+        raise ParameterError(f"xi must be a vector of length {mats[0].shape[0]}, got shape {np.shape(xi)}")
     A_, N_, G_, H_, J_ = mats
     if omega <= 0:
         raise ParameterError(f"omega must be positive, got {omega}")

@@ -13,6 +13,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_sympy_matrix
 from ..errors import ModelError, ParameterError
 
 __all__ = ["chain_transmittance", "closed_loop_characteristic", "return_difference"]
@@ -59,7 +60,7 @@ def return_difference(X: Any, *, expand_minors: bool = False) -> sp.Expr:
     --------
     closed_loop_characteristic
     """
-    X = sp.Matrix(X) if not isinstance(X, sp.MatrixBase) else X
+    X = check_sympy_matrix("X", X)
     if X.rows != X.cols:
         raise ModelError(f"the open-chain transmittance must be square, got {X.shape}")
     if not expand_minors:

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._validate import check_sympy_matrix
 from ..errors import ModelError
 from ..numeric import bind
 from ..symbols import ddot, dot, t
@@ -252,7 +253,7 @@ def decompose_forces(M: Any, C: Any, K: Any) -> ForceDecomposition:
     --------
     variational_equations, LinearModel
     """
-    M, C, K = (sp.Matrix(x) for x in (M, C, K))
+    M, C, K = (check_sympy_matrix(n, x) for n, x in (("M", M), ("C", C), ("K", K)))
     if not (M.is_square and M.shape == C.shape == K.shape):
         raise ModelError(f"M, C, K must be square of one size, got {M.shape}, {C.shape}, {K.shape}")
     if (M - M.T).applyfunc(sp.simplify) != sp.zeros(*M.shape):
