@@ -27,6 +27,7 @@ from symosc.mechanics import (
     canonical_transformation,
     electromechanical_system,
     routh_reduction,
+    separate_hamilton_jacobi,
     stodola_time_constant,
     variational_equations,
     vyshnegradsky_cubic,
@@ -152,7 +153,44 @@ def section_3_16() -> dict:
     _row("oscillator nu = dh/dJ", "omega", ho.frequency)
     _row("Kepler radial J_r", "k sqrt(m/(-2E)) - L_z", kep.action, "Goldstein eq. (10.137)")
     _row("Kepler period", "2 pi k sqrt(m) / (-2E)^(3/2)", kep.period, "Kepler's third law")
-    return {"J_ho": ho.action, "nu_ho": ho.frequency, "J_kepler": kep.action, "T_kepler": kep.period}
+    pr, pth = sp.symbols("p_r p_theta", real=True)
+    Hn = pr**2 / (2 * m) + pth**2 / (2 * m * r**2) - k / r + c * sp.cos(th) / r**2
+    sep = separate_hamilton_jacobi(Hn, [r, th], [pr, pth], h)
+    beta = sep.constants[th]
+    _row("-k/r + c cos(th)/r^2: factor", "2 m r^2", sep.factors[0], "Landau & Lifshitz §48 (Stäckel separation)")
+    _row("  p_theta^2", "beta - 2 m c cos(theta)", sep.momenta[pth] ** 2)
+    _row("  p_r^2", "2 m (h + k/r) - beta / r^2", sp.expand(sep.momenta[pr] ** 2), f"beta = {beta}")
+    return {
+        "J_ho": ho.action,
+        "nu_ho": ho.frequency,
+        "J_kepler": kep.action,
+        "T_kepler": kep.period,
+        "separation": (sep.factors[0], sep.momenta[pth] ** 2, sep.momenta[pr] ** 2, beta),
+    }
+
+
+def section_7_2() -> dict:
+    """§7.2: reduction of f(D) y = w to first order, method 2, on the book's system of §8.52, Example 2."""
+    y1, y2 = sp.symbols("y1 y2", real=True)
+    D = sp.Symbol("D")
+    from symosc import ddot
+
+    ve = variational_equations(
+        [ddot(y1) - 2 * dot(y1) - y1 + dot(y2) - y2, dot(y1) - 2 * y1 + y2], [y1, y2]
+    )  # the book's f(D) = [[D^2 - 2D - 1, D - 1], [D - 2, 1]]
+    red1, red2 = ve.first_order(method=1), ve.first_order(method=2)
+    lam = sp.Symbol("lambda")
+    _title("§7.2 reduction to first order (system of §8.52, Example 2)")
+    _row("orders m_k", "(2, 1)", ve.coordinate_orders())
+    _row("unknowns, method 1 / method 2", "4 / 3", f"{len(red1.state)} / {len(red2.state)}", "sum max(1, m_k) = 3")
+    _row("det f(D)", "D - 3", sp.factor(ve.operator_matrix(D).det()), "§8.52")
+    _row("det(A lambda + H), method 2", "+-(lambda - 3)", red2.characteristic_polynomial(lam))
+    return {
+        "orders": ve.coordinate_orders(),
+        "sizes": (len(red1.state), len(red2.state)),
+        "char2": red2.characteristic_polynomial(lam),
+        "char1": red1.characteristic_polynomial(lam),
+    }
 
 
 def section_7() -> dict:
@@ -190,6 +228,7 @@ SECTIONS = {
     "3.10": section_3_10,
     "3.14": section_3_14,
     "3.16": section_3_16,
+    "7.2": section_7_2,
     "7": section_7,
 }
 

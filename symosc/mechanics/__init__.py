@@ -22,6 +22,7 @@ from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
 from .routh import RouthReduction, SteadyMotion, routh_reduction
 from .variational import (
+    FirstOrderReduction,
     ForceDecomposition,
     StabilityVerdict,
     VariationalEquations,
@@ -33,6 +34,7 @@ __all__ = [
     "ActionVariable",
     "CanonicalTransformation",
     "ConstrainedForm",
+    "FirstOrderReduction",
     "FirstOrderSystem",
     "ForceDecomposition",
     "GovernorStatics",

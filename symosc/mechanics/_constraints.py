@@ -66,17 +66,29 @@ def check_constraints(
             f"{c} constraints on {n} coordinates leave no freedom of motion; at most {n - 1} constraints are allowed"
         )
     rows = [[phi.diff(x) for x in q] for phi in hol] + [[g.diff(v) for v in qd] for g in non]
-    from .constraints import generic_rank
+    from .constraints import RANK_TOLERANCE, dependent_rows, rank_on_constraint_set
 
     labels = [f"constraint {k + 1} ({e})" for k, e in enumerate(hol)] + [
         f"non-holonomic constraint {k + 1} ({e})" for k, e in enumerate(non)
     ]
-    for r in range(1, c + 1):
-        if generic_rank(sp.Matrix(rows[:r])) < r:
-            raise ModelError(
-                f"{labels[r - 1]} is linearly dependent on the constraints before it (the constraint Jacobian "
-                "loses rank): the constraints are redundant or inconsistent; remove the dependent one"
-            )
+    dep = dependent_rows(sp.Matrix(rows))
+    if dep:
+        last, others = labels[dep[-1]], [labels[i] for i in dep[:-1]]
+        on = ("on " + ", ".join(others)) if others else "(its gradient vanishes identically)"
+        raise ModelError(
+            f"{last} is linearly dependent {on}: the constraint Jacobian (d phi/dq and the velocity coefficients "
+            f"of the non-holonomic constraints) loses rank at every configuration (exact rank for rational "
+            f"functions, else at random points with relative singular-value tolerance {RANK_TOLERANCE:g}), so "
+            "the constraints are redundant or inconsistent; remove the dependent one"
+        )
+    on_set = rank_on_constraint_set(hol, sp.Matrix(rows), q)
+    if on_set is not None and on_set < c:
+        raise ModelError(
+            "the constraints " + "; ".join(labels) + f" are independent at generic configurations but their "
+            f"Jacobian has rank {on_set} < {c} everywhere on the set where the holonomic constraints hold "
+            "(checked at random points projected onto that set): they define that set redundantly and the "
+            "multipliers are not determined; describe it by independent constraints"
+        )
     return tuple(hol), tuple(non)
 
 

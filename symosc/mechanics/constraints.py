@@ -43,13 +43,148 @@ def _random_point(symbols: Sequence[sp.Symbol], seed: int = 7) -> dict[sp.Symbol
     return {s: sp.Float(float(rng.uniform(0.3, 1.7)), 30) for s in symbols}
 
 
-def generic_rank(matrix: sp.Matrix) -> int:
-    """Rank of ``matrix`` at a random point of its free symbols (its rank almost everywhere)."""
-    if matrix.rows == 0:
+RANK_TOLERANCE = 1e-9
+"""Relative singular-value threshold of the numeric rank test (``sigma_min < tol * sigma_max`` counts as zero)."""
+
+RANK_POINTS = 5
+"""Number of random points of the numeric rank test (the generic rank is the largest rank found)."""
+
+
+def _is_rational(matrix: sp.Matrix) -> bool:
+    syms = sorted(matrix.free_symbols, key=str)
+    return all(sp.sympify(e).is_rational_function(*syms) for e in matrix)
+
+
+def _numeric_rank(matrix: sp.Matrix, point: Mapping[sp.Symbol, Any], tol: float) -> int:
+    num = np.array(matrix.xreplace(dict(point)).evalf(30), dtype=complex)
+    if not np.all(np.isfinite(num)):
+        return -1
+    sv = np.linalg.svd(num, compute_uv=False)
+    if sv.size == 0 or sv[0] == 0:
         return 0
-    at = _random_point(sorted(matrix.free_symbols, key=str))
-    num = np.array(matrix.xreplace(at).evalf(30), dtype=float)
-    return int(np.linalg.matrix_rank(num, tol=1e-10 * max(1.0, float(np.abs(num).max()))))
+    return int(np.sum(sv > tol * sv[0]))
+
+
+def _rank_points(symbols: Sequence[sp.Symbol], n_points: int) -> list[dict[sp.Symbol, sp.Float]]:
+    pts = [_random_point(symbols)]
+    rng = np.random.default_rng(20261124)
+    for _ in range(n_points - 1):
+        # both signs and a wider range than the first point; positive symbols stay positive
+        pts.append(
+            {
+                s: sp.Float(
+                    float(rng.uniform(0.2, 2.5) * (1 if s.is_positive or s.is_nonnegative else rng.choice([-1, 1]))), 30
+                )
+                for s in symbols
+            }
+        )
+    return pts
+
+
+def generic_rank(matrix: sp.Matrix, *, tol: float = RANK_TOLERANCE, n_points: int = RANK_POINTS) -> int:
+    """Rank of ``matrix`` almost everywhere in its free symbols (its generic rank).
+
+    Matrices whose entries are rational functions get the exact rank over the field of rational functions
+    (fraction-free elimination, no tolerance).  Other entries (trigonometric, roots, ...) are evaluated at
+    ``n_points`` random points (30 significant digits); a singular value below ``tol`` times the largest counts
+    as zero, and the generic rank is the largest rank found, so an unlucky point on a special submanifold
+    (where the rank drops) cannot make independent rows look dependent.  A matrix whose rank drops only on a
+    submanifold has full generic rank.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> generic_rank(sp.Matrix([[1, 0], [1, 2 * y]]))   # singular only at y = 0
+    2
+    >>> generic_rank(sp.Matrix([[sp.sin(x), sp.cos(x)], [sp.sin(2 * x), 2 * sp.cos(x) ** 2]]))
+    1
+    """
+    if matrix.rows == 0 or matrix.cols == 0:
+        return 0
+    if _is_rational(matrix):
+        from sympy.polys.matrices import DomainMatrix
+
+        try:
+            return int(DomainMatrix.from_Matrix(matrix).to_field().rank())
+        except (sp.PolificationFailed, NotImplementedError, ValueError, TypeError):  # pragma: no cover - fallback
+            pass
+    syms = sorted(matrix.free_symbols, key=str)
+    best = max(_numeric_rank(matrix, pt, tol) for pt in _rank_points(syms, n_points))
+    if best < 0:
+        raise ModelError(f"cannot evaluate the matrix {matrix} at random points to find its rank")
+    return best
+
+
+def dependent_rows(matrix: sp.Matrix, *, tol: float = RANK_TOLERANCE, n_points: int = RANK_POINTS) -> list[int]:
+    """Indices of a smallest-prefix dependent set of rows: the first row ``r`` that is a combination of the rows
+    before it, together with the earlier rows that enter the combination (empty when the rows are independent)."""
+    for r in range(1, matrix.rows + 1):
+        sub = matrix[:r, :]
+        if generic_rank(sub, tol=tol, n_points=n_points) < r:
+            break
+    else:
+        return []
+    # which earlier rows take part: left null vector of sub at a random point (at full rank of sub[:r-1])
+    syms = sorted(sub.free_symbols, key=str)
+    for pt in _rank_points(syms, n_points):
+        num = np.array(sub.xreplace(pt).evalf(30), dtype=complex)
+        if not np.all(np.isfinite(num)) or _numeric_rank(sub[: r - 1, :], pt, tol) < r - 1:
+            continue
+        vh = np.linalg.svd(num.T)[2]
+        y = vh[-1].conj()
+        scale = np.abs(y).max()
+        return [i for i in range(r) if abs(y[i]) > 1e-6 * scale]
+    return list(range(r))  # pragma: no cover - every point singular
+
+
+def rank_on_constraint_set(
+    holonomic: Sequence[sp.Expr],
+    rows: sp.Matrix,
+    coordinates: Sequence[sp.Symbol],
+    *,
+    tol: float = RANK_TOLERANCE,
+    n_points: int = 3,
+) -> int | None:
+    """Largest rank of ``rows`` at points where the holonomic constraints hold (None if no point was found).
+
+    Random configurations (random times and parameter values too) are projected onto ``phi(q, t) = 0`` by
+    Gauss-Newton steps with minimum-norm corrections, iterated until the step stalls (so the projection also
+    reaches a set where the Jacobian is singular).  Used to catch constraints that are independent at generic
+    configurations but dependent everywhere on the set they define (e.g. ``x = 0, x + y^2 = 0``).
+    """
+    if not holonomic:
+        return None
+    q = list(coordinates)
+    others = sorted((sp.Matrix(holonomic).free_symbols | rows.free_symbols) - set(q), key=str)
+    phi = sp.lambdify([q, others], list(holonomic), "numpy")
+    jac = sp.lambdify([q, others], sp.Matrix(holonomic).jacobian(q), "numpy")
+    rank_fn = sp.lambdify([q, others], rows, "numpy")
+    rng = np.random.default_rng(314159)
+    best: int | None = None
+    for _ in range(n_points):
+        pars = [float(rng.uniform(0.3, 1.7)) for _ in others]
+        x = rng.uniform(-1.5, 1.5, len(q))
+        with np.errstate(all="ignore"):
+            for _ in range(400):
+                f = np.asarray(phi(x, pars), dtype=float)
+                J = np.asarray(jac(x, pars), dtype=float)
+                if not (np.all(np.isfinite(f)) and np.all(np.isfinite(J))):
+                    break
+                step = np.linalg.lstsq(J, -f, rcond=None)[0]
+                x = x + step
+                if np.linalg.norm(step) <= 1e-15 * max(1.0, np.linalg.norm(x)):
+                    break
+            f = np.asarray(phi(x, pars), dtype=float)
+            if not np.all(np.isfinite(f)) or np.abs(f).max() > 1e-10:
+                continue
+            R = np.asarray(rank_fn(x, pars), dtype=complex)
+        if not np.all(np.isfinite(R)):
+            continue
+        sv = np.linalg.svd(R, compute_uv=False)
+        r = int(np.sum(sv > tol * sv[0])) if sv.size and sv[0] > 0 else 0
+        best = r if best is None else max(best, r)
+    return best
 
 
 class ConstrainedForm:

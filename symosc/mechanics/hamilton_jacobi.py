@@ -1,9 +1,10 @@
 """Hamilton-Jacobi separation and action-angle variables (Bulgakov (1954), §3.15-3.16, §5.3).
 
 For a conservative H(q, p) = h the characteristic function W(q) solves ``H(q, dW/dq) = h`` (eq. (3.146)).
-:func:`separate_hamilton_jacobi` separates cyclic coordinates (``W_j = alpha_j q_j``) and leaves one quadrature
-for the remaining coordinate; :func:`action_variable` gives the action ``J = (1/2 pi) closed-integral p dq`` of a
-libration, its inverse ``h(J)`` and Poincaré's frequency ``nu = dh/dJ`` (eqs. (3.148)-(3.151)).
+:func:`separate_hamilton_jacobi` separates cyclic coordinates (``W_j = alpha_j q_j``) and Liouville/Stäckel-type
+Hamiltonians (after multiplying by a factor, each coordinate's terms separate; Landau & Lifshitz, §48);
+:func:`action_variable` gives the action ``J = (1/2 pi) closed-integral p dq`` of a libration, its inverse
+``h(J)`` and Poincaré's frequency ``nu = dh/dJ`` (eqs. (3.148)-(3.151)).
 """
 
 from __future__ import annotations
@@ -208,16 +209,26 @@ def action_variable_numeric(
 
 @dataclass(frozen=True)
 class HamiltonJacobiSeparation:
-    """Additive separation ``W = sum alpha_j q_j + W_n(q_n)`` of ``H(q, dW/dq) = h`` (eq. (3.146)).
+    """Additive separation ``W = sum_j W_j(q_j)`` of ``H(q, dW/dq) = h`` (Bulgakov (1954), eq. (3.146)).
 
     Attributes
     ----------
     constants : dict
-        Cyclic coordinate -> its separation constant (the conserved momentum ``alpha``).
+        Coordinate -> its separation constant: ``alpha_q`` (the conserved momentum) for a cyclic coordinate,
+        ``beta_q`` for a coordinate separated by :func:`separate_hamilton_jacobi`'s Stäckel step (a tuple of
+        coordinates when a group of them shares one constant before being separated further).
     momenta : dict
-        Momentum -> ``dW/dq`` in terms of the coordinates, the constants and ``h``.
+        Momentum -> ``dW/dq`` in terms of its coordinate, the constants and ``h``.
     characteristic_function : Expr
-        ``W`` with the last quadrature left as an unevaluated ``Integral``.
+        ``W`` with the quadratures left as unevaluated ``Integral``.
+    energy_symbol : Symbol
+        ``h``.
+    equations : tuple of Eq
+        The separated equations, one per coordinate, each in one coordinate and its momentum ``p_j = dW_j/dq_j``
+        (the ordinary differential equations of the separation).
+    factors : tuple of Expr
+        The factors ``Phi`` by which ``H - h`` (then each group) was multiplied to separate (empty when only
+        cyclic coordinates were separated).
 
     Examples
     --------
@@ -235,16 +246,48 @@ class HamiltonJacobiSeparation:
     momenta: dict
     characteristic_function: sp.Expr
     energy_symbol: sp.Symbol
+    equations: tuple = ()
+    factors: tuple = ()
 
     def __repr__(self) -> str:
         return f"HamiltonJacobiSeparation(W = {self.characteristic_function})"
 
+    def _repr_latex_(self) -> str:
+        return "$$" + r",\quad ".join(sp.latex(e) for e in self.equations) + "$$"
+
 
 def separate_hamilton_jacobi(
-    H: Any, coordinates: Sequence[sp.Symbol], momenta: Sequence[sp.Symbol], energy: sp.Symbol | None = None
+    H: Any,
+    coordinates: Sequence[sp.Symbol],
+    momenta: Sequence[sp.Symbol],
+    energy: sp.Symbol | None = None,
+    *,
+    factor: Any = None,
 ) -> HamiltonJacobiSeparation:
-    """Separate cyclic coordinates of a conservative H; one non-cyclic coordinate may remain (its momentum comes
-    from ``H = h``).  Raises :class:`ModelError` when more than one coordinate is left or H depends on time.
+    """Additive separation of the Hamilton-Jacobi equation ``H(q, dW/dq) = h`` of a conservative H
+    (Bulgakov (1954), §3.16, eqs. (3.145)-(3.147); Landau & Lifshitz, Mechanics, §48).
+
+    Cyclic coordinates get ``W_j = alpha_j q_j``.  The remaining ones are separated Stäckel-fashion: ``H - h`` is
+    multiplied by a factor ``Phi(q)`` (``factor=``, or tried automatically: 1 and the reciprocal/denominator of
+    each coefficient of ``p_j^2``) and its terms are grouped by the coordinates they involve; each group not
+    holding the energy equals a separation constant ``beta``, groups with several coordinates are separated again.
+    One coordinate left over gets its momentum from ``H = h`` directly.
+
+    Parameters
+    ----------
+    H : Expr
+        Hamiltonian (no explicit time).
+    coordinates, momenta : sequence of Symbol
+    energy : Symbol, optional
+        The energy constant ``h`` (default ``Symbol("h")``).
+    factor : Expr, optional
+        The separating factor ``Phi(q)`` (e.g. ``m (xi + eta)`` in parabolic coordinates); tried alone.
+
+    Raises
+    ------
+    ModelError
+        H depends on time, or does not separate: the message names the terms that couple the coordinates for
+        each factor tried.
 
     Examples
     --------
@@ -259,40 +302,55 @@ def separate_hamilton_jacobi(
     >>> sep.momenta[pr]
     sqrt(-alpha_theta**2 + 2*h*m*r**2 + 2*k*m*r)/r
 
+    A non-central term ``c cos(theta) / r^2`` (Landau & Lifshitz, §48): multiplying by ``2 m r^2`` separates it,
+    with a separation constant ``beta_theta``:
+
+    >>> c = sp.Symbol("c", positive=True)
+    >>> H = pr**2 / (2 * m) + pth**2 / (2 * m * r**2) - k / r + c * sp.cos(th) / r**2
+    >>> sep = separate_hamilton_jacobi(H, [r, th], [pr, pth])
+    >>> sep.factors, sep.constants
+    ((2*m*r**2,), {theta: beta_theta})
+    >>> sep.equations[0]
+    Eq(2*c*m*cos(theta) + p_theta**2, beta_theta)
+
     See Also
     --------
-    action_variable
+    action_variable, HamiltonJacobiSeparation
     """
     from ..symbols import t
+    from ._separation import separate
 
     H = sp.sympify(H)
     if t in H.free_symbols:
         raise ModelError("H depends on time: use S = -h t + W only for conservative H")
     h = energy if energy is not None else sp.Symbol("h", real=True)
-    const = {}
+    const: dict[Any, sp.Symbol] = {}
     sub = {}
     rest = []
+    cyclic: list[sp.Symbol] = []
+    equations: list[sp.Eq] = []
     for q, p in zip(coordinates, momenta, strict=True):
         if q not in H.free_symbols:
             a = sp.Symbol(f"alpha_{q.name}", real=True)
             const[q] = a
             sub[p] = a
+            cyclic.append(q)
+            equations.append(sp.Eq(p, a))
         else:
             rest.append((q, p))
-    if len(rest) > 1:
-        raise ModelError(
-            "additive separation beyond cyclic coordinates needs a separation order; coordinates left: "
-            + ", ".join(q.name for q, _ in rest)
-        )
     Hs = H.xreplace(sub)
-    mom = dict(sub)
-    W = sp.Add(*(a * q for q, a in const.items()))
+    mom: dict[sp.Symbol, sp.Expr] = dict(sub)
+    used: list[sp.Expr] = []
     if rest:
-        q, p = rest[0]
-        sols = sp.solve(sp.Eq(Hs, h), p)
-        if not sols:
-            raise ModelError(f"cannot solve H = h for {p}")
-        sol = max(sols, key=lambda e: sp.sympify(e).could_extract_minus_sign() is False)
-        mom[p] = sp.simplify(sol)
+        separate(Hs, h, rest, factor, equations, const, mom, used)
+    W = sp.Add(*(const[q] * q for q in cyclic))
+    for q, p in rest:
         W += sp.Integral(mom[p], q)
-    return HamiltonJacobiSeparation(constants=const, momenta=mom, characteristic_function=W, energy_symbol=h)
+    return HamiltonJacobiSeparation(
+        constants=const,
+        momenta=mom,
+        characteristic_function=W,
+        energy_symbol=h,
+        equations=tuple(equations),
+        factors=tuple(used),
+    )

@@ -23,6 +23,7 @@ from ..numeric import bind
 from ..symbols import ddot, dot, t
 
 __all__ = [
+    "FirstOrderReduction",
     "ForceDecomposition",
     "StabilityVerdict",
     "VariationalEquations",
@@ -72,16 +73,137 @@ class VariationalEquations:
         """``det f(lambda)`` (meaningful for constant coefficients)."""
         return sp.factor(self.operator_matrix(symbol).det(method="berkowitz"))
 
-    def first_order(self) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
-        """``(A, H, W)`` with ``A Y' + H Y = W``, ``Y = (y, y')`` (Bulgakov (1954), §7.2, method 1).
+    def coordinate_orders(self) -> tuple[int, ...]:
+        """Highest derivative order ``m_k`` of each coordinate in ``f(D)`` (over all equations; Bulgakov (1954),
+        §7.2)."""
+        a0, a1, _ = self.coefficients
+        out = []
+        for k in range(len(self.coordinates)):
+            if any(sp.simplify(e) != 0 for e in a0[:, k]):
+                out.append(2)
+            elif any(sp.simplify(e) != 0 for e in a1[:, k]):
+                out.append(1)
+            else:
+                out.append(0)
+        return tuple(out)
 
-        ``A = [[I, 0], [0, a0]]``, ``H = [[0, -I], [a2, a1]]``, ``W = [0; w]``.
+    def first_order(self, method: int = 1) -> FirstOrderReduction:
+        """Reduction to ``A Y' + H Y = W`` (Bulgakov (1954), §7.2, eqs. (7.25)-(7.26)).
+
+        Parameters
+        ----------
+        method : {1, 2}
+            1: all coordinates and their first derivatives are unknowns, ``Y = (y, y')``: ``A = [[I, 0], [0, a0]]``,
+            ``H = [[0, -I], [a2, a1]]``, ``W = [0; w]`` (``2 n`` unknowns; ``A`` is singular when ``a0`` is).
+            2: orders per coordinate: with ``m_k`` the highest derivative of ``y_k`` in ``f(D)`` the unknowns are
+            ``y_k, ..., y_k^(m_k - 1)`` (``y_k`` itself when ``m_k = 0``), one trivial equation
+            ``D y_k^(i) - y_k^(i+1) = 0`` per extra unknown, then the original equations; ``sum max(1, m_k)``
+            unknowns.  For constant coefficients ``det(A lambda + H) = +-det f(lambda)`` for both methods.
+
+        Returns
+        -------
+        FirstOrderReduction
+            Unpacks as ``A, H, W``; ``.state`` names the unknowns.
+
+        Examples
+        --------
+        A mass on a spring driven through a first-order lag ``T z' + z = x`` (orders 2 and 1):
+
+        >>> import sympy as sp
+        >>> from symosc import ddot, dot
+        >>> x, z = sp.symbols("x z")
+        >>> T, k = sp.symbols("T k", positive=True)
+        >>> ve = variational_equations([ddot(x) + k * x - z, T * dot(z) + z - x], [x, z])
+        >>> red = ve.first_order(method=2)
+        >>> red.state
+        (x, z, x_dot)
+        >>> red.A
+        Matrix([
+        [1, 0, 0],
+        [0, 0, 1],
+        [0, T, 0]])
         """
         a0, a1, a2 = self.coefficients
         n = a0.rows
-        A = sp.diag(sp.eye(n), a0)
-        H = sp.zeros(n, n).row_join(-sp.eye(n)).col_join(a2.row_join(a1))
-        return A, H, sp.zeros(n, 1).col_join(self.w)
+        if method == 1:
+            A = sp.diag(sp.eye(n), a0)
+            H = sp.zeros(n, n).row_join(-sp.eye(n)).col_join(a2.row_join(a1))
+            state = (*self.coordinates, *(dot(y) for y in self.coordinates))
+            return FirstOrderReduction(A, H, sp.zeros(n, 1).col_join(self.w), state, 1)
+        if method != 2:
+            raise ModelError(f"method must be 1 or 2 (Bulgakov (1954), §7.2), got {method!r}")
+        orders = self.coordinate_orders()
+        coeffs = (a2, a1, a0)  # coefficient of D^r is coeffs[r]
+        q = self.coordinates
+        # unknowns: all y_k, then y_k' for m_k = 2 (derivative r of coordinate k at column col[(k, r)])
+        col = {(k, 0): k for k in range(n)}
+        state: list[sp.Expr] = list(q)
+        for k in range(n):
+            for r in range(1, orders[k]):
+                col[(k, r)] = len(state)
+                state.append(dot(q[k]) if r == 1 else ddot(q[k]))
+        size = len(state)
+        trivial = size - n
+        A = sp.zeros(trivial + n, size)
+        H = sp.zeros(trivial + n, size)
+        row = 0
+        for k in range(n):
+            for r in range(orders[k] - 1):
+                A[row, col[(k, r)]] = 1
+                H[row, col[(k, r + 1)]] = -1
+                row += 1
+        for j in range(a0.rows):
+            for k in range(n):
+                mk = orders[k]
+                for r in range(mk + 1):
+                    c = coeffs[r][j, k]
+                    if c == 0:
+                        continue
+                    if r == mk and mk > 0:
+                        A[trivial + j, col[(k, mk - 1)]] += c
+                    else:
+                        H[trivial + j, col[(k, r)]] += c
+        W = sp.zeros(trivial, 1).col_join(self.w)
+        return FirstOrderReduction(A, H, W, tuple(state), 2)
+
+
+@dataclass(frozen=True)
+class FirstOrderReduction:
+    """``A Y' + H Y = W`` from ``f(D) y = w`` (Bulgakov (1954), §7.2, eqs. (7.25)-(7.26)); unpacks as
+    ``A, H, W``.
+
+    Attributes
+    ----------
+    A, H, W : Matrix
+        Coefficients (``A`` may be singular: a descriptor system when some equations are algebraic).
+    state : tuple of Expr
+        The unknowns ``Y`` (coordinates, then ``dot(q)``).
+    method : int
+        1 or 2, as in §7.2.
+
+    See Also
+    --------
+    VariationalEquations.first_order
+    """
+
+    A: sp.Matrix
+    H: sp.Matrix
+    W: sp.Matrix
+    state: tuple
+    method: int
+
+    def __iter__(self):
+        return iter((self.A, self.H, self.W))
+
+    def __repr__(self) -> str:
+        return f"FirstOrderReduction(method {self.method}, {len(self.state)} unknowns, {self.A.rows} equations)"
+
+    def _repr_latex_(self) -> str:
+        return f"$${sp.latex(self.A)} \\dot{{Y}} + {sp.latex(self.H)} Y = {sp.latex(self.W)}$$"
+
+    def characteristic_polynomial(self, symbol: sp.Symbol = LAMBDA) -> sp.Expr:
+        """``det(A lambda + H)`` (constant coefficients)."""
+        return sp.factor((self.A * symbol + self.H).det(method="berkowitz"))
 
 
 def variational_equations(

@@ -50,6 +50,14 @@ def test_values_match_closed_forms():
     assert s316["J_ho"] == h / w and s316["nu_ho"] == w
     assert sp.simplify(s316["J_kepler"] - (k * sp.sqrt(m / (-2 * E)) - Lz)) == 0
     assert sp.simplify(s316["T_kepler"] - 2 * sp.pi * k * sp.sqrt(m) / (-2 * E) ** sp.Rational(3, 2)) == 0
+    factor, pth2, pr2, beta = s316["separation"]
+    assert factor == 2 * m * r**2
+    assert sp.expand(pth2 - (beta - 2 * m * c * sp.cos(th))) == 0
+    assert sp.expand(pr2 - (2 * m * (h + k / r) - beta / r**2)) == 0
+    s72 = mod.section_7_2()  # Bulgakov (1954), §8.52, Example 2: Delta = D - 3
+    lam = sp.Symbol("lambda")
+    assert s72["orders"] == (2, 1) and s72["sizes"] == (4, 3)
+    assert sp.cancel(s72["char2"] / (lam - 3)) in (1, -1) and sp.cancel(s72["char1"] / (lam - 3)) in (1, -1)
     s7 = mod.section_7()
     assert s7["T"] == J / c
     assert sp.Symbol("lambda") not in s7["ratio"].free_symbols and s7["ratio"] != 0

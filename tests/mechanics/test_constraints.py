@@ -337,3 +337,71 @@ def test_dynamicsymbols_input_and_pickling():
     mf = ref.constrained.minimal_form()
     back = pickle.loads(pickle.dumps(mf))
     assert back.mass_matrix == mf.mass_matrix and back.dependent == mf.dependent
+
+
+# ---------------------------------------------------------------- rank of the constraint Jacobian
+def _rank_numpy(rows, point):
+    """Independent reference: numpy's SVD rank of the Jacobian evaluated with lambdify at one point."""
+    import numpy as np
+
+    return int(np.linalg.matrix_rank(np.array(sp.lambdify(list(point), rows)(*point.values()), dtype=float)))
+
+
+def test_constraints_dependent_everywhere():
+    """Redundant/inconsistent constraints (Bulgakov (1954), §3.1: the c constraint equations must be independent):
+    the Jacobian loses rank at every configuration; the error names the dependent constraint and the ones it
+    depends on, also for trigonometric (non-rational) constraints that go through the numeric test."""
+    T = m / 2 * (dot(x) ** 2 + dot(y) ** 2 + dot(z) ** 2)
+    # sin(x) - y = 0 and exp(sin(x) - y) = 2 are functionally dependent (inconsistent): parallel gradients
+    c1, c2 = sp.sin(x) - y, sp.exp(sp.sin(x) - y) - 2
+    rows = sp.Matrix([[c.diff(v) for v in (x, y, z)] for c in (c1, c2)])
+    assert _rank_numpy(rows, {x: 0.37, y: -1.1, z: 0.2}) == 1  # the reference agrees that they are dependent
+    with pytest.raises(ModelError, match=r"constraint 2 \(.*\) is linearly dependent on constraint 1"):
+        LagrangianSystem(T, 0, [x, y, z], constraints=[c1, c2])
+    # the dependent set is named, constraints that do not take part are not
+    with pytest.raises(
+        ModelError, match=r"constraint 3 \(2\*x \+ 2\*y - 3\) is linearly dependent on constraint 1 \("
+    ) as info:
+        LagrangianSystem(T, 0, [x, y, z, l], constraints=[x + y - 1, z, 2 * x + 2 * y - 3])
+    assert "constraint 2 (z)" not in str(info.value)
+    # a trigonometric identity in disguise: the gradient vanishes identically (numeric path, 30 digits)
+    with pytest.raises(ModelError, match=r"constraint 1 .* gradient vanishes identically"):
+        LagrangianSystem(T, 0, [x, y, z], constraints=[sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1])
+
+
+def test_constraints_dependent_on_the_set_they_define():
+    """Independent at generic configurations but dependent at every point where they hold: x = 0, x + y^2 = 0
+    (which forces y = 0, where the gradients (1, 0), (1, 2y) coincide) and the circle written three times."""
+    T = m / 2 * (dot(x) ** 2 + dot(y) ** 2 + dot(z) ** 2)
+    rows = sp.Matrix([[1, 0, 0], [1, 2 * y, 0]])
+    assert _rank_numpy(rows, {y: 0.3}) == 2 and _rank_numpy(rows, {y: 0.0}) == 1
+    with pytest.raises(ModelError, match="rank 1 < 2 everywhere on the set"):
+        LagrangianSystem(T, 0, [x, y, z], constraints=[x, x + y**2])
+    with pytest.raises(ModelError, match="rank 2 < 3 everywhere on the set"):
+        LagrangianSystem(T, 0, [x, y, z, l], constraints=[sp.sin(x) - y, sp.cos(x) - z, y**2 + z**2 - 1])
+
+
+def test_constraints_dependent_on_a_submanifold_only():
+    """Documented behaviour: a helix x = l cos z on the cylinder x^2 + y^2 = l^2 is tangent to it where
+    z = k pi (y = 0, gradients (2x, 2y, 0) and (1, 0, l sin z) parallel).  The set of such points has lower
+    dimension than the constrained configuration space, so the system is accepted; the multiplier form then
+    refuses that configuration (singular augmented matrix) and is regular elsewhere."""
+    L0 = sp.Symbol("L0", positive=True)
+    T = m / 2 * (dot(x) ** 2 + dot(y) ** 2 + dot(z) ** 2)
+    s = LagrangianSystem(T, 0, [x, y, z], constraints=[x**2 + y**2 - L0**2, x - L0 * sp.cos(z)])
+    vals = {"m": 1.0, "L0": 1.0}
+    with pytest.raises(ModelError, match="singular"):
+        s.constrained.accelerations(vals, 0.0, [1.0, 0.0, 0.0, 0.0, 1.0, 0.5])
+    z0 = 0.7
+    qdd, lam = s.constrained.accelerations(vals, 0.0, [np.cos(z0), np.sin(z0), z0, 0.0, 0.0, 0.0])
+    assert abs(qdd).max() < 1e-12 and abs(lam).max() < 1e-12  # at rest, no forces: no reaction
+
+
+def test_independent_constraints_accepted():
+    """Independent constraints, including ones whose Jacobian is singular only away from the constraint set
+    (the circle at the origin), pass; the multiplier count equals the constraint count."""
+    T = m / 2 * (dot(x) ** 2 + dot(y) ** 2 + dot(z) ** 2)
+    s = LagrangianSystem(T, 0, [x, y, z], constraints=[x**2 + y**2 - l**2], nonholonomic=[dot(z) - sp.sin(x) * dot(y)])
+    assert len(s.constrained.multipliers) == 2
+    s2 = LagrangianSystem(T, 0, [x, y, z], constraints=[x**2 + y**2 + z**2 - l**2, z - x * y])
+    assert s2.constrained.jacobian.rows == 2

@@ -212,3 +212,79 @@ def test_result_objects_pickle_and_print():
         back = pickle.loads(pickle.dumps(o))
         assert back == o
         assert type(o).__name__ in repr(o)
+
+
+# ---------------------------------------------------------------- §7.2: reduction to first order, methods 1 and 2
+W_ = sp.Symbol("W_", real=True)  # a coordinate of order 1 (a speed)
+y3 = sp.Symbol("y3", real=True)  # a coordinate of order 0
+
+
+def _governor_like(eps=0):
+    """Sleeve x of a governor (order 2) driven by the engine speed W_ (order 1): Bulgakov (1954), §7.5-7.6
+    structure, m x'' + c x' + k (1 + eps cos t) x - b W_ = 0, J W_' + kappa x = sin t."""
+    b, J, kap = sp.symbols("b J kappa", positive=True)
+    phis = [m * ddot(x) + c * dot(x) + k * (1 + eps * sp.cos(t)) * x - b * W_, J * dot(W_) + kap * x - sp.sin(t)]
+    return variational_equations(phis, [x, W_]), (b, J, kap)
+
+
+def test_first_order_methods_characteristic_polynomial():
+    """Both reductions of §7.2 have det(A lambda + H) = +-det f(lambda) (Bulgakov (1954), eqs. (7.25)-(7.26)):
+    det f(lambda) written out by hand for the governor-like system, and for a system with an algebraic
+    coordinate (order 0); method 2 has sum max(1, m_k) unknowns."""
+    ve, (b, J, kap) = _governor_like()
+    by_hand = sp.expand((m * lam**2 + c * lam + k) * J * lam + b * kap)  # det [[m l^2 + c l + k, -b], [kap, J l]]
+    for method, size in ((1, 4), (2, 3)):
+        red = ve.first_order(method=method)
+        assert len(red.state) == size and red.A.shape == (size, size)
+        ratio = sp.cancel(red.characteristic_polynomial(lam) / by_hand)
+        assert ratio in (1, -1)
+    assert ve.coordinate_orders() == (2, 1)
+    assert ve.first_order(method=1).A.det() == 0 and ve.first_order(method=2).A.det() != 0
+    # orders (2, 2, 0): y3 enters algebraically
+    ve3 = variational_equations([ddot(x) + 2 * x - z + y3, ddot(z) + c * dot(z) + z - x, y3 - k * dot(x)], [x, z, y3])
+    by_hand3 = sp.expand(sp.Matrix([[lam**2 + 2, -1, 1], [-1, lam**2 + c * lam + 1, 0], [-k * lam, 0, 1]]).det())
+    red2 = ve3.first_order(method=2)
+    assert ve3.coordinate_orders() == (2, 2, 0) and len(red2.state) == 5  # 2 + 2 + max(1, 0)
+    for method in (1, 2):
+        assert sp.cancel(ve3.first_order(method=method).characteristic_polynomial(lam) / by_hand3) in (1, -1)
+    # numeric: eigenvalues of the method-2 pencil (scipy) are the roots of det f(lambda) (numpy)
+    import scipy.linalg
+
+    vals = {c: 0.3, k: 0.7}
+    A2, H2, _ = (np.array(mm.xreplace(vals), dtype=float) for mm in red2)
+    eig = scipy.linalg.eigvals(-H2, A2)
+    eig = np.sort_complex(eig[np.isfinite(eig)])
+    roots = np.sort_complex(np.roots([float(v) for v in sp.Poly(by_hand3.xreplace(vals), lam).all_coeffs()]))
+    assert np.allclose(eig, roots, atol=1e-10)
+
+
+def test_first_order_method_2_solutions_match_original_system():
+    """Solutions of the method-2 system A Y' + H Y = W (time-varying coefficients, forcing) equal those of the
+    original mixed-order system integrated directly with solve_ivp (hand-written right-hand side)."""
+    ve, (b, J, kap) = _governor_like(eps=sp.Rational(1, 2))
+    vals = {m: 1.3, c: 0.4, k: 2.0, b: 0.8, J: 1.7, kap: 0.6}
+    red = ve.first_order(method=2)
+    assert red.state == (x, W_, dot(x))
+    A = sp.lambdify(t, red.A.xreplace(vals))
+    Hm = sp.lambdify(t, red.H.xreplace(vals))
+    Wv = sp.lambdify(t, red.W.xreplace(vals))
+
+    def reduced(tt, Y):
+        return np.linalg.solve(np.array(A(tt), dtype=float), np.ravel(Wv(tt)) - np.array(Hm(tt), dtype=float) @ Y)
+
+    def original(tt, s):  # s = (x, x', W_)
+        xx, xd, ww = s
+        xdd = (-0.4 * xd - 2.0 * (1 + 0.5 * np.cos(tt)) * xx + 0.8 * ww) / 1.3
+        return [xd, xdd, (np.sin(tt) - 0.6 * xx) / 1.7]
+
+    x0, v0, w0 = 0.3, -0.2, 0.5
+    ts = np.linspace(0, 10, 11)
+    opts = {"method": "DOP853", "rtol": 1e-12, "atol": 1e-12, "t_eval": ts}
+    a = solve_ivp(reduced, (0, 10), [x0, w0, v0], **opts).y
+    o = solve_ivp(original, (0, 10), [x0, v0, w0], **opts).y
+    assert np.allclose(a[0], o[0], atol=1e-9) and np.allclose(a[1], o[2], atol=1e-9)
+    assert np.allclose(a[2], o[1], atol=1e-9)
+    # method 1 of the same system is a descriptor system (A singular): not integrable as an explicit ODE
+    assert ve.first_order(method=1).A.xreplace(vals).det() == 0
+    with pytest.raises(ModelError, match="method must be 1 or 2"):
+        ve.first_order(method=3)
