@@ -102,7 +102,7 @@ def averaging_examples() -> None:
     _row("Coulomb friction: a' (4B per period)", "-2F/pi", averaged_equations(x + F * sp.sign(v)).a_dot)
     k_ = sp.Symbol("k", positive=True)
     sa = averaged_equations(k_**2 * (sp.exp(x) - 1), center=True)
-    _row("(5.356) shock absorber centre q*", "-ln I0(a)", sa.centre)
+    _row("(5.356) shock absorber center q*", "-ln I0(a)", sa.center)
     _row("(5.356) omega^2", "2 k^2 I1(a)/(a I0(a))", sa.frequency_squared)
     _row("(5.365) pendulum J(a)", "2 k^2 J1(a)", describing_function(k_**2 * sp.sin(x)))
     from symosc.nonlinear import dry_friction_ratio

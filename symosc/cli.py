@@ -25,7 +25,7 @@ def _double_pendulum(args: argparse.Namespace) -> int:
     print("Double physical pendulum (Gribkov & Khokhlov 2015, Table 1), hanging, fixed pivot")
     print("parameters (SI): " + ", ".join(f"{k}={v:g}" for k, v in values.items()))
     print()
-    print("linearised model  M phi'' + K phi = 0:")
+    print("linearized model  M phi'' + K phi = 0:")
     print(f"  M = {lin.M.tolist()}")
     print(f"  K = {lin.K.tolist()}")
     print()

@@ -4,7 +4,7 @@
 formula with projectors ``ε_σ = Π_(τ≠σ) (A - λ_τE)/(λ_σ - λ_τ)`` (1.278); multiple roots (non-linear elementary
 divisors) the confluent form.  For floating-point matrices nearly equal roots are grouped into clusters and f is
 interpolated in Newton form with divided differences computed from the Taylor series of f about each cluster
-centre, so no ``1/(λ_σ - λ_τ)`` with a small difference is ever formed.
+center, so no ``1/(λ_σ - λ_τ)`` with a small difference is ever formed.
 """
 
 from __future__ import annotations
@@ -93,7 +93,7 @@ def matrix_function(
         A is not square, or f (or a derivative that the Jordan structure needs) is not defined at an eigenvalue
         (``log`` at 0, ``sqrt`` at 0 with a Jordan block, a pole of a rational f).
     ConvergenceError
-        Floating point: the Taylor series of f about a cluster centre does not converge (a singularity is near).
+        Floating point: the Taylor series of f about a cluster center does not converge (a singularity is near).
 
     Examples
     --------

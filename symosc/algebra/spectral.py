@@ -36,7 +36,7 @@ class SpectralComponent:
     Attributes
     ----------
     root : Expr
-        λ_σ (for a cluster: its centre).
+        λ_σ (for a cluster: its center).
     multiplicity : int
         Algebraic multiplicity q_σ (cluster: number of eigenvalues in it).
     index : int
@@ -77,7 +77,7 @@ class SpectralDecomposition:
 
     @property
     def roots(self) -> list[sp.Expr]:
-        """Distinct roots (cluster centres in floating point)."""
+        """Distinct roots (cluster centers in floating point)."""
         return [c.root for c in self.components]
 
     @property
@@ -357,12 +357,12 @@ def _cluster(eigs: np.ndarray, cluster_tol: float) -> list[list[int]]:
     for i in range(n):
         groups.setdefault(find(i), []).append(i)
     clusters = list(groups.values())
-    # Leja order of the centres: start with the largest, then maximise the product of distances.
-    centres = [np.mean(eigs[g]) for g in clusters]
-    order = [int(np.argmax(np.abs(centres)))]
+    # Leja order of the centers: start with the largest, then maximise the product of distances.
+    centers = [np.mean(eigs[g]) for g in clusters]
+    order = [int(np.argmax(np.abs(centers)))]
     while len(order) < len(clusters):
         rest = [i for i in range(len(clusters)) if i not in order]
-        best = max(rest, key=lambda i: np.prod([abs(centres[i] - centres[j]) for j in order]))
+        best = max(rest, key=lambda i: np.prod([abs(centers[i] - centers[j]) for j in order]))
         order.append(best)
     return [clusters[i] for i in order]
 

@@ -1,9 +1,10 @@
 """Identification: modal models from sampled oscillations (Belyakov 2005) and their error studies.
 
-Signal estimators share one interface, ``estimator(signals, dt, n_modes=None, *, order=None, constant=True, ...)``
+Signal estimators share one interface, ``estimator(signals, dt, n_modes=None, *, n_poles=None, constant=True, ...)``
 with ``signals`` of shape ``(samples,)`` or ``(channels, samples)``, and return a :class:`ModalEstimate`.
 """
 
+from .._deprecation import module_getattr as _module_getattr
 from ._signals import ModalEstimate
 from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
 from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
@@ -38,12 +39,12 @@ from .prony import SamplingAdvice, prony, sampling_advice
 from .reconstruction import (
     InertiaEstimate,
     InertiaTensor,
-    algorithm1,
-    algorithm21,
-    algorithm22,
     assemble_tensor,
     central_identity,
     check_distinct,
+    inertia_equal_springs,
+    inertia_from_release,
+    inertia_known_center,
     real_modes,
 )
 from .refine import refine
@@ -71,9 +72,6 @@ __all__ = [
     "SecondOrderModel",
     "StandRecord",
     "add_noise",
-    "algorithm1",
-    "algorithm21",
-    "algorithm22",
     "applicability",
     "assemble_tensor",
     "central_identity",
@@ -87,6 +85,9 @@ __all__ = [
     "excitation_time",
     "excitation_time_bound",
     "flywheel",
+    "inertia_equal_springs",
+    "inertia_from_release",
+    "inertia_known_center",
     "jacobian",
     "matrix_pencil",
     "min_time_1dof",
@@ -109,3 +110,11 @@ __all__ = [
     "switching_curves",
     "two_stage",
 ]
+
+
+_DEPRECATED_NAMES = {
+    "algorithm1": "inertia_from_release",
+    "algorithm21": "inertia_equal_springs",
+    "algorithm22": "inertia_known_center",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())

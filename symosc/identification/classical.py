@@ -83,8 +83,8 @@ def flywheel() -> InertiaFormula:
 
 
 def physical_pendulum() -> InertiaFormula:
-    """Physical pendulum: mass ``m``, centre of mass at distance ``r`` from the pivot, small-oscillation angular
-    frequency ``omega``; returns the moment of inertia about the centre of mass.
+    """Physical pendulum: mass ``m``, center of mass at distance ``r`` from the pivot, small-oscillation angular
+    frequency ``omega``; returns the moment of inertia about the center of mass.
 
     Equation of motion ``(I + m r^2) phi'' + m g r phi = 0`` with ``phi = cos(omega t)``.
 
@@ -100,8 +100,8 @@ def physical_pendulum() -> InertiaFormula:
 
 def rocking_platform() -> InertiaFormula:
     """Platform (own inertia ``J`` about its hinge) rocking on a spring of stiffness ``c`` at lever ``l``; the
-    body's centre of mass is at distance ``d`` from the hinge axis, in its plane (no gravity moment).  Returns the
-    body's moment of inertia about its centre of mass from the angular frequency ``omega``.
+    body's center of mass is at distance ``d`` from the hinge axis, in its plane (no gravity moment).  Returns the
+    body's moment of inertia about its center of mass from the angular frequency ``omega``.
 
     Equation of motion ``(J + I + m d^2) phi'' + c l^2 phi = 0``.
 

@@ -1,7 +1,7 @@
 """Effect of damping on the identified model (Belyakov Ch. III §4, eqs 90–106).
 
 ``M q'' + D q' + K q = 0``.  :func:`quadratic_modes` solves the quadratic eigenproblem
-``(lambda^2 M + lambda D + K) u = 0`` through its symmetric linearisation, the pencil ``A w = lambda B w`` with
+``(lambda^2 M + lambda D + K) u = 0`` through its symmetric linearization, the pencil ``A w = lambda B w`` with
 ``A = [[-K, 0], [0, M]]``, ``B = [[D, M], [M, 0]]``, ``w = (u, lambda u)`` — and reports the undamped-frequency
 estimates ``|lambda|`` (eq. 97) and mode-shape moduli (stage 3).  :func:`damping_perturbation` gives the
 first-order theory for small damping ``eps D``: ``lambda = i omega + eps lambda_1 + O(eps^2)`` with

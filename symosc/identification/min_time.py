@@ -379,7 +379,7 @@ def excitation_time_bound(
 
     Examples
     --------
-    The stand of Ch. II §4.5 (equal springs, centred CM, ±5 N actuators, 2 mm amplitudes):
+    The stand of Ch. II §4.5 (equal springs, centered CM, ±5 N actuators, 2 mm amplitudes):
 
     >>> import numpy as np
     >>> Lx, Lz, k, am = 4.0, 1.74, 7.4e5, 2e-3

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from .._deprecation import renamed_keyword
 from ..errors import ParameterError
 from ._signals import (
     ModalEstimate,
@@ -112,12 +113,13 @@ def sampling_advice(dt: float, n_samples: int, omega_max: float) -> SamplingAdvi
     )
 
 
+@renamed_keyword({"order": "n_poles"})
 def prony(
     signals: Any,
     dt: float,
     n_modes: int | None = None,
     *,
-    order: int | None = None,
+    n_poles: int | None = None,
     constant: bool = True,
     decimate: int = 1,
     dps: int | None = None,
@@ -132,9 +134,9 @@ def prony(
     dt : float
         Sampling period (s).
     n_modes : int, optional
-        Number of oscillatory modes.  If neither it nor ``order`` is given, the order is selected from the
+        Number of oscillatory modes.  If neither it nor ``n_poles`` is given, the order is selected from the
         largest gap of the singular values of the data Hankel matrix.
-    order : int, optional
+    n_poles : int, optional
         Total number of exponentials, ``2 n_modes + 1`` with a constant term (``2 n_modes`` without).
     constant : bool
         Include the constant offset (Belyakov's A0, root z = 1).
@@ -176,7 +178,7 @@ def prony(
     yd = y[:, ::m]
     dtd = dt * m
     nch, n = yd.shape
-    p = _resolve_order(n_modes, order, constant)
+    p = _resolve_order(n_modes, n_poles, constant)
     use_const = bool(constant)
     if p is None:
         rows = max(2, min(n // 2, max(2, 200 // nch)))

@@ -135,7 +135,7 @@ def two_stage(
     j = np.arange(2 * terms)
     markov = 2.0 * np.real(h @ (lam[:, None] ** j[None, :]))  # S_{j+1}, (c, 2*terms)
     odd, even = markov[:, 0::2], markov[:, 1::2]
-    a, c, q0, sv, _, _ = realize(odd, n, rows=terms // 2 + 1, constant=False)
+    a, c, q0, sv, _, _ = realize(odd, n, hankel_size=terms // 2 + 1, constant=False)
     # v0 from S_{2k} = C A^{k-1} v0 (least squares over the observability matrix)
     obs = np.vstack([c @ np.linalg.matrix_power(a, k) for k in range(terms)])
     v0, *_ = np.linalg.lstsq(obs, even.T.reshape(-1), rcond=None)

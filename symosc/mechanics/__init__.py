@@ -1,4 +1,4 @@
-"""Analytic mechanics: Lagrange equations, linearisation, first-order form.
+"""Analytic mechanics: Lagrange equations, linearization, first-order form.
 
 >>> from symosc.mechanics import LagrangianSystem, LinearModel, FirstOrderSystem
 """

@@ -314,7 +314,7 @@ class LagrangianSystem:
         return FirstOrderSystem(self)
 
     def linearize(self, point: Mapping[Any, Any] | None = None, *, check_equilibrium: bool = True):
-        """Linearise about ``point`` (coordinates -> values, default all zero) with zero velocities.
+        """Linearize about ``point`` (coordinates -> values, default all zero) with zero velocities.
 
         Builds M, D, K directly from the energies (no full nonlinear forcing is needed):
         with T = 1/2 q'^T M q' + b^T q' + T0,

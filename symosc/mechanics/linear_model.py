@@ -1,4 +1,4 @@
-"""Linearised models ``M q'' + D q' + K(t) q = f(t)`` and their modal analysis."""
+"""Linearized models ``M q'' + D q' + K(t) q = f(t)`` and their modal analysis."""
 
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ class LinearModel:
     coordinates : tuple of Symbol
         The deviations q from the point (same symbols as the nonlinear system).
     point : dict
-        The linearisation point.
+        The linearization point.
 
     Examples
     --------
@@ -192,7 +192,7 @@ def _point_map(system: LagrangianSystem, point: Mapping[Any, Any] | None) -> dic
     for key, val in (point or {}).items():
         name = key.name if isinstance(key, sp.Symbol) else str(key)
         if name not in by_name:
-            raise ModelError(f"linearisation point names {name!r}, which is not a coordinate")
+            raise ModelError(f"linearization point names {name!r}, which is not a coordinate")
         q0[by_name[name]] = sp.sympify(val)
     return q0
 
@@ -252,6 +252,6 @@ def linearize_system(
             if fi != 0 and t not in fi.free_symbols and sp.simplify(fi) != 0:
                 raise ModelError(
                     f"the point {q0} is not an equilibrium: the generalised force on {q[i].name} is {fi}; "
-                    "pass check_equilibrium=False to linearise anyway"
+                    "pass check_equilibrium=False to linearize anyway"
                 )
     return lin

@@ -7,6 +7,9 @@ any requested order, and checked against direct numerical integration through :m
 
 from __future__ import annotations
 
+import sys as _sys
+
+from .._deprecation import module_getattr as _module_getattr
 from ._averaging_numeric import Fold, FrequencyResponse, SteadyState
 from ._ndof_exponents import CharacteristicExponentSeries
 from ._series import EpsSeries, RadiusEstimate
@@ -27,13 +30,13 @@ from .delay import (
     quasi_polynomial,
     quasi_polynomial_roots,
 )
-from .harmonic_linearisation import (
+from .harmonic_linearization import (
     HarmonicCycle,
-    HarmonicLinearisation,
-    LinearisationBoundary,
+    HarmonicLinearization,
+    LinearizationBoundary,
     TwoNonlinearityCycle,
-    harmonic_linearisation,
-    linearisation_boundary,
+    harmonic_linearization,
+    linearization_boundary,
     neimark_curve,
     self_oscillations,
     servo_characteristic,
@@ -93,10 +96,10 @@ __all__ = [
     "FrequencyResponse",
     "HalfSwingMap",
     "HarmonicCycle",
-    "HarmonicLinearisation",
+    "HarmonicLinearization",
     "LimitCycleSeries",
     "LindstedtSeries",
-    "LinearisationBoundary",
+    "LinearizationBoundary",
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
@@ -122,10 +125,10 @@ __all__ = [
     "dry_friction_torus_average",
     "fast_averaged_system",
     "half_swing_map",
-    "harmonic_linearisation",
+    "harmonic_linearization",
     "limit_cycle",
     "lindstedt",
-    "linearisation_boundary",
+    "linearization_boundary",
     "neimark_curve",
     "numeric_limit_cycle",
     "numeric_orbit",
@@ -149,3 +152,16 @@ __all__ = [
     "vibrational_averaging_of",
     "vibrational_stiffness",
 ]
+
+
+# The module was called ``harmonic_linearisation`` before the project settled on American spelling: keep the old
+# import path working (its deprecated names warn once).
+_sys.modules[__name__ + ".harmonic_linearisation"] = _sys.modules[__name__ + ".harmonic_linearization"]
+
+_DEPRECATED_NAMES = {
+    "harmonic_linearisation": "harmonic_linearization",
+    "HarmonicLinearisation": "HarmonicLinearization",
+    "LinearisationBoundary": "LinearizationBoundary",
+    "linearisation_boundary": "linearization_boundary",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())

@@ -108,7 +108,7 @@ def integrate_shortened(avg: AveragedEquations, a0: float, t_eval: Any, values: 
 class SteadyState:
     """A steady forced response ``x = a cos(nu t - theta)`` (first approximation).
 
-    ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"centre"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
+    ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"center"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
     ``"saddle"`` (M2 < 0) or ``"unstable"`` (M2 > 0, M1 < 0).
     """
 
@@ -121,7 +121,7 @@ class SteadyState:
 
     @property
     def stable(self) -> bool:
-        return self.kind in ("stable", "centre")
+        return self.kind in ("stable", "center")
 
 
 @dataclass(frozen=True)
@@ -277,7 +277,7 @@ class _Forced:
         m1, m2, p2, q2 = (float(z) for z in self.M(nu, amp))
         scale = 1e-9 * (1 + abs(m2))
         if self.conservative:
-            kind = "centre" if m2 > 0 else "saddle"
+            kind = "center" if m2 > 0 else "saddle"
         elif m2 < -scale:
             kind = "saddle"
         else:

@@ -366,7 +366,7 @@ def quasi_polynomial_roots(
 
 
 def _polish(q: QuasiPolynomial, derivs: list, box: tuple, m: int, dps: int, tol: float) -> Any:
-    """Newton from the box centre on ``f^(m-1)``; the result must lie in the box (slightly enlarged)."""
+    """Newton from the box center on ``f^(m-1)``; the result must lie in the box (slightly enlarged)."""
     x0, x1, y0, y1 = box
     with mpmath.workdps(dps):
         while len(derivs) <= m:

@@ -221,7 +221,7 @@ class VibrationalAveraging:
     def stiffness(self, point: dict) -> sp.Matrix:
         """Hessian of ``V_eff`` at an equilibrium ``point`` (mapping coordinate -> value)."""
         if self.effective_potential is None:
-            raise ModelError("the averaged force is not potential; linearise slow_force instead")
+            raise ModelError("the averaged force is not potential; linearize slow_force instead")
         q = sp.Matrix(self.coordinates)
         H = sp.hessian(self.effective_potential, q)
         return sp.simplify(
@@ -298,7 +298,7 @@ def vibrational_averaging(
     if n > 1 and any(M.has(s) for s in q):
         raise ModelError(
             "a coordinate-dependent mass matrix is supported for one degree of freedom only (the symbolic averaging "
-            "of M(q)^-1 terms blows up for n >= 2); linearise about the equilibrium first"
+            "of M(q)^-1 terms blows up for n >= 2); linearize about the equilibrium first"
         )
     V = sp.sympify(potential)
     if V.has(t):

@@ -25,6 +25,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
 from ..errors import ModelError, ParameterError
 from ._fourier import ExactArith, FloatArith, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
@@ -75,7 +77,7 @@ class LimitCycleSeries:
     f: sp.Expr
     x: sp.Symbol
     v: sp.Symbol
-    eps: sp.Symbol
+    eps_symbol: sp.Symbol
     order: int
     arithmetic: str
     dps: int | None
@@ -88,6 +90,7 @@ class LimitCycleSeries:
     floquet_exponent: EpsSeries
     stable: bool
     _harmonics: tuple = field(repr=False, compare=False)  # per order: (cos list, sin list) of scaled x_k
+    eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     @property
     def frequency_squared(self) -> EpsSeries:
@@ -95,7 +98,7 @@ class LimitCycleSeries:
         c = self.frequency.coefficients
         n = self.frequency.order
         sq = tuple(sp.Add(*[c[i] * c[k - i] for i in range(k + 1)]) for k in range(n + 1))
-        return EpsSeries(sq, self.eps, n, name="omega**2")
+        return EpsSeries(sq, self.eps_symbol, n, name="omega**2")
 
     def harmonics(self, order: int | None = None) -> list[tuple[list, list]]:
         """Fourier coefficients ``(cos[n], sin[n])`` of ``x_k(tau)`` for k = 0..order (SymPy numbers, unscaled)."""
@@ -116,8 +119,12 @@ class LimitCycleSeries:
         nh = max(len(cs) for cs, _ in self._harmonics[: n + 1])
         out = sp.Integer(0)
         for h in range(nh):
-            cc = sp.Add(*[cs[h] * self.eps**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)])
-            sc = sp.Add(*[ss[h] * self.eps**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)])
+            cc = sp.Add(
+                *[cs[h] * self.eps_symbol**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)]
+            )
+            sc = sp.Add(
+                *[ss[h] * self.eps_symbol**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)]
+            )
             out += cc * sp.cos(h * tau) + sc * sp.sin(h * tau)
         return sp.expand(A0 * out) if A0 != 1 else out
 
@@ -152,11 +159,11 @@ class LimitCycleSeries:
         if numeric:
             from .validate import numeric_orbit
 
-            xn, vn = numeric_orbit(self.f, eps, x=self.x, v=self.v, eps_symbol=self.eps)
+            xn, vn = numeric_orbit(self.f, eps, x=self.x, v=self.v, eps_symbol=self.eps_symbol)
             ax.plot(xn, vn, "--", label="numeric cycle")
         ax.set_xlabel(str(self.x))
         ax.set_ylabel(f"d{self.x}/dt")
-        ax.set_title(f"limit cycle, {self.eps} = {eps:g}")
+        ax.set_title(f"limit cycle, {self.eps_symbol} = {eps:g}")
         ax.legend()
         return ax
 
@@ -170,8 +177,9 @@ class LimitCycleSeries:
     def __repr__(self) -> str:
         st = "stable" if self.stable else "unstable"
         return (
-            f"LimitCycleSeries(x'' + x = {self.eps}*({self.f}), order={self.order}, arithmetic={self.arithmetic!r},\n"
-            f"  A* = {self.generating_amplitude} ({st} for small {self.eps} > 0),\n"
+            f"LimitCycleSeries(x'' + x = {self.eps_symbol}*({self.f}), order={self.order}, "
+            f"arithmetic={self.arithmetic!r},\n"
+            f"  A* = {self.generating_amplitude} ({st} for small {self.eps_symbol} > 0),\n"
             f"  {self._short(self.frequency)},\n  {self._short(self.amplitude)})"
         )
 
@@ -183,18 +191,19 @@ class LimitCycleSeries:
 
     def _repr_latex_(self) -> str:
         return (
-            f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps ** (self.order + 1))}),\\quad "
-            f"a = {sp.latex(self.amplitude.expr)} + O({sp.latex(self.eps ** (self.order + 1))})$"
+            f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))}),\\quad "
+            f"a = {sp.latex(self.amplitude.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))})$"
         )
 
 
+@renamed_keyword({"eps": "eps_symbol"})
 def limit_cycle(
     f: Any,
     order: int,
     *,
     x: sp.Symbol = X,
     v: sp.Symbol = V,
-    eps: sp.Symbol = EPS,
+    eps_symbol: sp.Symbol = EPS,
     arithmetic: str = "exact",
     dps: int | None = None,
     amplitude0: float | None = None,
@@ -248,6 +257,7 @@ def limit_cycle(
     >>> lc.floquet_exponent.coefficients[:2]
     (0, -1)
     """
+    eps = eps_symbol
     if isinstance(order, bool) or not isinstance(order, int | np.integer) or order < 1:
         raise ParameterError(f"order must be an integer >= 1, got {order!r}")
     order = int(order)
@@ -343,7 +353,7 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
         f=f,
         x=x,
         v=v,
-        eps=eps,
+        eps_symbol=eps,
         order=order,
         arithmetic=arithmetic,
         dps=dps,

@@ -112,7 +112,7 @@ class ClockEscapement:
 def clock_escapement(B: Any, h: Any, f: Any = 0) -> ClockEscapement:
     """Clock with Coulomb friction and an instantaneous escapement impulse (Bulgakov §5.11).
 
-    The map is derived from energy conservation about the friction centre ``+B`` of the leftward swing:
+    The map is derived from energy conservation about the friction center ``+B`` of the leftward swing:
     ``(b + B)^2 = (a - B)^2 + h``.
 
     Examples

@@ -361,7 +361,7 @@ def validate_limit_cycle(
     for e in eps_list:
         t0 = time.perf_counter()
         cyc = numeric_limit_cycle(
-            f_num, e, x=lc.x, v=lc.v, eps_symbol=lc.eps, guess=float(lc.generating_amplitude), rtol=rtol, dps=dps
+            f_num, e, x=lc.x, v=lc.v, eps_symbol=lc.eps_symbol, guess=float(lc.generating_amplitude), rtol=rtol, dps=dps
         )
         tnum = time.perf_counter() - t0
         for n in orders:
@@ -414,7 +414,7 @@ def validate_lindstedt(ls: Any, eps: float, A: float, *, orders: Any = None, rto
     >>> val.rows[0]["frequency_error"] < 1e-9
     True
     """
-    T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps, rtol=rtol)
+    T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps_symbol, rtol=rtol)
     om_num = 2 * np.pi / T
     orders = [ls.order] if orders is None else [int(o) for o in orders]
     rows = []

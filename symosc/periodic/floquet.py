@@ -147,8 +147,8 @@ class FloquetResult:
             used |= cluster
             k = int(cluster.sum())
             if k > 1:
-                centre = on[cluster].mean()
-                sv = np.linalg.svd(self.monodromy - centre * np.eye(self.monodromy.shape[0]), compute_uv=False)
+                center = on[cluster].mean()
+                sv = np.linalg.svd(self.monodromy - center * np.eye(self.monodromy.shape[0]), compute_uv=False)
                 nullity = int(np.sum(sv <= ctol * scale))
                 if nullity < k:
                     return "critical"

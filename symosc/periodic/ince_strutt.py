@@ -23,6 +23,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -136,7 +138,7 @@ class InceStruttDiagram:
     q : ndarray
         Grid of ``q >= 0``.
     a_curves, b_curves : dict[int, ndarray]
-        ``a_n(q)`` for ``n = 0..orders`` and ``b_n(q)`` for ``n = 1..orders``.
+        ``a_n(q)`` for ``n = 0..n_max`` and ``b_n(q)`` for ``n = 1..n_max``.
     """
 
     q: np.ndarray
@@ -144,15 +146,18 @@ class InceStruttDiagram:
     b_curves: dict
 
     @property
-    def orders(self) -> int:
+    def n_max(self) -> int:
+        """Largest index ``n`` of the characteristic curves ``a_n``, ``b_n``."""
         return max(self.a_curves)
+
+    orders = _deprecated_attribute("n_max")
 
     def is_stable(self, a: Any, q: Any) -> np.ndarray:
         """Exact stability of ``(a, q)`` (see :func:`mathieu_stable`)."""
         return mathieu_stable(a, q)
 
     def __repr__(self) -> str:
-        return f"InceStruttDiagram(orders 0..{self.orders}, q in [{self.q[0]:g}, {self.q[-1]:g}], {self.q.size} points)"
+        return f"InceStruttDiagram(n = 0..{self.n_max}, q in [{self.q[0]:g}, {self.q[-1]:g}], {self.q.size} points)"
 
     def _repr_latex_(self) -> str:
         return r"$$y'' + (a - 2q\cos 2x)\,y = 0:\quad \text{stable for } a_n(q) < a < b_{n+1}(q)$$"
@@ -164,7 +169,7 @@ class InceStruttDiagram:
         if ax is None:
             _, ax = plt.subplots(figsize=(7, 5))
         if shade:  # stable bands a_n < a < b_{n+1}; the last band is open to the right
-            for n in range(self.orders + 1):
+            for n in range(self.n_max + 1):
                 right = self.b_curves[n + 1] if n + 1 in self.b_curves else np.full(self.q.shape, a_range[1])
                 ax.fill_betweenx(self.q, self.a_curves[n], np.maximum(right, self.a_curves[n]), color="0.85")
         for kind, curves, ls in (("a", self.a_curves, "k-"), ("b", self.b_curves, "k--")):
@@ -184,22 +189,23 @@ class InceStruttDiagram:
         return ax
 
 
-def ince_strutt_diagram(orders: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
-    """Characteristic curves ``a_0..a_orders``, ``b_1..b_orders`` on ``q in [0, q_max]``.
+@renamed_keyword({"orders": "n_max"})
+def ince_strutt_diagram(n_max: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
+    """Characteristic curves ``a_0..a_n_max``, ``b_1..b_n_max`` on ``q in [0, q_max]``.
 
-    >>> d = ince_strutt_diagram(orders=2, q_max=1.0, num=3)
+    >>> d = ince_strutt_diagram(n_max=2, q_max=1.0, num=3)
     >>> sorted(d.a_curves), sorted(d.b_curves)
     ([0, 1, 2], [1, 2])
     >>> [round(float(d.a_curves[n][0]), 12) for n in range(3)]   # a_n(0) = n**2
     [0.0, 1.0, 4.0]
     """
-    if isinstance(orders, bool) or not isinstance(orders, int) or orders < 0:
-        raise ParameterError(f"orders must be a non-negative integer, got {orders!r}")
+    if isinstance(n_max, bool) or not isinstance(n_max, int) or n_max < 0:
+        raise ParameterError(f"n_max must be a non-negative integer, got {n_max!r}")
     if not (np.isfinite(q_max) and q_max > 0):
         raise ParameterError(f"q_max must be positive and finite, got {q_max!r}")
     q = np.linspace(0.0, float(q_max), int(num))
-    a_c = {n: _char("a", n, q) for n in range(orders + 1)}
-    b_c = {n: _char("b", n, q) for n in range(1, orders + 1)}
+    a_c = {n: _char("a", n, q) for n in range(n_max + 1)}
+    b_c = {n: _char("b", n, q) for n in range(1, n_max + 1)}
     return InceStruttDiagram(q=q, a_curves=a_c, b_curves=b_c)
 
 
@@ -304,17 +310,18 @@ class ModifiedInceStruttDiagram:
         rn = self.ratios[-1]
         return rf"$$a_0(q) < a < {rn:.6g}\, b_1\!\left(\frac{{q}}{{{rn:.6g}}}\right)$$"
 
+    @renamed_keyword({"orders": "n_max"})
     def plot(
         self,
         ax: Any = None,
         *,
-        orders: int = 1,
+        n_max: int = 1,
         q_max: float = 1.0,
         a_range: tuple[float, float] | None = None,
         num: int = 201,
         shade: bool = True,
     ) -> Any:
-        """Boundary curves of resonances ``0..orders`` for every mode (mode 1 solid, higher modes dashed) in
+        """Boundary curves of resonances ``0..n_max`` for every mode (mode 1 solid, higher modes dashed) in
         first-tone axes, the principal stability region shaded (the paper's Fig. 3)."""
         import matplotlib.pyplot as plt
 
@@ -325,7 +332,7 @@ class ModifiedInceStruttDiagram:
         lo_a, hi_a = np.inf, -np.inf
         for m in range(1, len(self.ratios) + 1):
             ls = styles[min(m - 1, len(styles) - 1)]
-            for n in range(orders + 1):
+            for n in range(n_max + 1):
                 ca = self.curve("a", n, m, q)
                 ax.plot(ca, q, "k" + ls, lw=1.0)
                 lo_a, hi_a = min(lo_a, ca.min()), max(hi_a, ca.max())

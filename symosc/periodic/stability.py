@@ -1,6 +1,6 @@
 """Stability region of a statically unstable pendulum system with a vertically vibrating pivot.
 
-Gribkov & Khokhlov (2015), seed 000, §3 of the research report.  The linearised inverted N-link pendulum
+Gribkov & Khokhlov (2015), seed 000, §3 of the research report.  The linearized inverted N-link pendulum
 with pivot ``y = a cos(p t)``,
 
     M phi'' + (-g + a p^2 cos(p t)) C phi = 0,                                              (6)
@@ -361,7 +361,7 @@ def stability_region(
     Parameters
     ----------
     system : LagrangianSystem or LinearModel
-        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearised at ``q = 0``).
+        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
     values : mapping
         Parameter values (keyed by Symbol or name) except the excitation amplitude and frequency.
     method : str
