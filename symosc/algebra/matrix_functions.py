@@ -16,6 +16,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from . import _taylor
 from ._util import as_scalar_function, as_square_matrix, is_float_matrix
@@ -33,7 +34,7 @@ _METHODS = ("auto", "sylvester", "confluent")
 
 
 @dataclass(frozen=True)
-class MatrixFunction:
+class MatrixFunction(SymPyPrintable):
     """``f(A)`` together with the spectral data it was built from (returned when ``spectral=True``)."""
 
     value: sp.Matrix

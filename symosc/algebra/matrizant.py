@@ -16,6 +16,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind
 from ..numeric import compile as _compile
@@ -60,7 +61,7 @@ def _tail_bound(x: float, order: int, n: int) -> float:
 
 
 @dataclass(frozen=True)
-class Matrizant:
+class Matrizant(SymPyPrintable):
     """Truncated Peano–Baker series ``Ω(t) = E + T_1(t) + ... + T_order(t)`` of ``X' = A(t) X``.
 
     Attributes

@@ -8,7 +8,8 @@ with ``F(λ) = adj(λE - A)`` and ``D_σ(λ) = Δ(λ)/(λ - λ_σ)^q_σ``; the d
 coefficients (the Taylor shift of the polynomial F times the series of ``1/D_σ``).  Then any f analytic at the
 roots is ``f(A) = Σ_σ Σ_(p<e_σ) f^(p)(λ_σ)/p! η_σ^p`` (1.287).
 
-Floating-point matrices have no reliable Jordan structure (stability note 2 of the research report), so their
+Floating-point matrices have no reliable Jordan structure (it is not a continuous
+function of the entries), so their
 eigenvalues are grouped into clusters of nearly equal values; each component then belongs to a cluster, its
 projector is the spectral (Riesz) projector of the cluster, and its "nilpotent" ``(A - μE)P`` has spectral radius
 at most the cluster radius.
@@ -21,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from . import _taylor
 from ._util import as_square_matrix, is_float_matrix
@@ -30,7 +32,7 @@ __all__ = ["SpectralComponent", "SpectralDecomposition", "spectral_decomposition
 
 
 @dataclass(frozen=True)
-class SpectralComponent:
+class SpectralComponent(SymPyPrintable):
     """One distinct root (or, in floating point, one cluster of nearly equal roots).
 
     Attributes
@@ -65,7 +67,7 @@ class SpectralComponent:
 
 
 @dataclass(frozen=True)
-class SpectralDecomposition:
+class SpectralDecomposition(SymPyPrintable):
     """Spectral data of a matrix: ``A = Σ_σ (λ_σ ε_σ + η_σ)`` and ``Σ ε_σ = E``.
 
     Use :meth:`apply` for ``f(A)`` (exact case only), :attr:`roots` and :attr:`projectors` to inspect it.

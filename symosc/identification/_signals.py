@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 
 __all__ = ["ModalEstimate"]
@@ -28,7 +29,7 @@ _RANK_TOL = 1e-11  # sigma_order / sigma_1 below this: the data do not support t
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class ModalEstimate:
+class ModalEstimate(SymPyPrintable):
     """Modal model identified from sampled free-decay signals.
 
     Attributes

@@ -19,6 +19,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..numeric import CompiledFunction
 from ..numeric import compile as _compile
@@ -28,7 +29,7 @@ __all__ = ["InertiaFormula", "flywheel", "physical_pendulum", "rocking_platform"
 
 
 @dataclass(frozen=True)
-class InertiaFormula:
+class InertiaFormula(SymPyPrintable):
     """A moment-of-inertia formula derived from equations of motion.
 
     ``expr`` is the moment of inertia; ``equations`` the equations of motion/measurement it solves; calling the

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 import scipy.linalg as sla
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 
 __all__ = ["DampingPerturbation", "QuadraticModes", "damping_perturbation", "quadratic_modes"]
@@ -38,7 +39,7 @@ def _mats(m: Any, d: Any, k: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 @dataclass(frozen=True, eq=False)
-class QuadraticModes:
+class QuadraticModes(SymPyPrintable):
     """Eigenpairs of ``lambda^2 M + lambda D + K`` with Im(lambda) >= 0, sorted by ``|lambda|``.
 
     ``vectors[:, j]`` is normalised to unit Euclidean norm with its largest component real and positive.
@@ -99,7 +100,7 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
 
 
 @dataclass(frozen=True, eq=False)
-class DampingPerturbation:
+class DampingPerturbation(SymPyPrintable):
     """First-order small-damping theory (eqs 99–106).
 
     Attributes

@@ -1,6 +1,6 @@
 """Error maps: identification error of the inertia parameters against the center-of-mass offset (Belyakov Figs 21–24).
 
-Belyakov 2005, Ch. III §3.2 (report §3.9): the body of Tables 1–2 is moved so that its center of mass sits at an
+Belyakov (2005), Ch. III §3.2: the body of Tables 1–2 is moved so that its center of mass sits at an
 offset ``(dx, dz)`` from the center of stiffness of the stand; its free response after the release of a static force
 (the linear 3-DOF modal model) gets white noise of a given level, a signal estimator identifies the modes, and a
 reconstruction algorithm returns the inertia parameters.  The Monte Carlo mean of the relative errors over a grid of
@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ParameterError, SymoscError
 from ..numeric import bind
 from .era import era
@@ -35,7 +36,7 @@ _ALGORITHMS = ("1", "2.1", "2.2")
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class ErrorMap:
+class ErrorMap(SymPyPrintable):
     """Relative errors of identified inertia parameters over a grid of center-of-mass offsets and noise levels.
 
     Attributes

@@ -25,6 +25,7 @@ import numpy as np
 import scipy.linalg
 import scipy.optimize
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = [
@@ -105,7 +106,7 @@ def _extreme(T: float, x0: np.ndarray, u_m: float, omega: float, sign: float) ->
 
 
 @dataclass(frozen=True)
-class MinTimeResult:
+class MinTimeResult(SymPyPrintable):
     """Minimum time to reach the circle ``|x| = a`` (scaled phase plane) and the optimal open-loop control.
 
     ``control(t)`` returns ``u_m sign(sin(omega (time - t) + alpha))`` (scaled control), the bang-bang law of the
@@ -256,7 +257,7 @@ def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class QuasiOptimalRun:
+class QuasiOptimalRun(SymPyPrintable):
     """Closed-loop run of the quasi-optimal law: event times, states at the events and the control on each arc."""
 
     time: float
@@ -330,7 +331,7 @@ def simulate_quasi_optimal(
 
 # ---------------------------------------------------------------------------------------------------- multi-DOF
 @dataclass(frozen=True)
-class ExcitationBound:
+class ExcitationBound(SymPyPrintable):
     """Multi-DOF excitation-time bound.
 
     ``times[i] = pi a_i omega_i / (2 b_i)`` is the dissertation's eq. (84) per mode and ``bound = max(times)``.  From

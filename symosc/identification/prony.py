@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ._signals import (
     ModalEstimate,
@@ -34,7 +35,7 @@ __all__ = ["SamplingAdvice", "prony", "sampling_advice"]
 
 
 @dataclass(frozen=True)
-class SamplingAdvice:
+class SamplingAdvice(SymPyPrintable):
     """Belyakov's sampling rules (eqs 43–45) for a record of ``n_samples`` at period ``dt``.
 
     Attributes
@@ -52,7 +53,7 @@ class SamplingAdvice:
         that the decimated ratio is close to 2.  Rounding can push it just below 2 (aliasing), so prefer
     safe_decimation : int
         ``floor(ratio / 2.2)`` (at least 1): the decimated ratio stays >= 2.2, where Prony is still most accurate
-        (report §4.9) and the fastest mode keeps clear of the Nyquist frequency.
+        and the fastest mode keeps clear of the Nyquist frequency.
     aliased : bool
         ``ratio < 2``: the fastest mode is above the Nyquist frequency.
     message : str

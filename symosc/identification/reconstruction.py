@@ -30,6 +30,7 @@ import numpy as np
 import sympy as sp
 
 from .._deprecation import module_getattr as _module_getattr
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 
 __all__ = [
@@ -170,7 +171,7 @@ def central_identity(C: Any, modes: Any, omega: Any, modal_stiffness: Any) -> An
 
 # ---------------------------------------------------------------------------------------------------- results
 @dataclass(frozen=True)
-class InertiaEstimate:
+class InertiaEstimate(SymPyPrintable):
     """Dynamic parameters reconstructed from identified modes.
 
     ``Ixz`` follows ``convention`` (``"tensor"``: ``Ixz = -M23``; ``"dissertation"``: ``Ixz = +M23``).
@@ -276,7 +277,7 @@ def inertia_from_release(
 
     Examples
     --------
-    The dissertation's Appendix run (golden case, research report §4.4):
+    The dissertation's Appendix 1 run (Belyakov (2005), pp. 106–115):
 
     >>> import numpy as np
     >>> modes = np.array([[-0.0006753510, 0.0006737952, -0.0006730062], [-0.0006753488, -0.0007192560, -0.0006304674],
@@ -320,7 +321,7 @@ def inertia_equal_springs(
     With equal springs ``K' = k C'^T C'``; ``M11 = m`` gives ``k``.  Invariant to the column scaling of ``C'``.
     ``variant="diag"`` (default) keeps only the diagonal of ``C'^T C'`` (exactly diagonal for exact data, so the
     reconstructed ``M`` stays symmetric); ``"full"`` uses the whole matrix and symmetrises ``M``.  On the
-    dissertation's data the two agree to 1e-5 (the research report's full-variant values, computed without
+    dissertation's data the two agree to 1e-5 (the full-variant values, computed without
     symmetrising, differ from both at the 1e-6 level in Izz and Ixx).
 
     Examples
@@ -460,7 +461,7 @@ def _condition_22(cp: np.ndarray, C: np.ndarray) -> float:
 
 # ---------------------------------------------------------------------------------------------------- two orientations
 @dataclass(frozen=True)
-class InertiaTensor:
+class InertiaTensor(SymPyPrintable):
     """Five of the six inertia-tensor components from two orientations (``Iyz`` is never measured).
 
     Products follow ``convention``; ``Iyz`` is ``nan`` unless given.  ``source_Ixx`` says which run gave ``Ixx``.

@@ -6,7 +6,7 @@ is checked: with ``method="auto"`` the complex step is compared against central 
 warning) when they disagree, e.g. because ``f`` takes moduli or casts to float.
 
 Elasticities ``E_ij = (dPhi_i/dxi_j) xi_j / Phi_i`` are relative sensitivities; the first-order relative error
-bound for relative input errors <= eps is ``sum_j |E_ij| eps`` (Belyakov's bound).  The report notes that the
+bound for relative input errors <= eps is ``sum_j |E_ij| eps`` (Belyakov's bound).  Note that the
 thesis's "<= 2 eps" holds per argument (max_j |E_ij| = 2 at its data point), not for the sum.
 """
 
@@ -19,13 +19,14 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 
 __all__ = ["JacobianResult", "jacobian", "sensitivity"]
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class JacobianResult:
+class JacobianResult(SymPyPrintable):
     """Jacobian of ``f`` at ``x`` with elasticities and a numerical error estimate.
 
     Attributes

@@ -32,6 +32,7 @@ import numpy as np
 import scipy.integrate
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import CompiledFunction, resolve
 from ..numeric import compile as _compile
@@ -183,7 +184,7 @@ class _Stand:
 
 
 @dataclass(frozen=True)
-class StandRecord:
+class StandRecord(SymPyPrintable):
     """Sampled sensor signals of a virtual experiment.
 
     Attributes

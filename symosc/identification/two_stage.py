@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 from ._signals import ModalEstimate
 from .era import era, realize
@@ -30,7 +31,7 @@ __all__ = ["SecondOrderModel", "two_stage"]
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class SecondOrderModel:
+class SecondOrderModel(SymPyPrintable):
     """Second-order model ``q'' = A q``, ``y = C q``, ``q(0) = q0``, ``q'(0) = v0`` in an identified basis.
 
     Attributes

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..numeric import compile
 from ..symbols import sort_symbols, t
@@ -22,7 +23,7 @@ __all__ = ["LinearModel"]
 
 
 @dataclass(frozen=True)
-class LinearModel:
+class LinearModel(SymPyPrintable):
     """``M q'' + D q' + K q = f`` about an equilibrium; ``K`` and ``f`` may depend on time.
 
     Attributes

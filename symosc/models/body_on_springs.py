@@ -17,8 +17,8 @@ with ``R_j`` the cross-product matrix of ``rho_j = a_j - r``.  Keeping the verti
     M q'' + K q = 0,  y = C q,  C_j = (1, x_j - rx, -(z_j - rz)),  K = C^T diag(k) C,
     M = [[m, 0, 0], [0, Izz, s*Ixz], [0, s*Ixz, Ixx]].
 
-Product-of-inertia sign convention (research report section 2.7)
------------------------------------------------------------------
+Product-of-inertia sign convention
+----------------------------------
 ``product_of_inertia="tensor"`` (default): ``Ixy, Ixz, Iyz`` are the products ``∫xy dm, ...`` and the inertia
 tensor is ``[[Ixx, -Ixy, -Ixz], [-Ixy, Iyy, -Iyz], [-Ixz, -Iyz, Izz]]`` (the dissertation's Table 2 and eq. 26),
 so ``M23 = -Ixz``.  ``product_of_inertia="dissertation"``: the off-diagonal entries are ``+Ixy, +Ixz, +Iyz``, so
@@ -38,6 +38,7 @@ import scipy.linalg
 import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import bind, resolve
 from ..numeric import compile as _compile
@@ -130,11 +131,14 @@ class ModalData:
         return ax
 
     def modal_energy(self) -> np.ndarray:
-        """Energy ``K'_ii / 2`` stored in each mode by the release (J); the report's applicability measure."""
+        """Energy ``K'_ii / 2`` stored in each mode by the release (J).
+
+        The applicability measure of Belyakov (2005), Ch. III §3.
+        """
         return 0.5 * self.modal_stiffness
 
 
-class BodyOnSprings:
+class BodyOnSprings(SymPyPrintable):
     """Symbolic model of a rigid body on N vertical springs (see the module docstring).
 
     Build it with :func:`body_on_springs`.  Every matrix is a SymPy object computed on first access.

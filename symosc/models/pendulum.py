@@ -12,7 +12,7 @@ __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]
 
 
 def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
-    """The parameter symbols of the catalogue's n-link pendulum (DESIGN.md naming).
+    """The parameter symbols of the catalogue's n-link pendulum (names ``m1, l1, lc1, J1, ...``).
 
     >>> s = pendulum_symbols(2)
     >>> s["m"], s["lc"], s["g"], s["a"]

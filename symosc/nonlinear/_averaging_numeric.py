@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind, compile
 from .averaging import AveragedEquations, StationaryRegime, a, theta
@@ -105,7 +106,7 @@ def integrate_shortened(avg: AveragedEquations, a0: float, t_eval: Any, values: 
 
 # ---------------------------------------------------------------------------------------------- forced
 @dataclass(frozen=True)
-class SteadyState:
+class SteadyState(SymPyPrintable):
     """A steady forced response ``x = a cos(nu t - theta)`` (first approximation).
 
     ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"center"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
@@ -125,7 +126,7 @@ class SteadyState:
 
 
 @dataclass(frozen=True)
-class Fold:
+class Fold(SymPyPrintable):
     """A fold (vertical tangent) of the resonance curve: a jump frequency.  ``refined``: Newton converged."""
 
     nu: float
@@ -134,7 +135,7 @@ class Fold:
 
 
 @dataclass(frozen=True)
-class FrequencyResponse:
+class FrequencyResponse(SymPyPrintable):
     """Resonance curve ``W(nu, a) = 0`` sampled over ``nu``.
 
     ``amplitudes[i]`` holds every steady amplitude at ``nu[i]`` ascending (NaN-padded); ``stable`` marks the

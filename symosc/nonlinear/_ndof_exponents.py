@@ -30,13 +30,14 @@ import numpy as np
 import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 
 __all__ = ["CharacteristicExponentSeries"]
 
 
 @dataclass(frozen=True)
-class CharacteristicExponentSeries:
+class CharacteristicExponentSeries(SymPyPrintable):
     """Characteristic (Floquet) exponents ``mu_i(eps) = sum_k c_ik eps**k + O(eps**(order+1))`` in rad/s.
 
     Attributes

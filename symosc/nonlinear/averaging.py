@@ -26,6 +26,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..symbols import sort_symbols, t
 from . import _trig
@@ -142,7 +143,7 @@ def describing_function(g: Any, x: sp.Symbol | None = None, amplitude: sp.Symbol
 
 
 @dataclass(frozen=True)
-class StationaryRegime:
+class StationaryRegime(SymPyPrintable):
     """A stationary amplitude of the autonomous shortened equations (``a = 0``: the equilibrium).
 
     ``exponent`` is ``-d(a Phi)/da`` at the amplitude: small deviations grow like ``exp(exponent * t)``.
@@ -160,7 +161,7 @@ class StationaryRegime:
 
 
 @dataclass(frozen=True)
-class AveragedEquations:
+class AveragedEquations(SymPyPrintable):
     """Shortened (first-order averaged) equations of ``x'' + f(x, v) = R cos(nu t)`` (``R = 0``: autonomous).
 
     Attributes

@@ -26,6 +26,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
 
@@ -46,7 +47,7 @@ _EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
-class QuasiPolynomial:
+class QuasiPolynomial(SymPyPrintable):
     """``f(p) = sum_k P_k(p) exp(-tau_k p)``: ``terms`` is a tuple of ``(tau_k, coefficients of P_k ascending)``."""
 
     expr: sp.Expr
@@ -218,7 +219,7 @@ def count_roots(f: Any, region: tuple[float, float, float, float], variable: sp.
 
 
 @dataclass(frozen=True)
-class DelayRoots:
+class DelayRoots(SymPyPrintable):
     """Roots of a quasi-polynomial in a rectangle.
 
     Attributes

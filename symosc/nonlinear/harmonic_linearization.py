@@ -1,7 +1,6 @@
 """Harmonic linearization of multi-DOF systems with one nonlinear element (Bulgakov §12.7, §12.9–12.10).
 
-Reconstructed from the research report seed-bulgakov-part3b.md §2.7 / tests T15–T16 and the seed text
-(004_e76fcda81caa05d8.txt, eqs. 12.66–12.80, 12.89–12.124):
+After Bulgakov (1954), eqs. (12.66)–(12.80), (12.89)–(12.124):
 
 * §12.7: the nonlinear term ``g(y_l)`` of the m-th equation is replaced by ``h y_l`` (coefficient of harmonic
   linearization ``h``).  The characteristic determinant is then linear in ``h``, ``Delta(D) = Delta_0(D) + h F(D)``
@@ -12,13 +11,13 @@ Reconstructed from the research report seed-bulgakov-part3b.md §2.7 / tests T15
 * §12.10 (stability of the cycles): the cycle is orbitally stable when an increase of amplitude moves the
   linearized system into its stable side, ``Re(d lambda/dh) * dh/dA < 0`` at the crossing (``lambda`` the critical
   root, ``h(A) = J(A)/A``), and the other roots of ``Delta`` have negative real parts.  For the servo this is the
-  book's rule "stable iff ``J'(C*) > z`` for ``x > 0``, the reverse for ``x < 0``" (T16).
+  book's rule "stable iff ``J'(C*) > z`` for ``x > 0``, the reverse for ``x < 0``".
 * §12.9 servo (12.89): ``T D(UD+1) phi = v``, ``rho = -(L^2 D^2 + M D + 1) phi``, ``sigma = rho - n v``,
   ``D(VD+1) v = g(sigma)``; eliminating ``rho, v``:
   ``T D^2 (UD+1)(VD+1) phi = g(sigma)``, ``sigma = -(x D^2 + y D + 1) phi`` with ``x = L^2 + T U n``,
   ``y = M + T n`` (12.93).  With ``g(sigma) -> z sigma`` the determinant is
   ``TUV D^4 + T(U+V) D^3 + (x z + T) D^2 + y z D + z`` (12.94–12.95), so ``z`` is the linearization coefficient
-  (the report writes ``z = T/W``; from (12.89) with ``g = sigma/W - psi`` it is ``z = 1/W``).
+  (from (12.89) with ``g = sigma/W - psi`` it is ``z = 1/W``; ``z = T/W`` would be a misreading of the print).
 
 * §12.8 two nonlinearities: ``Delta`` is bilinear in ``h1, h2``; :func:`neimark_curve` gives the curve C1
   ``(h1(w), h2(w))`` (two branches) by the book's device (``h = h1 h2`` as a third unknown, then a quadratic), and
@@ -41,6 +40,7 @@ import sympy as sp
 from scipy.optimize import brentq
 
 from .._deprecation import module_getattr as _module_getattr
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
 from .averaging import describing_function
@@ -86,7 +86,7 @@ def harmonic_linearization(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None
 
 
 @dataclass(frozen=True)
-class LinearizationBoundary:
+class LinearizationBoundary(SymPyPrintable):
     """A value ``h`` of the linearization coefficient at which ``Delta(D)`` has the roots ``±i omega`` (§12.7)."""
 
     h: Any
@@ -160,7 +160,7 @@ def _real_positive_roots(poly: sp.Expr) -> list[float]:
 
 
 @dataclass(frozen=True)
-class HarmonicCycle:
+class HarmonicCycle(SymPyPrintable):
     """A generating periodic motion: ``sigma ≈ amplitude * cos(omega t)`` at the nonlinear element's input."""
 
     amplitude: float
@@ -177,7 +177,7 @@ class HarmonicCycle:
 
 
 @dataclass(frozen=True)
-class HarmonicLinearization:
+class HarmonicLinearization(SymPyPrintable):
     """All generating cycles of ``Delta_0(D) + h F(D)`` with ``h = J(A)/A``, and the pieces used to find them."""
 
     delta: sp.Expr
@@ -378,7 +378,7 @@ def neimark_curve(delta: Any, h1: sp.Symbol, h2: sp.Symbol, omega: Any, D: sp.Sy
 
 
 @dataclass(frozen=True)
-class TwoNonlinearityCycle:
+class TwoNonlinearityCycle(SymPyPrintable):
     """Generating cycle with two nonlinear elements: input amplitudes ``A1``, ``A2 = k(w) A1``, frequency ``w``."""
 
     amplitude1: float

@@ -18,6 +18,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
 from ._fourier import ExactArith, RingArith, Trig, _Arith
@@ -32,7 +33,7 @@ TAU = sp.Symbol("tau")
 
 
 @dataclass(frozen=True)
-class LindstedtSeries:
+class LindstedtSeries(SymPyPrintable):
     """Periodic family of ``x'' + x = eps*f(x)`` through ``x(0) = A, x'(0) = 0`` (Newcomb–Lindstedt).
 
     Attributes

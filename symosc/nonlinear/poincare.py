@@ -11,7 +11,7 @@ Harmonics are truncated Fourier series with exact rational, binary fixed-point (
 (see :mod:`symosc.nonlinear._fourier`): no symbolic trigonometry is involved, so the van der Pol series reaches
 order 24 exactly in seconds and order 60+ in floating point.
 
-References: Bulgakov (1954) §§5.16–5.22 (seed 004, report part 2 §2.1); Andersen & Geer, SIAM J. Appl. Math. 42
+References: Bulgakov (1954) §§5.16–5.22; Andersen & Geer, SIAM J. Appl. Math. 42
 (1982) 678–693 (van der Pol to order 24); Nayfeh, *Perturbation Methods* (1973) §3.1.
 """
 
@@ -27,6 +27,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._fourier import ExactArith, FloatArith, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
@@ -45,7 +46,7 @@ _ARITHMETICS = ("exact", "float", "mpmath")
 # public API
 # ---------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class LimitCycleSeries:
+class LimitCycleSeries(SymPyPrintable):
     """The periodic solution of ``x'' + x = eps*f(x, x', eps)`` by Poincaré's method.
 
     The phase variable is ``tau = omega*t``; the phase is fixed by ``x'(0) = 0``, so ``x(0)`` is the amplitude

@@ -27,6 +27,7 @@ from scipy.integrate import solve_ivp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile as _compile
 from ._fourier import FixedArith, Trig, _Arith, make_arith
@@ -68,7 +69,7 @@ def _modes(M: sp.Matrix, K: sp.Matrix, dps: int) -> tuple[list, mpmath.matrix]:
 
 
 @dataclass(frozen=True)
-class NDofPeriodicSolution:
+class NDofPeriodicSolution(SymPyPrintable):
     """Periodic solution of ``M q'' + K q = eps*f(q, q')`` continued from one linear mode.
 
     Attributes

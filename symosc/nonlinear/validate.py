@@ -20,6 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from ..numeric import compile as _compile
 
@@ -38,7 +39,7 @@ _EPS = sp.Symbol("eps")
 
 
 @dataclass(frozen=True)
-class NumericCycle:
+class NumericCycle(SymPyPrintable):
     """A limit cycle located numerically on the section ``v = 0, x > 0``.
 
     Attributes
@@ -276,7 +277,7 @@ def numeric_period(
 
 
 @dataclass(frozen=True)
-class SeriesValidation:
+class SeriesValidation(SymPyPrintable):
     """Truncated series against the numerical cycle/period.
 
     ``rows`` holds one dict per (eps, order) with the series and numeric values, the errors, the size of the last

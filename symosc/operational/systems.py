@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..symbols import t as _t
 from .heaviside import heaviside_expand
@@ -31,7 +32,7 @@ __all__ = ["OperationalSolution", "solve_operational"]
 
 
 @dataclass(frozen=True)
-class OperationalSolution:
+class OperationalSolution(SymPyPrintable):
     """Result of :func:`solve_operational`.
 
     Attributes

@@ -13,6 +13,7 @@ import numpy as np
 import sympy as sp
 
 from .. import numeric
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
 from ._rational import check_symbol
@@ -152,7 +153,7 @@ def _split_delays(image, p) -> dict | None:
 
 
 @dataclass(frozen=True)
-class NumericInversion:
+class NumericInversion(SymPyPrintable):
     """Values of an original found by numeric inversion of its image (:func:`invert_numeric`).
 
     Attributes

@@ -2,8 +2,8 @@
 
 The fundamental matrix ``X(t)`` with ``X(0) = I`` satisfies ``X(t + T) = X(t) X(T)``; ``X(T)`` is the
 monodromy matrix, its eigenvalues ``rho`` are the Floquet multipliers and ``zeta = ln(rho) / T`` the
-characteristic exponents (defined modulo ``2*pi*i/T``).  Sources: Bulgakov ch. 11 (seed 004, §11.1–11.4;
-research report seed-bulgakov-part3b.md §2.6) and Gribkov & Khokhlov 2015, eq. (2)–(5) (seed 000).
+characteristic exponents (defined modulo ``2*pi*i/T``).  Sources: Bulgakov (1954),
+§§11.1–11.4, and Gribkov & Khokhlov (2015), eqs. (2)–(5).
 
 The matrix ODE is integrated for all ``n`` columns at once (one ``n x n`` matrix product per
 right-hand-side call) together with ``s' = tr A(t)``, so that the Liouville relation
@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
 from ..symbols import sort_symbols, t
@@ -37,7 +38,7 @@ __all__ = ["FloquetResult", "floquet_multipliers", "monodromy"]
 
 
 @dataclass(frozen=True)
-class FloquetResult:
+class FloquetResult(SymPyPrintable):
     """Monodromy matrix of ``x' = A(t) x`` over one period and what follows from it.
 
     Attributes

@@ -6,7 +6,7 @@ bounded between the characteristic curves ``a_n(q) < a < b_{n+1}(q)`` (n = 0, 1,
 ``b_n < a < a_n``.  Negative ``q`` is mapped to ``|q|`` (the shift ``x -> x + pi/2`` changes the sign of
 ``q`` and only swaps ``a_{2k+1}`` with ``b_{2k+1}``, so the stable set is even in ``q``).
 
-Modified diagram (Gribkov & Khokhlov 2015, §3 of the research report, eq. (7)): an N-mode system whose
+Modified diagram (Gribkov & Khokhlov (2015), §3, eq. (7)): an N-mode system whose
 modes obey Mathieu equations with ``a_i = a^1 / r_i``, ``q_i = q^1 / r_i`` (``r_i = (p_1/p_i)^2``) is drawn in
 the first-tone coordinates ``(a^1, q^1)``: each boundary curve ``a = f(q)`` of mode ``i`` becomes
 ``a^1 = r_i f(q^1 / r_i)``.  The principal stability region is bounded below by the highest ``a_0``-curve
@@ -25,6 +25,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -130,7 +131,7 @@ def series_boundary(kind: str, n: int, terms: int) -> Callable[[Any], np.ndarray
 
 # ---------------------------------------------------------------------------------------- classic
 @dataclass(frozen=True)
-class InceStruttDiagram:
+class InceStruttDiagram(SymPyPrintable):
     """The classic Ince–Strutt diagram: characteristic curves ``a_n(q)``, ``b_n(q)`` on a q grid.
 
     Attributes
@@ -221,7 +222,7 @@ def _normalise_ratios(ratios: Any) -> tuple[float, ...]:
 
 
 @dataclass(frozen=True)
-class ModifiedInceStruttDiagram:
+class ModifiedInceStruttDiagram(SymPyPrintable):
     """Modified Ince–Strutt diagram of Gribkov & Khokhlov (2015) in first-tone coordinates ``(a^1, q^1)``.
 
     Attributes

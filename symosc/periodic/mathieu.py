@@ -43,6 +43,7 @@ from typing import Any
 import mpmath
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from . import _hill
 from .mathieu_series import _check_n, mathieu_series_value
@@ -55,7 +56,7 @@ _DEFAULT_DPS = 30
 
 
 @dataclass(frozen=True)
-class MathieuValues:
+class MathieuValues(SymPyPrintable):
     """Characteristic values with what the method achieved.
 
     Attributes

@@ -27,6 +27,7 @@ from fractions import Fraction
 import mpmath
 import sympy
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from ._hill import family_index
 
@@ -180,7 +181,7 @@ def mathieu_series_b(n: int, order: int, *, symbol: sympy.Symbol | None = None) 
 
 
 @dataclass(frozen=True)
-class SeriesValue:
+class SeriesValue(SymPyPrintable):
     """A numeric value of a truncated Mathieu series and what was achieved.
 
     Attributes

@@ -1,0 +1,117 @@
+"""Quick instances of public classes whose documented examples are slow or do not build them.
+
+The generic API tests take instances from here first and otherwise from the docstring examples
+(:func:`tests.api.public.example_instances`), so a new public class is covered through its own examples.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+
+def _averaged():
+    from symosc.nonlinear import averaged_equations
+
+    x, v = sp.symbols("x v", real=True)
+    return averaged_equations(x + sp.Rational(1, 10) * x**3 + sp.Rational(1, 20) * v, forcing=sp.Rational(1, 10))
+
+
+def _frequency_response():
+    return _averaged().frequency_response({}, (0.8, 1.4), n=60)
+
+
+def _fold():
+    return _frequency_response().folds[0]
+
+
+def _steady_state():
+    return _averaged().steady_states({}, nu=1.0)[0]
+
+
+def _stationary():
+    from symosc.nonlinear import averaged_equations
+
+    x, v = sp.symbols("x v", real=True)
+    return averaged_equations(x - sp.Rational(1, 10) * (1 - x**2) * v).stationary()[0]
+
+
+def _matrix_function():
+    from symosc.algebra import matrix_function
+
+    return matrix_function(sp.Matrix([[2, 1], [0, 3]]), sp.exp, spectral=True)
+
+
+def _matrizant():
+    from symosc.algebra import matrizant
+
+    t = sp.Symbol("t")
+    return matrizant(sp.Matrix([[0, 1], [-1, 0]]), t, order=3)
+
+
+def _flywheel():
+    from symosc.nonlinear import radinger_flywheel
+
+    s = sp.Symbol("s")
+    return radinger_flywheel(sp.sin(s), s, 0.05, 1.0, samples=201)
+
+
+def _radius():
+    from symosc.nonlinear import limit_cycle
+
+    x, v = sp.symbols("x v")
+    return limit_cycle((1 - x**2) * v, 14, arithmetic="float").frequency.radius_of_convergence()
+
+
+def _step_generator():
+    from symosc.nonlinear import step_valve_generator
+
+    return step_valve_generator(1, sp.Rational(1, 10), 1)
+
+
+def _difference():
+    from symosc.operational import solve_difference
+
+    T, n = sp.symbols("T n")
+    return solve_difference(T**2 - T - 1, 1, None, [[0, 1]], T=T, n=n)
+
+
+def _table_entry():
+    from symosc.operational import CARSON_TABLE
+
+    return CARSON_TABLE[0]
+
+
+def _numeric_inversion():
+    from symosc.operational import invert_numeric
+
+    p = sp.Symbol("p")
+    return invert_numeric(p / (p + 1), p, [0.5, 1.0], dps=15)
+
+
+def _spectral_component():
+    from symosc.algebra import spectral_decomposition
+
+    return spectral_decomposition(sp.Matrix([[2, 1], [0, 3]])).components[0]
+
+
+FACTORIES: dict[str, Callable[[], Any]] = {
+    "DifferenceSolution": _difference,
+    "FlywheelDesign": _flywheel,
+    "Fold": _fold,
+    "FrequencyResponse": _frequency_response,
+    "MatrixFunction": _matrix_function,
+    "Matrizant": _matrizant,
+    "NumericInversion": _numeric_inversion,
+    "RadiusEstimate": _radius,
+    "StationaryRegime": _stationary,
+    "SteadyState": _steady_state,
+    "SpectralComponent": _spectral_component,
+    "StepGenerator": _step_generator,
+    "TableEntry": _table_entry,
+}
+
+__all__ = ["FACTORIES", "np"]
