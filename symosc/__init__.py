@@ -9,8 +9,9 @@ callables that validate every derivation.
 array([1.])
 """
 
-from . import errors, numeric, symbols
+from . import errors, io, numeric, symbols
 from .errors import ConvergenceError, IdentificationError, ModelError, ParameterError, SymoscError
+from .io import load, save
 from .sweep import sweep  # eager (light), so that the function is not shadowed by its submodule
 from .symbols import ddot, dot, t
 
@@ -25,7 +26,10 @@ __all__ = [
     "ddot",
     "dot",
     "errors",
+    "io",
+    "load",
     "numeric",
+    "save",
     "sweep",
     "symbols",
     "t",
