@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 
@@ -162,6 +163,7 @@ class ModalEstimate(SymPyPrintable):
         lead = f"{self.offset[0]:.4g} + " if self.offset[0] != 0 else ""
         return "$y_1(t) = " + lead + " + ".join(terms) + "$"
 
+    @plot_method
     def plot(self, signals: Any = None, *, ax: Any = None, channel: int = 0) -> Any:
         """Plot the model signal of one channel (and the measured ``signals`` if given); returns the axes."""
         import matplotlib.pyplot as plt

@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ParameterError, SymoscError
 from ..numeric import bind
@@ -86,6 +87,7 @@ class ErrorMap(SymPyPrintable):
         """Belyakov's criterion for Algorithm 1: min modal energy > half the mean modal energy, shape (dx, dz)."""
         return self.min_energy > 0.5 * self.energies.mean(axis=-1)
 
+    @plot_method
     def plot(self, name: str | None = None, *, noise_index: int = -1, energy: bool = False, ax: Any = None) -> Any:
         """Contour map in 1 % bands up to 10 % (Figs 21–22), or of the min modal energy (``energy=True``, Figs 23–24).
 

@@ -25,6 +25,7 @@ import numpy as np
 import scipy.linalg
 import scipy.optimize
 
+from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 
@@ -265,11 +266,11 @@ class QuasiOptimalRun(SymPyPrintable):
     events_x: np.ndarray = field(repr=False)
     controls: np.ndarray = field(repr=False)
 
-    def plot(self, ax: Any = None, points: int = 40) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, points: int = 40) -> Any:
         """Draw the phase-plane trajectory (arcs about ``(±u_m, 0)``)."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         for x, u, t0, t1 in zip(self.events_x[:-1], self.controls, self.events_t[:-1], self.events_t[1:], strict=True):
             th = np.linspace(0, 1, points) * (t1 - t0)
             d = x - np.array([u, 0.0])

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ._signals import ModalEstimate, _as_signals
@@ -327,7 +328,8 @@ class ErrorVsNoise(SymPyPrintable):
             return 0.0
         return float(np.interp(max_error, [e[i - 1], e[i]], [self.levels[i - 1], self.levels[i]]))
 
-    def plot(self, ax: Any = None, names: Any = None) -> Any:
+    @plot_method
+    def plot(self, names: Any = None, *, ax: Any = None) -> Any:
         """Mean relative error (%) vs noise level (%) per parameter; returns the axes."""
         import matplotlib.pyplot as plt
 

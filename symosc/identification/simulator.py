@@ -32,6 +32,7 @@ import numpy as np
 import scipy.integrate
 import sympy as sp
 
+from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import CompiledFunction, resolve
@@ -215,11 +216,11 @@ class StandRecord(SymPyPrintable):
         ch, ns = self.signals.shape
         return f"StandRecord(channels={ch}, samples={ns}, dt={self.dt:g}, noise_sigma={self.noise_sigma:.3g})"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Plot the sensor signals (mm) against time."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         for j, y in enumerate(self.signals, start=1):
             ax.plot(self.t, 1e3 * y, lw=0.7, label=f"sensor {j}")
         ax.set_xlabel("t, s")

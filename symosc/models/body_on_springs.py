@@ -38,6 +38,7 @@ import scipy.linalg
 import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import bind, resolve
@@ -116,11 +117,11 @@ class ModalData:
         times = np.asarray(times, dtype=float)
         return np.cos(np.multiply.outer(times, self.omega)) @ self.observation.T
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Bar chart of the modal amplitudes ``C'`` per sensor (one group of bars per mode)."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         n, k = self.observation.shape
         width = 0.8 / n
         for j in range(n):

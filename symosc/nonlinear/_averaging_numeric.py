@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind, compile
@@ -163,7 +164,8 @@ class FrequencyResponse(SymPyPrintable):
             f"max branches {self.amplitudes.shape[1]}, folds at nu = [{jumps}])"
         )
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Draw the resonance curve: stable states as dots, unstable as crosses, folds as circles."""
         import matplotlib.pyplot as plt
 

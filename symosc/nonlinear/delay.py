@@ -26,6 +26,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
@@ -259,7 +260,8 @@ class DelayRoots(SymPyPrintable):
         )
         return f"DelayRoots(count={self.count} in {self.region}: [{items}])"
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Scatter plot of the roots in the complex plane with the region outlined."""
         import matplotlib.pyplot as plt
 

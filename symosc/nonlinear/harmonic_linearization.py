@@ -40,6 +40,7 @@ import sympy as sp
 from scipy.optimize import brentq
 
 from .._deprecation import module_getattr as _module_getattr
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
@@ -194,7 +195,8 @@ class HarmonicLinearization(SymPyPrintable):
     def _repr_latex_(self) -> str:
         return f"$h(A) = {sp.latex(self.gain)},\\quad \\Delta(D) = {sp.latex(self.delta)}$"
 
-    def plot(self, ax: Any = None, amax: float | None = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, amax: float | None = None) -> Any:
         """``h(A)`` with the boundary values ``h*`` and the cycles marked."""
         import matplotlib.pyplot as plt
 

@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 from .._lazy import LazyFunction
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 
@@ -124,7 +125,8 @@ class CoulombMotion(SymPyPrintable):
             f"at x = {float(self.final_position):.6g}; turning points [{pts}{more}])"
         )
 
-    def plot(self, ax=None, n: int = 2000):
+    @plot_method
+    def plot(self, *, ax: Any = None, n: int = 2000) -> Any:
         """Draw ``x(t)`` with the dead zone shaded."""
         import matplotlib.pyplot as plt
 

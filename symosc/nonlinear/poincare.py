@@ -27,6 +27,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._fourier import ExactArith, FloatArith, from_number, make_arith
@@ -147,7 +148,8 @@ class LimitCycleSeries(SymPyPrintable):
         omega = self.frequency.evaluate(eps, n)
         return np.stack([A0 * x, A0 * omega * dx])
 
-    def plot(self, eps: float, order: int | None = None, ax: Any = None, *, numeric: bool = True) -> Any:
+    @plot_method
+    def plot(self, eps: float, order: int | None = None, *, ax: Any = None, numeric: bool = True) -> Any:
         """Phase portrait ``(x, dx/dt)`` of the truncated series at ``eps``, with the numeric cycle for comparison."""
         import matplotlib.pyplot as plt
 

@@ -20,6 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from ..numeric import compile as _compile
@@ -309,7 +310,8 @@ class SeriesValidation(SymPyPrintable):
     def __repr__(self) -> str:
         return "SeriesValidation(\n" + self.table() + f"\n radius of convergence estimate: {self.radius})"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Frequency error vs order for each eps (log scale)."""
         import matplotlib.pyplot as plt
 

@@ -7,12 +7,14 @@ image, and ``x'(t) <-> p (X(p) - x(0))``.  Originals are functions of ``t > 0``;
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import mpmath
 import numpy as np
 import sympy as sp
 
 from .. import numeric
+from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
@@ -181,11 +183,11 @@ class NumericInversion(SymPyPrintable):
             f"max_error_estimate={float(np.max(self.error_estimate)):.2e}, converged={self.converged})"
         )
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Plot ``x(t)``."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         ax.plot(self.t, self.values)
         ax.set_xlabel("t")
         ax.set_ylabel("x(t)")

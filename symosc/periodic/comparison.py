@@ -38,6 +38,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from .floquet import monodromy
@@ -297,7 +298,8 @@ class MethodComparison(SymPyPrintable):
     def __repr__(self) -> str:
         return f"MethodComparison(methods={list(self.regions)}, {self.q.size} q values)"
 
-    def plot(self, ax: Any = None, *, a_range: tuple[float, float] | None = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, a_range: tuple[float, float] | None = None) -> Any:
         """All regions in first-tone axes (``a^1`` horizontal, ``q^1`` vertical), like the paper's Fig. 5."""
         import matplotlib.pyplot as plt
 

@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
@@ -174,7 +175,8 @@ class FloquetResult(SymPyPrintable):
         )
         return f"$$\\rho = \\{{{rho}\\}},\\quad \\text{{{self.stability}}}$$"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Multipliers in the complex plane with the unit circle."""
         import matplotlib.pyplot as plt
 

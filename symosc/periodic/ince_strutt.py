@@ -25,6 +25,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 
@@ -163,7 +164,8 @@ class InceStruttDiagram(SymPyPrintable):
     def _repr_latex_(self) -> str:
         return r"$$y'' + (a - 2q\cos 2x)\,y = 0:\quad \text{stable for } a_n(q) < a < b_{n+1}(q)$$"
 
-    def plot(self, ax: Any = None, *, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
         """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``."""
         import matplotlib.pyplot as plt
 
@@ -311,11 +313,12 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         rn = self.ratios[-1]
         return rf"$$a_0(q) < a < {rn:.6g}\, b_1\!\left(\frac{{q}}{{{rn:.6g}}}\right)$$"
 
+    @plot_method
     @renamed_keyword({"orders": "n_max"})
     def plot(
         self,
-        ax: Any = None,
         *,
+        ax: Any = None,
         n_max: int = 1,
         q_max: float = 1.0,
         a_range: tuple[float, float] | None = None,

@@ -26,6 +26,7 @@ import numpy as np
 import sympy as sp
 
 from .._lazy import LazyFunction
+from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
@@ -311,10 +312,11 @@ class StabilityRegion(SymPyPrintable):
             rf"\ q^1 = \frac{{2 a p_1^2}}{{g}},\ p_1 = {self.natural_frequencies[0]:.6g}$$"
         )
 
+    @plot_method
     def plot(
         self,
-        ax: Any = None,
         *,
+        ax: Any = None,
         coords: str = "first-tone",
         q_max: float | None = None,
         p_range: tuple[float, float] | None = None,

@@ -98,8 +98,15 @@ def _spectral_component():
     return spectral_decomposition(sp.Matrix([[2, 1], [0, 3]])).components[0]
 
 
+def _error_map():
+    from symosc.identification import error_map
+
+    return error_map([0.0, 0.2], [0.0, 0.1], noise=0.0, runs=1, n_samples=120)  # 2x2: contour plots need it
+
+
 FACTORIES: dict[str, Callable[[], Any]] = {
     "DifferenceSolution": _difference,
+    "ErrorMap": _error_map,
     "FlywheelDesign": _flywheel,
     "Fold": _fold,
     "FrequencyResponse": _frequency_response,
@@ -115,3 +122,9 @@ FACTORIES: dict[str, Callable[[], Any]] = {
 }
 
 __all__ = ["FACTORIES", "np"]
+
+
+# Arguments a plot method needs besides ``ax`` (keyed by class name).
+PLOT_ARGS: dict[str, dict[str, Any]] = {
+    "LimitCycleSeries": {"eps": 0.3, "numeric": False},
+}
