@@ -175,6 +175,81 @@ class LinearModel(SymPyPrintable):
         sign = np.sign(np.take_along_axis(Phi, idx, axis=-2))
         return omega, Phi * np.where(sign == 0, 1.0, sign)
 
+    # ------------------------------------------------------------------ control systems
+    def to_state_space(
+        self,
+        *,
+        inputs: Any = None,
+        outputs: Any = None,
+        values: Mapping[Any, Any] | None = None,
+        velocities: bool = False,
+        backend: str = "auto",
+    ) -> Any:
+        """The model as a state-space system ``x' = A x + B u``, ``y = C x`` with ``x = (q, q')``.
+
+        Parameters
+        ----------
+        inputs : coordinates, indices or array (n, m), optional
+            Where the inputs act: a unit generalized force on each listed coordinate (default: every coordinate),
+            or a force-distribution matrix ``E`` in ``M q'' + D q' + K q = E u``.
+        outputs : coordinates, indices or array (n, p), optional
+            The measured coordinates (default: all); ``velocities=True`` measures their rates instead.
+        values : mapping
+            Numbers for every parameter (keyed by Symbol or name).
+        backend : {"auto", "control", "scipy"}
+            ``control.StateSpace`` when python-control is installed (``"auto"``), else ``scipy.signal.StateSpace``.
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> sys = lin.to_state_space(values={"m1": 1.0, "l1": 1.0, "g": 9.81}, backend="scipy")
+        >>> sys.A.tolist(), sys.B.ravel().tolist()
+        ([[0.0, 1.0], [-9.81, 0.0]], [0.0, 1.0])
+
+        With python-control, Bode, Nyquist and step plots are one line each, e.g.
+        ``control.bode_plot(lin.to_transfer_function(values=...))``.
+
+        See Also
+        --------
+        to_transfer_function, natural_frequencies
+        """
+        from ._control import state_space
+
+        return state_space(self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, backend=backend)
+
+    def to_transfer_function(
+        self,
+        *,
+        inputs: Any = None,
+        outputs: Any = None,
+        values: Mapping[Any, Any] | None = None,
+        velocities: bool = False,
+        backend: str = "auto",
+    ) -> Any:
+        """Transfer function(s) from the inputs to the outputs (arguments as :meth:`to_state_space`).
+
+        ``control.TransferFunction`` (MIMO allowed) with python-control, else ``scipy.signal.TransferFunction``
+        (one input).
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> H = lin.to_transfer_function(values={"m1": 2.0, "l1": 1.0, "g": 9.81}, backend="scipy")
+        >>> H.num.round(12).tolist(), H.den.round(12).tolist()      # 1 / (m l^2 s^2 + m g l)
+        ([0.5], [1.0, 0.0, 9.81])
+
+        See Also
+        --------
+        to_state_space, symosc.operational.to_transfer_function
+        """
+        from ._control import transfer_function
+
+        return transfer_function(
+            self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, backend=backend
+        )
+
 
 def _frequencies(lam: np.ndarray) -> np.ndarray:
     scale = np.max(np.abs(lam), axis=-1, keepdims=True)

@@ -45,7 +45,7 @@ from .theorems import (
     shift,
     similarity,
 )
-from .transform import NumericInversion, carson, inverse_carson, invert_numeric
+from .transform import NumericInversion, carson, inverse_carson, invert_numeric, to_transfer_function
 
 __all__ = [
     "CARSON_TABLE",
@@ -91,4 +91,5 @@ __all__ = [
     "solve_operational",
     "step_image",
     "table_entry",
+    "to_transfer_function",
 ]

@@ -22,7 +22,7 @@ from ._rational import check_symbol
 from .heaviside import heaviside_expand
 from .table import _Unsupported, carson_by_table
 
-__all__ = ["NumericInversion", "carson", "inverse_carson", "invert_numeric"]
+__all__ = ["NumericInversion", "carson", "inverse_carson", "invert_numeric", "to_transfer_function"]
 
 _METHODS = ("auto", "table", "sympy")
 _INV_METHODS = ("auto", "heaviside", "sympy")
@@ -274,3 +274,26 @@ def invert_numeric(
             achieved=float(err[i]),
         )
     return NumericInversion(t=ts, values=arr, error_estimate=err, method=method, converged=True)
+
+
+def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *, backend: str = "auto") -> Any:
+    """A rational transfer function ``W(p)`` (e.g. ``Y(p)/U(p)`` of Carson images) as a control object.
+
+    Returns ``control.TransferFunction`` when python-control is installed, else ``scipy.signal.TransferFunction``;
+    ``values`` gives numbers for the other symbols.  Delays (``exp(-p tau)``) do not convert.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, k, T = sp.symbols("p k T", positive=True)
+    >>> H = to_transfer_function(k / (T * p + 1), p, {"k": 2, "T": 0.5}, backend="scipy")
+    >>> H.num.tolist(), H.den.tolist()
+    ([4.0], [1.0, 2.0])
+
+    See Also
+    --------
+    symosc.mechanics.LinearModel.to_transfer_function
+    """
+    from .._control import transfer_function_from_expr
+
+    return transfer_function_from_expr(image, p, values, backend=backend)
