@@ -68,9 +68,20 @@ def __getattr__(name: str):
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")
 
 
+def _installed_subpackages() -> list[str]:
+    """Names of the lazily imported subpackages present in this installation of symosc."""
+    import importlib.util
+    import os
+
+    here = os.path.dirname(os.path.abspath(__file__))
+    out = []
+    for name in sorted(_SUBPACKAGES):
+        spec = importlib.util.find_spec(f"{__name__}.{name}")
+        if spec is not None and spec.origin and os.path.abspath(spec.origin).startswith(here + os.sep):
+            out.append(name)
+    return out
+
+
 def __dir__() -> list[str]:
     """Public names and the subpackages that are installed."""
-    import importlib.util
-
-    subs = {n for n in _SUBPACKAGES if importlib.util.find_spec(f"{__name__}.{n}") is not None}
-    return sorted(set(__all__) | subs | {"__version__"})
+    return sorted(set(__all__) | set(_installed_subpackages()) | {"__version__"})

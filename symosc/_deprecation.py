@@ -68,12 +68,16 @@ def deprecated_attribute(new: str) -> Any:
     """A deprecated attribute or method alias: ``old = deprecated_attribute("new")`` inside a class body."""
 
     class _Alias:
+        __doc__ = f"Deprecated alias of ``{new}``."
+
         def __set_name__(self, owner: type, name: str) -> None:
             self.old = name
             self.owner = owner.__name__
 
         def __get__(self, obj: Any, objtype: type | None = None) -> Any:
+            if obj is None:  # on the class (documentation tools): the alias itself
+                return self
             warn_deprecated(f"{self.owner}.{self.old}", f"{self.owner}.{new}")
-            return getattr(obj if obj is not None else objtype, new)
+            return getattr(obj, new)
 
     return _Alias()

@@ -62,7 +62,7 @@ def _tail_bound(x: float, order: int, n: int) -> float:
 
 @dataclass(frozen=True)
 class Matrizant(SymPyPrintable):
-    """Truncated Peano–Baker series ``Ω(t) = E + T_1(t) + ... + T_order(t)`` of ``X' = A(t) X``.
+    """Truncated Peano–Baker series ``Ω(t) = E + T_1(t) + … + T_order(t)`` of ``X' = A(t) X``.
 
     Attributes
     ----------

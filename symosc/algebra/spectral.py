@@ -432,7 +432,9 @@ def _to_sympy_real(M: np.ndarray) -> sp.Matrix:
 
 
 def spectral_decomposition(A: sp.Matrix, *, cluster_tol: float = 1e-2) -> SpectralDecomposition:
-    """Roots, principal idempotents ε_σ and nilpotents η_σ^p of a square matrix (Bulgakov 1.284–1.298).
+    """Roots, principal idempotents and nilpotents of a square matrix (Bulgakov 1954, ch. 1).
+
+    Eqs. (1.284)–(1.298) of the book: the idempotents are its ``ε_σ``, the nilpotents its ``η_σ^p``.
 
     Parameters
     ----------

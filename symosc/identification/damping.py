@@ -71,7 +71,8 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
 
     Examples
     --------
-    Proportional damping D = 0.01 K on a 1-DOF system m = 1, k = 4: lambda = -0.02 + i sqrt(4 - 0.0004), |lambda| = 2.
+    Proportional damping D = 0.01 K on a 1-DOF system m = 1, k = 4:
+    ``lambda = -0.02 + i sqrt(4 - 0.0004)``, ``|lambda| = 2``.
 
     >>> qm = quadratic_modes([[1.0]], [[0.04]], [[4.0]])
     >>> complex(np.round(qm.eigenvalues[0], 12)), float(np.round(qm.undamped_frequencies[0], 12))

@@ -132,9 +132,9 @@ def jacobian(
         raises if they disagree.  ``"central"``: Richardson-extrapolated central differences with error estimate
         from steps h and 2h.  ``"auto"``: complex step if it passes the check, else central (with a warning).
     step : float, optional
-        Relative step (default 1e-20 for the complex step, 1e-4 for central differences) times max(|x_j|, 1e-8).
+        Relative step (default 1e-20 for the complex step, 1e-4 for central differences) times ``max(|x_j|, 1e-8)``.
     rtol : float
-        Agreement required between complex step and central differences, relative to max |J|.
+        Agreement required between complex step and central differences, relative to ``max |J|``.
 
     Examples
     --------

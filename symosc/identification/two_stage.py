@@ -5,7 +5,7 @@ A first realisation of the sampled record gives the continuous poles ``lambda_k`
 derivatives at t = 0, ``S_j = sum_k 2 Re(h_k lambda_k^(j-1))`` (eq. 48).  For ``q'' = A q``, ``y = C q`` they split
 into ``S_(2k-1) = C A^(k-1) q0`` (eq. 52) and ``S_(2k) = C A^(k-1) v0`` (eq. 53); Kung's algorithm on the odd
 subsequence returns ``(A, C, q0)`` directly in second-order form, with ``A ~ -M^-1 K`` up to a similarity.
-"Identification is thus done twice."  Time is rescaled by the largest |lambda| so that the Markov parameters
+"Identification is thus done twice."  Time is rescaled by the largest ``|lambda|`` so that the Markov parameters
 stay O(1).
 
 The trick is exact for conservative systems (no damping, A_d = 0 in eq. 46).  With damping the poles
@@ -66,7 +66,7 @@ class SecondOrderModel(SymPyPrintable):
 
     @property
     def frequencies(self) -> np.ndarray:
-        """``sqrt|mu|`` (rad/s): the undamped frequencies (|lambda| of the first stage)."""
+        """``sqrt|mu|`` (rad/s): the undamped frequencies (``|lambda|`` of the first stage)."""
         return np.sqrt(np.abs(self.eigenvalues))
 
     @property

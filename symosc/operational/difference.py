@@ -153,7 +153,7 @@ class DifferenceSolution(SymPyPrintable):
         return f"$$y_n = {sp.latex(self.response)}$$"
 
     def values(self, count: int) -> list[sp.Matrix]:
-        """Exact ``y_0 .. y_{count-1}`` (needs numeric initial values)."""
+        """Exact values ``y_k`` for ``k < count`` (needs numeric initial values)."""
         return [self.response.subs(self.n, k).doit().applyfunc(sp.simplify) for k in range(count)]
 
 

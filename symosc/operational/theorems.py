@@ -273,7 +273,7 @@ def similarity(image, p: sp.Symbol, a) -> sp.Expr:
 
 @renamed_keyword({"order": "n"})
 def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int | None = None) -> sp.Expr:
-    """Image of the ``m``-th derivative (2.18): ``p**m X - p**m x(0) - p**(m-1) x'(0) - ... - p x^(m-1)(0)``.
+    """Image of the ``m``-th derivative (2.18): ``p**m X - p**m x(0) - p**(m-1) x'(0) - … - p x^(m-1)(0)``.
 
     ``initial`` holds ``x(0+), x'(0+), ..., x^(m-1)(0+)``; ``n`` defaults to ``len(initial)`` (with zero data
     pass ``n`` alone, giving (2.20)).

@@ -277,7 +277,7 @@ def invert_numeric(
 
 
 def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *, backend: str = "auto") -> Any:
-    """A rational transfer function ``W(p)`` (e.g. ``Y(p)/U(p)`` of Carson images) as a control object.
+    """A rational transfer function W(p), such as a ratio Y(p)/U(p) of Carson images, as a control object.
 
     Returns ``control.TransferFunction`` when python-control is installed, else ``scipy.signal.TransferFunction``;
     ``values`` gives numbers for the other symbols.  Delays (``exp(-p tau)``) do not convert.

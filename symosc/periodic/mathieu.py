@@ -17,17 +17,17 @@ Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_seri
 ``"auto"`` (default)
     float64 tridiagonal eigenpair (LAPACK), refined by the Rayleigh quotient in extended precision; truncation
     bounded a posteriori from the eigenvector's tail; falls back to ``"mp"`` when the estimate misses the target.
-    Measured: relative error <= 1e-13 (absolute where |value| < 1) against 50-digit values for n <= 100,
-    |q| <= 1e4 (``benchmarks/mathieu_vs_scipy.py``).
+    Measured: relative error <= 1e-13 (absolute where ``|value| < 1``) against 50-digit values for n <= 100,
+    ``|q| <= 1e4`` (``benchmarks/mathieu_vs_scipy.py``).
 ``"hill"``
-    plain float64 eigenvalue at two matrix sizes that must agree; absolute error ~ eps * 2|q| (so values near zero
+    plain float64 eigenvalue at two matrix sizes that must agree; absolute error ``~ eps * 2|q|`` (so values near zero
     at large q lose digits -- that is why ``"auto"`` refines).
 ``"mp"``
     Newton iteration on the Hill continued fraction in mpmath at ``dps`` digits (default 30), two sizes that must
     agree; returns ``mpmath.mpf`` values.
 ``"series"``
     the exact power series of :mod:`~symosc.periodic.mathieu_series` with its order chosen for ``tol``; raises
-    ``ConvergenceError`` when |q| is too close to (or beyond) the radius of convergence.
+    ``ConvergenceError`` when ``|q|`` is too close to (or beyond) the radius of convergence.
 
 Near-degenerate neighbours (a_n, b_{n+1} at large q, b_n, a_n at small q for large n) differ by less than the
 rounding error; there both neighbours are computed and the returned values are clamped so that the ordering holds
@@ -204,7 +204,7 @@ def mathieu_characteristic(
         Decimal digits for ``"mp"`` (default 30) and for ``"series"`` (mpmath evaluation).  ``"auto"`` with ``dps``
         means ``"mp"``.
     tol : float, optional
-        Target error (relative where |value| >= 1, absolute below): for ``"auto"`` (default 1e-13; the result is
+        Target error (relative where ``|value| >= 1``, absolute below): for ``"auto"`` (default 1e-13; the result is
         checked against it), ``"hill"`` (accepted difference between the two matrix sizes, never below float64
         noise), ``"series"`` (default 1e-13).
 

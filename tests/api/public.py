@@ -16,8 +16,7 @@ import symosc
 
 def subpackages() -> list[str]:
     """Installed ``symosc.<name>`` subpackages (the lazily imported ones), without the command line."""
-    names = sorted(n for n in symosc._SUBPACKAGES if n != "cli")
-    return [f"symosc.{n}" for n in names if importlib.util.find_spec(f"symosc.{n}") is not None]
+    return [f"symosc.{n}" for n in symosc._installed_subpackages() if n != "cli"]
 
 
 @cache
