@@ -96,6 +96,12 @@ def matrix_function(
     ConvergenceError
         Floating point: the Taylor series of f about a cluster center does not converge (a singularity is near).
 
+    See Also
+    --------
+    spectral_decomposition
+    interpolation_polynomial
+    series_converges
+
     Examples
     --------
     Bulgakov §1.35: ``R(λ) = (λ+1)/(4λ)`` of ``z = [[4,-3],[2,-1]]``:

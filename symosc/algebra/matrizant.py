@@ -152,6 +152,11 @@ def matrizant(A: Any, t: sp.Symbol, t0: Any = 0, order: int = 10) -> Matrizant:
     Matrizant
         With the symbolic ``series``, the a-priori ``bound(t1)`` and ``evaluate(t1, tol=...)``.
 
+    See Also
+    --------
+    matrizant_numeric
+    matrix_function
+
     Examples
     --------
     Constant A gives the truncated exponential series:

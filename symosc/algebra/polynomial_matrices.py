@@ -179,6 +179,12 @@ def smith_form(f: Any, lam: sp.Symbol) -> SmithForm:
     Elementary operations over the polynomials in ``lam`` (Euclid's algorithm on the pivot's row and column)
     give ``U f V = S = diag(E_1, ..., E_r, 0, ...)`` with ``det U`` and ``det V`` non-zero constants.
 
+    See Also
+    --------
+    invariant_factors
+    elementary_divisors
+    determinantal_divisors
+
     Examples
     --------
     >>> import sympy as sp

@@ -447,6 +447,11 @@ def spectral_decomposition(A: sp.Matrix, *, cluster_tol: float = 1e-2) -> Spectr
     -------
     SpectralDecomposition
 
+    See Also
+    --------
+    matrix_function
+    modal_matrix
+
     Examples
     --------
     >>> import sympy as sp

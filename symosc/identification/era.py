@@ -127,6 +127,14 @@ def era(
     ModalEstimate
         ``details`` holds the realisation ``A`` (discrete), ``C``, ``x0``, the recipe's ``Q`` and ``hankel_size``.
 
+    See Also
+    --------
+    matrix_pencil
+    esprit
+    prony
+    two_stage
+    refine
+
     Examples
     --------
     >>> import numpy as np

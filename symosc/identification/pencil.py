@@ -112,6 +112,13 @@ def matrix_pencil(
     nyquist_margin : float
         A pole above this fraction of the Nyquist frequency is reported as aliasing (IdentificationError).
 
+    See Also
+    --------
+    esprit
+    era
+    prony
+    refine
+
     Examples
     --------
     >>> import numpy as np
@@ -138,6 +145,12 @@ def esprit(
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
     """TLS-ESPRIT estimate of damped modes (same subspace as :func:`matrix_pencil`, total-least-squares shift).
+
+    See Also
+    --------
+    matrix_pencil
+    era
+    prony
 
     Examples
     --------

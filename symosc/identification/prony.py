@@ -161,6 +161,12 @@ def prony(
     IdentificationError
         Rank-deficient data for the requested order, a mode at/above Nyquist, nearly repeated modes.
 
+    See Also
+    --------
+    era
+    matrix_pencil
+    sampling_advice
+
     Examples
     --------
     >>> import numpy as np

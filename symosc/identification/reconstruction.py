@@ -275,6 +275,12 @@ def inertia_from_release(
         the release and stays exact with damping; ``"modulus"`` is the dissertation's recipe, biased by
         ``|lambda|/omega_d`` per mode when the record is damped.
 
+    See Also
+    --------
+    inertia_equal_springs
+    inertia_known_center
+    assemble_tensor
+
     Examples
     --------
     The dissertation's Appendix 1 run (Belyakov (2005), pp. 106–115):
@@ -323,6 +329,11 @@ def inertia_equal_springs(
     reconstructed ``M`` stays symmetric); ``"full"`` uses the whole matrix and symmetrises ``M``.  On the
     dissertation's data the two agree to 1e-5 (the full-variant values, computed without
     symmetrising, differ from both at the 1e-6 level in Izz and Ixx).
+
+    See Also
+    --------
+    inertia_from_release
+    inertia_known_center
 
     Examples
     --------
@@ -392,6 +403,11 @@ def inertia_known_center(
         Known center of mass in the body frame.
     cond_max, cond_warn : float
         Condition number above which to raise / to warn.
+
+    See Also
+    --------
+    inertia_from_release
+    inertia_equal_springs
 
     Examples
     --------

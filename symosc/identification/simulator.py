@@ -355,6 +355,12 @@ def simulate_stand(
     -------
     StandRecord
 
+    See Also
+    --------
+    stand_system
+    matrix_pencil
+    inertia_from_release
+
     Examples
     --------
     >>> from symosc.models import body_on_springs

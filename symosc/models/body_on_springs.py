@@ -414,6 +414,11 @@ def body_on_springs(
         ``modal(values, force)``.  Parameter names: ``m, rx, ry, rz, Ixx, Iyy, Izz, Ixy, Ixz, Iyz, k1..kN,
         c1..cN`` and ``Lx, Lz`` or ``x1..xN, z1..zN``.
 
+    See Also
+    --------
+    symosc.identification.simulate_stand
+    symosc.identification.inertia_from_release
+
     Examples
     --------
     >>> model = body_on_springs()

@@ -54,6 +54,11 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
         Coordinates ``phi1..phiN``; parameters ``m1..``, ``l1..``, ``lc1..``, ``I1..``, ``g``, ``a``, ``p``
         (only those that occur).
 
+    See Also
+    --------
+    pendulum_symbols
+    gribkov_khokhlov_table1
+
     Examples
     --------
     >>> s = n_link_pendulum(2, links="rigid", inverted=True, pivot="vertical")

@@ -422,6 +422,12 @@ def averaged_equations(
         If ``f`` cannot be averaged exactly, if the forcing has a constant part, or if no comparison frequency
         can be inferred.
 
+    See Also
+    --------
+    describing_function
+    averaged_equations_ndof
+    harmonic_linearization
+
     Examples
     --------
     >>> import sympy as sp

@@ -68,6 +68,12 @@ W2 = sp.Symbol("omega2", positive=True)
 def harmonic_linearization(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None = None) -> sp.Expr:
     """Coefficient of harmonic linearization ``h(A) = J(A)/A`` of an odd nonlinearity ``g(sigma)`` (12.78, 12.80).
 
+    See Also
+    --------
+    describing_function
+    self_oscillations
+    linearization_boundary
+
     Examples
     --------
     >>> import sympy as sp

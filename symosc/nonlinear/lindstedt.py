@@ -180,6 +180,12 @@ def lindstedt(
     -------
     LindstedtSeries
 
+    See Also
+    --------
+    limit_cycle
+    numeric_period
+    validate_lindstedt
+
     Examples
     --------
     Duffing ``x'' + x + eps*x**3 = 0``:

@@ -246,6 +246,13 @@ def limit_cycle(
         (conservative: a family of cycles, use :func:`~symosc.nonlinear.lindstedt`), or only a multiple root; several
         roots and no ``amplitude0``.
 
+    See Also
+    --------
+    lindstedt
+    numeric_limit_cycle
+    validate_limit_cycle
+    periodic_solution_ndof
+
     Examples
     --------
     Van der Pol (Bulgakov §5.22): amplitude 2, frequency ``1 - eps**2/16 + 17 eps**4/3072 + ...``

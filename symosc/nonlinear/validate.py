@@ -156,6 +156,12 @@ def numeric_limit_cycle(
         If given, polish the result with :func:`mpmath.odefun` at ``dps`` digits (slow; for reference values at
         moderate ``eps``).  Amplitude and period are then ``mpf``.
 
+    See Also
+    --------
+    limit_cycle
+    numeric_orbit
+    numeric_period
+
     Examples
     --------
     >>> import sympy as sp
@@ -343,6 +349,11 @@ def validate_limit_cycle(
         Integration tolerance.
     dps : int, optional
         Use the mpmath reference (see :func:`numeric_limit_cycle`).
+
+    See Also
+    --------
+    limit_cycle
+    numeric_limit_cycle
 
     Examples
     --------

@@ -202,6 +202,12 @@ def solve_operational(
     ModelError
         If ``det f`` vanishes identically or shapes do not match.
 
+    See Also
+    --------
+    carson
+    inverse_carson
+    to_transfer_function
+
     Examples
     --------
     A damped oscillator ``y'' + 3 y' + 2 y = x`` under a unit step, at rest:

@@ -46,6 +46,12 @@ def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "a
     ModelError
         If no closed form is found.
 
+    See Also
+    --------
+    inverse_carson
+    carson_by_table
+    invert_numeric
+
     Examples
     --------
     >>> import sympy as sp
@@ -93,6 +99,12 @@ def inverse_carson(
         function) and when no closed form is found.
 
     ``roots="numeric"`` uses 30-digit numeric poles (see :func:`heaviside_expand`).
+
+    See Also
+    --------
+    carson
+    heaviside_expand
+    invert_numeric
 
     Examples
     --------
@@ -227,6 +239,11 @@ def invert_numeric(
     ------
     ConvergenceError
         If the two methods disagree by more than ``tol``.
+
+    See Also
+    --------
+    inverse_carson
+    carson
 
     Examples
     --------

@@ -310,6 +310,10 @@ def monodromy(
     ConvergenceError
         If the integrator fails or the Liouville check is worse than ``max(1e-6, 1e4 * rtol)``.
 
+    See Also
+    --------
+    floquet_multipliers
+
     Examples
     --------
     >>> import sympy as sp
@@ -401,5 +405,10 @@ def floquet_multipliers(A: Any, period: float, **kwargs: Any) -> np.ndarray:
     >>> rho = floquet_multipliers(lambda t: np.array([[-1.0, 0.0], [0.0, -2.0]]), 1.0)
     >>> np.allclose(rho, [np.exp(-1), np.exp(-2)])
     True
+
+    See Also
+    --------
+    monodromy
+    stability_region
     """
     return monodromy(A, period, **kwargs).floquet_multipliers

@@ -201,6 +201,12 @@ def ince_strutt_diagram(n_max: int = 3, q_max: float = 8.0, num: int = 201) -> I
     ([0, 1, 2], [1, 2])
     >>> [round(float(d.a_curves[n][0]), 12) for n in range(3)]   # a_n(0) = n**2
     [0.0, 1.0, 4.0]
+
+    See Also
+    --------
+    modified_ince_strutt
+    mathieu_a
+    mathieu_b
     """
     if isinstance(n_max, bool) or not isinstance(n_max, int) or n_max < 0:
         raise ParameterError(f"n_max must be a non-negative integer, got {n_max!r}")
@@ -371,6 +377,12 @@ def modified_ince_strutt(
     lower_terms, upper_terms : int, optional
         Use that many non-zero terms of the power series (8) of ``a_0`` / (9) of ``b_1`` instead of the exact
         characteristic values.
+
+    See Also
+    --------
+    ince_strutt_diagram
+    stability_region
+    mathieu_a
 
     Examples
     --------

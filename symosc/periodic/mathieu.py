@@ -309,6 +309,12 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     -------
     float or numpy.ndarray (``mpmath.mpf`` / object array for ``method="mp"``)
 
+    See Also
+    --------
+    mathieu_b
+    mathieu_characteristic
+    mathieu_series_value
+
     Examples
     --------
     >>> round(mathieu_a(0, 1.0), 12)
@@ -336,6 +342,12 @@ def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     Returns
     -------
     float or numpy.ndarray (``mpmath.mpf`` / object array for ``method="mp"``)
+
+    See Also
+    --------
+    mathieu_a
+    mathieu_characteristic
+    mathieu_series_value
 
     Examples
     --------

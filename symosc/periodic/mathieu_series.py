@@ -262,6 +262,12 @@ def mathieu_series_value(
         When ``order`` is not given and no order up to ``max_order`` reaches ``tol`` (q too close to or beyond the
         radius of convergence).
 
+    See Also
+    --------
+    mathieu_series_a
+    mathieu_series_radius
+    mathieu_a
+
     Examples
     --------
     >>> r = mathieu_series_value("a", 0, 0.5)

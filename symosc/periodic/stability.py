@@ -404,6 +404,12 @@ def stability_region(
     ParameterError
         Unknown method or missing parameter values.
 
+    See Also
+    --------
+    modified_ince_strutt
+    compare_methods
+    floquet_multipliers
+
     Examples
     --------
     >>> from symosc.models import n_link_pendulum
