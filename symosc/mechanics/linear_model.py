@@ -63,10 +63,28 @@ class LinearModel(SymPyPrintable):
         return f"LinearModel({n} DOF, {kind} stiffness; parameters: {names})"
 
     def _repr_latex_(self) -> str:
+        return f"$${self.latex()}$$"
+
+    def latex(self, *, simplify: bool = False) -> str:
+        """LaTeX of ``M q'' + D q' + K q = f``; ``simplify=True`` applies ``sympy.trigsimp`` first (display only).
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> tex = n_link_pendulum(1).linearize().latex(simplify=True)
+        >>> tex.startswith(r"\\left[\\begin{matrix}l_{1}^{2} m_{1}\\end{matrix}\\right] \\ddot{q}")
+        True
+
+        See Also
+        --------
+        symosc.mechanics.LagrangianSystem.latex
+        """
+        M, D, K = self.M, self.D, self.K
+        if simplify:
+            M, D, K = (m.applyfunc(sp.trigsimp) for m in (M, D, K))
         q = sp.Matrix(self.coordinates)
         return (
-            f"$${sp.latex(self.M)} \\ddot{{q}} + {sp.latex(self.D)} \\dot{{q}} + {sp.latex(self.K)} "
-            f"{sp.latex(q)} = {sp.latex(self.f)}$$"
+            f"{sp.latex(M)} \\ddot{{q}} + {sp.latex(D)} \\dot{{q}} + {sp.latex(K)} {sp.latex(q)} = {sp.latex(self.f)}"
         )
 
     @cached_property
