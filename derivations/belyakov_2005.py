@@ -1,12 +1,14 @@
 """Belyakov (2005), moments of inertia of a body on springs from its oscillations: reproduction, end to end.
 
+Source: A. O. Belyakov, *Determination of moments of inertia of large bodies from oscillations in an elastic
+suspension*, PhD thesis, Moscow State University, 2005.
 Run ``python derivations/belyakov_2005.py [--quick] [--out DIR] [--executor auto|serial|processes]``; figures go to
 ``derivations/out/belyakov_2005/`` (``derivations/out/belyakov_2005_quick/`` with ``--quick``).  Each section prints
 its run time as it finishes; the Monte Carlo studies (Figs 20-24) run through ``symosc.sweep`` (default: a process
 pool for the full run) with a progress bar on stderr.
 
 Each section prints a table "dissertation | symosc | difference".  The product of inertia follows the
-dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23, the sign of its Appendix run).
+dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23).
 """
 
 from __future__ import annotations
@@ -28,10 +30,10 @@ import numpy as np  # noqa: E402
 
 from symosc.errors import IdentificationError  # noqa: E402
 from symosc.identification import (  # noqa: E402
-    algorithm1,
-    algorithm21,
-    algorithm22,
     excitation_time_bound,
+    inertia_equal_springs,
+    inertia_from_release,
+    inertia_known_center,
     matrix_pencil,
     refine,
     simulate_quasi_optimal,
@@ -57,8 +59,8 @@ C_APPENDIX = np.array(
         [-0.0006753526, 0.0007192575, 0.0006304678],
     ]
 )
-MAPLE = dict(m=15007.77822, rx=2.000005143, rz=0.8699994285, Izz=44031.41489, Ixx=3005.936169, Ixz=399.9900534)
-TABLE4 = dict(m=15007, rx=2, rz=0.87, Izz=44031, Ixx=3006, Ixz=399.9)
+MAPLE = dict(mass=15007.77822, rx=2.000005143, rz=0.8699994285, Izz=44031.41489, Ixx=3005.936169, Ixz=399.9900534)
+TABLE4 = dict(mass=15007, rx=2, rz=0.87, Izz=44031, Ixx=3006, Ixz=399.9)
 
 
 def table(rows: list[tuple[str, float, float]], title: str, fmt: str = "12.8g") -> None:
@@ -73,15 +75,15 @@ def table(rows: list[tuple[str, float, float]], title: str, fmt: str = "12.8g") 
 def tables_1_2() -> None:
     """Tables 1–2: stand and body; derived static quantities."""
     model = body_on_springs(product_of_inertia="dissertation")
-    xs, zs = model.vertical_stiffness_centre()
+    xs, zs = model.vertical_stiffness_center()
     subs = {s: STAND[s.name] for s in model.k} | {model.Lx: STAND["Lx"], model.Lz: STAND["Lz"]}
     rows = [
-        ("centre of stiffness x", 2.0, float(xs.subs(subs))),
-        ("centre of stiffness z", 0.87, float(zs.subs(subs))),
+        ("center of stiffness x", 2.0, float(xs.subs(subs))),
+        ("center of stiffness z", 0.87, float(zs.subs(subs))),
     ]
     rec = simulate_stand(model, STAND, force=[0.0] * 4, n_samples=2)
     rows.append(("static sag mg/4k, m", 15000 * 9.81 / (4 * 7.4e5), -float(rec.states[10, 0])))
-    table(rows, "Tables 1-2: stand (CM at the centre of stiffness; sag [C] from the 6-DOF simulator)")
+    table(rows, "Tables 1-2: stand (CM at the center of stiffness; sag recomputed with the 6-DOF simulator)")
 
 
 def table_3_and_modes() -> None:
@@ -91,20 +93,20 @@ def table_3_and_modes() -> None:
     table([(f"omega{k + 1}, rad/s", TABLE3[k], data.omega[k]) for k in range(3)], "Table 3 vs linear 3-DOF model")
     rows = [(f"C'[{j + 1},{k + 1}], m", C_APPENDIX[j, k], data.observation[j, k]) for j in range(4) for k in range(3)]
     table(rows, "C' (Appendix, identified from the 6-DOF simulation) vs linear 3-DOF model", fmt="12.6e")
-    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (recomputed: -2.027 mm)")
+    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (recomputed independently: -2.027 mm)")
     print("modal energies K'/2, J:", np.round(data.modal_energy(), 4).tolist(), "(recomputed: 0.676, 0.720, 0.632)")
 
 
 def appendix_run() -> None:
-    """Appendix 1: the Maple run of Algorithm 1 (the reference case)."""
-    est = algorithm1(TABLE3, C_APPENDIX, FORCE, (4, 1.74), product_of_inertia="dissertation")
+    """Appendix 1: the Maple run of Algorithm 1 (pp. 106–115)."""
+    est = inertia_from_release(TABLE3, C_APPENDIX, FORCE, (4, 1.74), product_of_inertia="dissertation")
     table([(k, v, est.as_dict()[k]) for k, v in MAPLE.items()], "Appendix (Maple) Algorithm 1 vs symosc")
-    e21 = algorithm21(TABLE3, C_APPENDIX, 15000.0, (4, 1.74), product_of_inertia="dissertation")
+    e21 = inertia_equal_springs(TABLE3, C_APPENDIX, 15000.0, (4, 1.74), product_of_inertia="dissertation")
     ref21 = dict(rx=2.0000051, rz=0.8699994, Izz=44000.725, Ixx=3000.338, Ixz=399.974)
     rows = [("k, N/m", 739970.676, e21.spring_stiffness)] + [(k, v, e21.as_dict()[k]) for k, v in ref21.items()]
-    table(rows, "Algorithm 2.1 on the Appendix data (recomputed values; not in the dissertation)")
+    table(rows, "Algorithm 2.1 on the Appendix data (recomputed; not in the dissertation)")
     try:
-        algorithm22(TABLE3, C_APPENDIX, 15000.0, (2.0, 0.87), (4, 1.74), product_of_inertia="dissertation")
+        inertia_known_center(TABLE3, C_APPENDIX, 15000.0, (2.0, 0.87), (4, 1.74), product_of_inertia="dissertation")
     except IdentificationError as err:
         print(f"Algorithm 2.2 on the Appendix data: {str(err)[:110]}...")
 
@@ -115,12 +117,15 @@ def table_4(quick: bool = False) -> None:
     dec = 10 if quick else 4
     rec = simulate_stand(model, STAND, force=FORCE, dt=0.002212 * dec, n_samples=12544 // dec, noise=0.01, seed=2005)
     est = refine(matrix_pencil(rec.signals, rec.dt, 3, constant=False), rec.signals)
-    res = algorithm1(est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74), product_of_inertia="dissertation")
+    res = inertia_from_release(
+        est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74), product_of_inertia="dissertation"
+    )
     table([(k, v, res.as_dict()[k]) for k, v in TABLE4.items()], "Table 4 (1 % noise): dissertation vs symosc")
-    true = dict(m=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
+    true = dict(mass=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
     errs = {k: 100 * abs(res.as_dict()[k] - v) / v for k, v in true.items()}
     print("symosc errors vs the true body, %:", {k: round(v, 3) for k, v in errs.items()})
-    print(f"(record: {rec.signals.shape[1]} samples at dt = {rec.dt:g} s, sigma = {rec.noise_sigma:.3g} m, seed 2005;"
+    print(f"(record: {rec.signals.shape[1]} samples at dt = {rec.dt:g} s, sigma = {rec.noise_sigma:.3g} m, "
+          "noise seed 2005;"
           " matrix pencil + variable-projection refinement)")  # fmt: skip
     _plot_signals(rec)
 
@@ -162,8 +167,8 @@ def fig19_tilt(quick: bool = False) -> None:
         J = R @ np.diag([3000.0, 43000.0, 44000.0]) @ R.T
         vals = {**STAND, "Ixx": J[0, 0], "Iyy": J[1, 1], "Izz": J[2, 2], "Ixy": -J[0, 1], "Ixz": 0.0, "Iyz": 0.0}
         rec = simulate_stand(model, vals, force=FORCE, dt=4 * 0.002212, n_samples=1400)
-        est = refine(matrix_pencil(rec.clean, rec.dt, 3, constant=False, pencil=200), rec.clean)
-        res = algorithm1(est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74))
+        est = refine(matrix_pencil(rec.clean, rec.dt, 3, constant=False, hankel_size=200), rec.clean)
+        res = inertia_from_release(est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74))
         ezz, exx = 100 * (res.Izz / J[2, 2] - 1), 100 * (res.Ixx / J[0, 0] - 1)
         print(f"{deg:>9.1f} {'<= 2 %':>14} {ezz:>+10.2f} {exx:>+10.2f}")
     print(
@@ -175,12 +180,12 @@ def fig25_damping() -> None:
     """Fig. 25 / Ch. III §4: 10000 N s/m in each spring "does not affect the accuracy" (noise-free virtual stand)."""
     model = body_on_springs(product_of_inertia="dissertation")
     rec = simulate_stand(model, STAND, force=FORCE, dt=4 * 0.002212, n_samples=1400, damping=1e4)
-    est = matrix_pencil(rec.clean, rec.dt, 3, constant=False, pencil=200)
+    est = matrix_pencil(rec.clean, rec.dt, 3, constant=False, hankel_size=200)
     amps = 2 * est.complex_amplitudes
     print("\n== Fig. 25: damping 10000 N s/m per spring; Algorithm 1 errors, % (dissertation: no loss of accuracy)")
     print(f"{'stage 3':<22} {'m':>8} {'Izz':>8} {'Ixx':>8}")
     for how in ("modulus", "real"):
-        r = algorithm1(est.undamped_frequencies, amps, FORCE, (4, 1.74), product_of_inertia="dissertation",
+        r = inertia_from_release(est.undamped_frequencies, amps, FORCE, (4, 1.74), product_of_inertia="dissertation",
                        complex_modes=how)  # fmt: skip
         errs = [100 * (r.mass / 15000 - 1), 100 * (r.Izz / 44000 - 1), 100 * (r.Ixx / 3000 - 1)]
         print(f"{how + (' (dissertation)' if how == 'modulus' else ''):<22} " + " ".join(f"{e:>+8.3f}" for e in errs))
@@ -193,14 +198,14 @@ def fig25_damping() -> None:
 
 
 def min_time_example() -> None:
-    """Ch. II §4.5: minimum excitation time of the stand (Belyakov 2005, Ch. II §4.5)."""
+    """Ch. II §4.5: minimum excitation time of the stand."""
     lx, lz, k, am = 4.0, 1.74, 7.4e5, 2e-3
     C = np.array([[1, -lx / 2, lz / 2], [1, lx / 2, lz / 2], [1, lx / 2, -lz / 2], [1, -lx / 2, -lz / 2]])
     res = excitation_time_bound(np.diag([15000.0, 44000.0, 3000.0]), k * C.T @ C, C.T, 5.0, [am, am / lx, am / lz])
     table([(f"T{i + 1}, s (printed)", v, res.times[i]) for i, v in enumerate([33, 14, 8.5])],
-          "Ch. II §4.5 excitation times (printed rounded, and without the factor pi)")  # fmt: skip
+          "Ch. II §4.5 excitation times (printed rounded, and the factor pi is missing from the print)")  # fmt: skip
     table([(f"T{i + 1}, s (recomputed)", v, res.times[i]) for i, v in enumerate([33.0987, 14.1720, 8.50701])],
-          "... against the values recomputed to 6 digits")  # fmt: skip
+          "... against an independent recomputation")  # fmt: skip
     print("exact 1-DOF minimum times from rest (rigorous bound):", np.round(res.exact_times, 4).tolist())
     run = simulate_quasi_optimal((0.0, 0.0), 4.0, 1.0, 1.0)
     print(f"quasi-optimal law, a = 4 u_m from rest: {run.time / (2 * np.pi):.6f} periods (eq. 76: 1)")
@@ -208,8 +213,8 @@ def min_time_example() -> None:
 
 def _fig20_pipeline(sig, dt, era):
     """ERA (Kung, 60 block rows, 3 modes) + Algorithm 1: module level, so that a process pool can run it."""
-    est = era(sig, dt, 3, constant=False, rows=60)
-    return algorithm1(est.frequencies, est.mode_shapes, FORCE, (4.0, 1.74), product_of_inertia="dissertation")
+    est = era(sig, dt, 3, constant=False, hankel_size=60)
+    return inertia_from_release(est.frequencies, est.mode_shapes, FORCE, (4.0, 1.74), product_of_inertia="dissertation")
 
 
 def error_vs_noise_figure(quick: bool = False) -> None:
@@ -233,7 +238,7 @@ def error_vs_noise_figure(quick: bool = False) -> None:
     thr = ev.threshold("Izz", 0.02)
     more = ">= " if thr == ev.levels[-1] else ""  # never exceeded within the levels studied
     print(f"largest noise with mean Izz error <= 2 %: {more}{100 * thr:.1f} % (dissertation: 6 %,")
-    print("  with its nonlinear simulator; this linear pipeline gives 0.78 % Izz error at 6 % noise)")
+    print("  with its nonlinear simulator; the linear pipeline here gives about 0.8 % Izz error at 6 % noise)")
     try:
         import matplotlib
 
@@ -275,7 +280,7 @@ def error_maps_figure(quick: bool = False) -> None:
     on_line = int(a22.failures[:, :, np.isclose(dz, 0.0)].sum())
     print(f"Algorithm 2.2 at the same noise: failures {int(a22.failures.sum())} of {a22.errors[..., 0].size} runs,")
     print(
-        f"  {on_line} on the line dz = 0; it is ill-posed at the centre of stiffness and poor on the lines through it"
+        f"  {on_line} on the line dz = 0; it is ill-posed at the center of stiffness and poor on the lines through it"
     )
     print("  (6 % noise: Ixx errors 40-800 % on dz = 0, Izz errors 10-23 % on dx = 0). Condition numbers:")
     print(np.round(a22.condition, 1))

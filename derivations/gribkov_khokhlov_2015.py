@@ -1,6 +1,6 @@
 """Gribkov & Khokhlov (2015): reproduction, end to end.
 
-Source: ../shared/seeds/000_61b220062ca00c64.txt; digest: ../shared/research/seed-gribkov-khokhlov.md.
+Source: Gribkov & Khokhlov (2015), stability of a statically unstable pendulum system with a vibrating pivot.
 Run ``python derivations/gribkov_khokhlov_2015.py``; figures go to ``derivations/out/``.
 
 Each section prints a table "source value | symosc value | difference".  Where the paper's printed value
@@ -31,8 +31,8 @@ def table1_natural_frequencies() -> dict[str, float]:
     """§4, Table 1: natural frequencies of the hanging double physical pendulum.
 
     The paper prints 2.289 Hz and 5.094 Hz (ratio of squares 0.2019).  Its own Table 1 with the standard
-    double-physical-pendulum model gives 2.3276 Hz and 5.0460 Hz (ratio 0.2128), about 1.7 % away; the
-    research report found that changing lc2 alone to ~15.16 mm would reproduce the printed values, so a
+    double-physical-pendulum model gives 2.3276 Hz and 5.0460 Hz (ratio 0.2128), about 1.7 % away;
+    changing lc2 alone to ~15.16 mm would reproduce the printed values, so a
     table entry or the paper's model differs.  We compute from Table 1 as printed.
     """
     values = gribkov_khokhlov_table1()
@@ -79,7 +79,7 @@ def fig1_classic(out: Path = OUT) -> str:
     from symosc.periodic import ince_strutt_diagram
 
     plt = _part2_plt()
-    d = ince_strutt_diagram(orders=3, q_max=8.0, num=161)
+    d = ince_strutt_diagram(n_max=3, q_max=8.0, num=161)
     ax = d.plot(a_range=(-2.0, 14.0))
     path = str(out / "gk2015_fig1_ince_strutt.png")
     ax.figure.savefig(path, dpi=110)
@@ -94,9 +94,9 @@ def fig3_modified(out: Path = OUT) -> list[str]:
     plt = _part2_plt()
     d = modified_ince_strutt(0.7)
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5))
-    d.plot(ax=ax1, orders=3, q_max=6.0, a_range=(-2.0, 8.0), num=161)
+    d.plot(ax=ax1, n_max=3, q_max=6.0, a_range=(-2.0, 8.0), num=161)
     ax1.set_title("Fig. 3a: modified diagram, r = 0.7 (mode 1 solid, mode 2 dashed)")
-    d.plot(ax=ax2, orders=1, q_max=1.2, a_range=(-0.8, 1.2), num=161)
+    d.plot(ax=ax2, n_max=1, q_max=1.2, a_range=(-0.8, 1.2), num=161)
     ax2.set_title("Fig. 3b: near the origin")
     path = str(out / "gk2015_fig3_modified_r07.png")
     fig.tight_layout()

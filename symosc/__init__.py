@@ -9,8 +9,9 @@ callables that validate every derivation.
 array([1.])
 """
 
-from . import errors, numeric, symbols
+from . import errors, io, numeric, symbols
 from .errors import ConvergenceError, IdentificationError, ModelError, ParameterError, SymoscError
+from .io import load, save
 from .sweep import sweep  # eager (light), so that the function is not shadowed by its submodule
 from .symbols import ddot, dot, t
 
@@ -25,30 +26,62 @@ __all__ = [
     "ddot",
     "dot",
     "errors",
+    "io",
+    "load",
     "numeric",
+    "save",
     "sweep",
     "symbols",
     "t",
 ]
 
 
+# Subpackages imported on first access (``symosc.mechanics`` etc.), so that ``import symosc`` stays light.
+_SUBPACKAGES = frozenset(
+    {
+        "algebra",
+        "cli",
+        "codegen",
+        "identification",
+        "linear",
+        "mechanics",
+        "models",
+        "networks",
+        "nonlinear",
+        "operational",
+        "periodic",
+        "scene",
+    }
+)
+
+
 def __getattr__(name: str):
     """Import subpackages lazily so that ``import symosc`` stays light."""
     import importlib
 
-    if name in {
-        "mechanics",
-        "models",
-        "periodic",
-        "algebra",
-        "operational",
-        "nonlinear",
-        "codegen",
-        "identification",
-        "linear",
-        "plotting",
-        "cli",
-        "scene",
-    }:
-        return importlib.import_module(f".{name}", __name__)
+    if name in _SUBPACKAGES:
+        try:
+            return importlib.import_module(f".{name}", __name__)
+        except ModuleNotFoundError as err:
+            if err.name != f"{__name__}.{name}":
+                raise
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")
+
+
+def _installed_subpackages() -> list[str]:
+    """Names of the lazily imported subpackages present in this installation of symosc."""
+    import importlib.util
+    import os
+
+    here = os.path.dirname(os.path.abspath(__file__))
+    out = []
+    for name in sorted(_SUBPACKAGES):
+        spec = importlib.util.find_spec(f"{__name__}.{name}")
+        if spec is not None and spec.origin and os.path.abspath(spec.origin).startswith(here + os.sep):
+            out.append(name)
+    return out
+
+
+def __dir__() -> list[str]:
+    """Public names and the subpackages that are installed."""
+    return sorted(set(__all__) | set(_installed_subpackages()) | {"__version__"})

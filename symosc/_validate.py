@@ -241,11 +241,12 @@ def guard(fn):
         return fn
     params = sig.parameters
     name = fn.__name__
+    renames = getattr(fn, "__symosc_renamed_keywords__", {})  # deprecated keyword -> new (forwarded with a warning)
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
         try:
-            bound = sig.bind(*args, **kwargs)
+            bound = sig.bind(*args, **{renames.get(k, k) if k not in params else k: v for k, v in kwargs.items()})
         except TypeError as exc:
             raise ParameterError(f"{name}(): {exc}") from None
         for pname, value in bound.arguments.items():

@@ -2,8 +2,8 @@
 
 Subcommands (``symosc COMMAND --help`` for each):
 
-- ``run SCENE.toml [-o OUTDIR] [--format md|html|json]``: answer a scene's questions, print the report, write
-  the report, ``results.json`` and the figures;
+- ``run SCENE.toml [-o OUTDIR] [--format md|html|json]``: answer a scene's questions, print the scene report, write
+  it, ``results.json`` and the figures;
 - ``double-pendulum [--set NAME=VALUE]``: natural frequencies of the Table 1 pendulum of Gribkov & Khokhlov (2015);
 - ``stability N``: stability of the inverted N-link pendulum on a vibrating pivot (``--plot`` writes the diagram);
 - ``mathieu a|b N Q...``: Mathieu characteristic values;
@@ -314,10 +314,10 @@ def _parser() -> argparse.ArgumentParser:
         return p
 
     p = add("run", "answer the questions of a scene file (TOML) and write a report", _run,
-            "Answer the questions of a scene file: print the report, write report.<format>, results.json and the "
+            "Answer the questions of a scene file: print the scene report, write report.<format>, results.json and the "
             "figures (PNG, needs matplotlib) into OUTDIR (default symosc-out/<scene name>/).")  # fmt: skip
     p.add_argument("scene", metavar="SCENE.toml", help="the scene file (see docs/scenes.md and examples/)")
-    p.add_argument("-o", "--output", metavar="OUTDIR", help="folder for the report, results.json and figures")
+    p.add_argument("-o", "--output", metavar="OUTDIR", help="folder for the scene report, results.json and figures")
     p.add_argument("--format", choices=("md", "html", "json"), default="md", help="report format (json: print JSON)")
     p.add_argument("--no-files", action="store_true", help="print only, write nothing")
 

@@ -1,7 +1,7 @@
 """Accurate divided differences for clustered floating-point nodes (private).
 
 Within a cluster of nearly equal nodes ``x_i = μ + y_i`` the divided difference is computed from the Taylor
-expansion of f about the cluster centre,
+expansion of f about the cluster center,
 
     f[x_i, ..., x_j] = Σ_{m >= k} c_m h_{m-k}(y_i, ..., y_j),   c_m = f^(m)(μ)/m!,  k = j - i,
 
@@ -69,7 +69,7 @@ def _fmt(z) -> str:
 
 
 class IndicatorSource:
-    """Taylor data of the function that is 1 near one cluster centre and 0 near the others (for projectors)."""
+    """Taylor data of the function that is 1 near one cluster center and 0 near the others (for projectors)."""
 
     degree = 0
 
@@ -106,14 +106,14 @@ def _divided_differences(nodes, clusters, source, tol: float, max_terms: int) ->
     degree = getattr(source, "degree", None)
     for ci, members in enumerate(clusters):
         lo, hi = members[0], members[-1]
-        centre = mpmath.fsum(x[lo : hi + 1]) / (hi - lo + 1)
+        center = mpmath.fsum(x[lo : hi + 1]) / (hi - lo + 1)
         if hi == lo:
             D[lo][lo] = source.coefficient(0, x[lo], ci)
             continue
-        y = [xi - centre for xi in x[lo : hi + 1]]
+        y = [xi - center for xi in x[lo : hi + 1]]
         s = len(y)
         rho = max(abs(v) for v in y)
-        coeff = functools.lru_cache(maxsize=None)(lambda m, c=centre, q=ci: source.coefficient(m, c, q))
+        coeff = functools.lru_cache(maxsize=None)(lambda m, c=center, q=ci: source.coefficient(m, c, q))
         for i in range(s):
             # h[r] = h_r(y_i..y_j), updated as j grows
             h = [mpmath.mpf(1)] + [mpmath.mpf(0)] * max_terms
@@ -140,7 +140,7 @@ def _divided_differences(nodes, clusters, source, tol: float, max_terms: int) ->
                         small = 0
                 if not converged:
                     raise ConvergenceError(
-                        f"the Taylor series of f about the cluster centre {_fmt(centre)} (cluster radius "
+                        f"the Taylor series of f about the cluster center {_fmt(center)} (cluster radius "
                         f"{mpmath.nstr(rho, 3)}) did not converge in {max_terms} terms; f may have a singularity "
                         "near this cluster. Use a smaller cluster_tol.",
                         achieved=float(abs(term) / scale) if scale else None,

@@ -4,7 +4,7 @@
   ``p``-th normalised derivative 1 at ``λ_σ`` and every other datum (derivatives below ``q_τ`` at every node)
   zero; ``ε_σ = η_(σ,0)``.
 * :func:`interpolation_polynomial` — ``r(λ) = Σ_σ Σ_p f^(p)(λ_σ)/p! η_(σ,p)(λ)`` of degree < Σ q_σ (1.266, 1.269);
-  ``f(A) = r(A)`` when the nodes are the characteristic roots (§2.2 of the research report).
+  ``f(A) = r(A)`` when the nodes are the characteristic roots (Bulgakov (1954), §1.30).
 * :func:`function_elementary_divisors` — elementary divisors of ``f(A)`` predicted from those of A: a Jordan
   block of size e at λ whose first non-vanishing derivative ``f^(s)(λ)`` (1 <= s < e) has order s splits into s
   blocks of sizes ⌈(e-i)/s⌉, i = 0..s-1, at ``f(λ)`` (Lappo-Danilevsky when s = 1, and ``k = ⌈e/s⌉`` (1.302)).

@@ -4,7 +4,7 @@
 formula with projectors ``ε_σ = Π_(τ≠σ) (A - λ_τE)/(λ_σ - λ_τ)`` (1.278); multiple roots (non-linear elementary
 divisors) the confluent form.  For floating-point matrices the blocked Schur–Parlett algorithm (Davies & Higham,
 2003) is used: eigenvalues close relative to their own size form clusters, f on a cluster is the Newton
-interpolation polynomial with divided differences computed from the Taylor series of f about the cluster centre
+interpolation polynomial with divided differences computed from the Taylor series of f about the cluster center
 (so no ``1/(λ_σ - λ_τ)`` with a small difference is ever formed), and the clusters are coupled through triangular
 Sylvester equations, which keeps the accuracy on spectra spanning many decades.
 """
@@ -19,6 +19,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from . import _taylor
 from ._schur_parlett import float_matrix_function
@@ -31,7 +32,7 @@ _METHODS = ("auto", "sylvester", "confluent")
 
 
 @dataclass(frozen=True)
-class MatrixFunction:
+class MatrixFunction(SymPyPrintable):
     """``f(A)`` together with the spectral data it was built from (returned when ``spectral=True``)."""
 
     value: sp.Matrix
@@ -92,7 +93,13 @@ def matrix_function(
         A is not square, or f (or a derivative that the Jordan structure needs) is not defined at an eigenvalue
         (``log`` at 0, ``sqrt`` at 0 with a Jordan block, a pole of a rational f).
     ConvergenceError
-        Floating point: the Taylor series of f about a cluster centre does not converge (a singularity is near).
+        Floating point: the Taylor series of f about a cluster center does not converge (a singularity is near).
+
+    See Also
+    --------
+    spectral_decomposition
+    interpolation_polynomial
+    series_converges
 
     Examples
     --------

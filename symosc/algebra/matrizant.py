@@ -16,6 +16,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from .._validate import check_finite, check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind
@@ -61,8 +62,8 @@ def _tail_bound(x: float, order: int, n: int) -> float:
 
 
 @dataclass(frozen=True)
-class Matrizant:
-    """Truncated Peano–Baker series ``Ω(t) = E + T_1(t) + ... + T_order(t)`` of ``X' = A(t) X``.
+class Matrizant(SymPyPrintable):
+    """Truncated Peano–Baker series ``Ω(t) = E + T_1(t) + … + T_order(t)`` of ``X' = A(t) X``.
 
     Attributes
     ----------
@@ -151,6 +152,11 @@ def matrizant(A: Any, t: sp.Symbol, t0: Any = 0, order: int = 10) -> Matrizant:
     -------
     Matrizant
         With the symbolic ``series``, the a-priori ``bound(t1)`` and ``evaluate(t1, tol=...)``.
+
+    See Also
+    --------
+    matrizant_numeric
+    matrix_function
 
     Examples
     --------

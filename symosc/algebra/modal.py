@@ -14,6 +14,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ._util import as_square_matrix, is_float_matrix
 from .polynomial_matrices import _as_poly_matrix, _deg, _div
@@ -22,7 +23,7 @@ __all__ = ["ModalMatrix", "TriangularForm", "luzin_form", "modal_matrix", "penci
 
 
 @dataclass(frozen=True)
-class ModalMatrix:
+class ModalMatrix(SymPyPrintable):
     """Result of :func:`modal_matrix` / :func:`pencil_modal_matrix`; unpacks as ``V, W = result``.
 
     Attributes
@@ -244,7 +245,7 @@ def pencil_modal_matrix(a: Any, b: Any) -> ModalMatrix:
 
 
 @dataclass(frozen=True)
-class TriangularForm:
+class TriangularForm(SymPyPrintable):
     """Result of :func:`luzin_form`: ``U f = H`` with ``det U`` a non-zero constant.
 
     Attributes
@@ -290,8 +291,8 @@ def luzin_form(f: Any, lam: sp.Symbol) -> TriangularForm:
     those columns, ``D_r`` for a square matrix.  Coefficients are treated as elements of a field (symbolic leading
     coefficients are assumed non-zero).
 
-    What is reconstructed: the book's displayed matrices are lost in the OCR; the statement above and the example
-    below follow the research report's reconstruction of §1.22 Ex. 1.
+    What is reconstructed: the book's displayed matrices are illegible in the available copy; the statement above
+    and the example below are a reconstruction of §1.22 Ex. 1.
 
     Examples
     --------

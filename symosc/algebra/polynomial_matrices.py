@@ -19,6 +19,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._util import as_square_matrix
 from .charpoly import adjugate_poly, leverrier
@@ -143,7 +144,7 @@ def elementary_divisors(f: Any, lam: sp.Symbol) -> dict[sp.Expr, list[int]]:
 
 
 @dataclass(frozen=True)
-class SmithForm:
+class SmithForm(SymPyPrintable):
     """``S = U f V`` with S diagonal, each diagonal entry monic and dividing the next, U and V unimodular.
 
     Attributes
@@ -177,6 +178,12 @@ def smith_form(f: Any, lam: sp.Symbol) -> SmithForm:
 
     Elementary operations over the polynomials in ``lam`` (Euclid's algorithm on the pivot's row and column)
     give ``U f V = S = diag(E_1, ..., E_r, 0, ...)`` with ``det U`` and ``det V`` non-zero constants.
+
+    See Also
+    --------
+    invariant_factors
+    elementary_divisors
+    determinantal_divisors
 
     Examples
     --------
@@ -307,7 +314,7 @@ def polymatrix_divmod(f: Any, g: Any, lam: sp.Symbol, side: str = "left") -> tup
 
 
 @dataclass(frozen=True)
-class PencilDivisors:
+class PencilDivisors(SymPyPrintable):
     """Elementary divisors of a regular pencil ``λB - A``: finite ``{a: [e...]}`` and infinite ``[e...]``."""
 
     finite: dict

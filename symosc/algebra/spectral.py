@@ -8,7 +8,8 @@ with ``F(λ) = adj(λE - A)`` and ``D_σ(λ) = Δ(λ)/(λ - λ_σ)^q_σ``; the d
 coefficients (the Taylor shift of the polynomial F times the series of ``1/D_σ``).  Then any f analytic at the
 roots is ``f(A) = Σ_σ Σ_(p<e_σ) f^(p)(λ_σ)/p! η_σ^p`` (1.287).
 
-Floating-point matrices have no reliable Jordan structure (stability note 2 of the research report), so their
+Floating-point matrices have no reliable Jordan structure (it is not a continuous
+function of the entries), so their
 eigenvalues are grouped into clusters of nearly equal values; each component then belongs to a cluster, its
 projector is the spectral (Riesz) projector of the cluster, and its "nilpotent" ``(A - μE)P`` has spectral radius
 at most the cluster radius.
@@ -21,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._schur_parlett import indicator_projectors, relative_clusters
 from ._util import as_square_matrix, is_float_matrix
@@ -30,13 +32,13 @@ __all__ = ["SpectralComponent", "SpectralDecomposition", "spectral_decomposition
 
 
 @dataclass(frozen=True)
-class SpectralComponent:
+class SpectralComponent(SymPyPrintable):
     """One distinct root (or, in floating point, one cluster of nearly equal roots).
 
     Attributes
     ----------
     root : Expr
-        λ_σ (for a cluster: its centre).
+        λ_σ (for a cluster: its center).
     multiplicity : int
         Algebraic multiplicity q_σ (cluster: number of eigenvalues in it).
     index : int
@@ -65,7 +67,7 @@ class SpectralComponent:
 
 
 @dataclass(frozen=True)
-class SpectralDecomposition:
+class SpectralDecomposition(SymPyPrintable):
     """Spectral data of a matrix: ``A = Σ_σ (λ_σ ε_σ + η_σ)`` and ``Σ ε_σ = E``.
 
     Use :meth:`apply` for ``f(A)`` (exact case only), :attr:`roots` and :attr:`projectors` to inspect it.
@@ -77,7 +79,7 @@ class SpectralDecomposition:
 
     @property
     def roots(self) -> list[sp.Expr]:
-        """Distinct roots (cluster centres in floating point)."""
+        """Distinct roots (cluster centers in floating point)."""
         return [c.root for c in self.components]
 
     @property
@@ -345,16 +347,16 @@ def _rational_decomposition(A: sp.Matrix, F: sp.Matrix, delta: sp.Poly, lam: sp.
 
 
 def _cluster(eigs: np.ndarray, cluster_tol: float) -> list[list[int]]:
-    """Clusters of eigenvalues close relative to their own size, in Leja order of the centres."""
+    """Clusters of eigenvalues close relative to their own size, in Leja order of the centers."""
     n = len(eigs)
     scale = float(np.max(np.abs(eigs))) if n else 1.0
     clusters = relative_clusters(eigs, cluster_tol, scale)
-    # Leja order of the centres: start with the largest, then maximise the product of distances.
-    centres = [np.mean(eigs[g]) for g in clusters]
-    order = [int(np.argmax(np.abs(centres)))]
+    # Leja order of the centers: start with the largest, then maximize the product of distances.
+    centers = [np.mean(eigs[g]) for g in clusters]
+    order = [int(np.argmax(np.abs(centers)))]
     while len(order) < len(clusters):
         rest = [i for i in range(len(clusters)) if i not in order]
-        best = max(rest, key=lambda i: np.prod([abs(centres[i] - centres[j]) for j in order]))
+        best = max(rest, key=lambda i: np.prod([abs(centers[i] - centers[j]) for j in order]))
         order.append(best)
     return [clusters[i] for i in order]
 
@@ -422,7 +424,9 @@ def _to_sympy_real(M: np.ndarray) -> sp.Matrix:
 
 
 def spectral_decomposition(A: sp.Matrix, *, cluster_tol: float = 1e-2) -> SpectralDecomposition:
-    """Roots, principal idempotents ε_σ and nilpotents η_σ^p of a square matrix (Bulgakov 1.284–1.298).
+    """Roots, principal idempotents and nilpotents of a square matrix (Bulgakov 1954, ch. 1).
+
+    Eqs. (1.284)–(1.298) of the book: the idempotents are its ``ε_σ``, the nilpotents its ``η_σ^p``.
 
     Parameters
     ----------
@@ -435,6 +439,11 @@ def spectral_decomposition(A: sp.Matrix, *, cluster_tol: float = 1e-2) -> Spectr
     Returns
     -------
     SpectralDecomposition
+
+    See Also
+    --------
+    matrix_function
+    modal_matrix
 
     Examples
     --------

@@ -1,9 +1,11 @@
 """Identification: modal models from sampled oscillations (Belyakov 2005) and their error studies.
 
-Signal estimators share one interface, ``estimator(signals, dt, n_modes=None, *, order=None, constant=True, ...)``
+Signal estimators share one interface, ``estimator(signals, dt, n_modes=None, *, n_poles=None, constant=True, ...)``
 with ``signals`` of shape ``(samples,)`` or ``(channels, samples)``, and return a :class:`ModalEstimate`.
 """
 
+from .._deprecation import module_getattr as _module_getattr
+from .._validate import guard_public_api as _guard_public_api
 from ._signals import ModalEstimate
 from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
 from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
@@ -38,12 +40,12 @@ from .prony import SamplingAdvice, prony, sampling_advice
 from .reconstruction import (
     InertiaEstimate,
     InertiaTensor,
-    algorithm1,
-    algorithm21,
-    algorithm22,
     assemble_tensor,
     central_identity,
     check_distinct,
+    inertia_equal_springs,
+    inertia_from_release,
+    inertia_known_center,
     real_modes,
 )
 from .refine import refine
@@ -71,9 +73,6 @@ __all__ = [
     "SecondOrderModel",
     "StandRecord",
     "add_noise",
-    "algorithm1",
-    "algorithm21",
-    "algorithm22",
     "applicability",
     "assemble_tensor",
     "central_identity",
@@ -87,6 +86,9 @@ __all__ = [
     "excitation_time",
     "excitation_time_bound",
     "flywheel",
+    "inertia_equal_springs",
+    "inertia_from_release",
+    "inertia_known_center",
     "jacobian",
     "matrix_pencil",
     "min_time_1dof",
@@ -110,7 +112,18 @@ __all__ = [
     "two_stage",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
 
+_DEPRECATED_NAMES = {
+    "algorithm1": "inertia_from_release",
+    "algorithm21": "inertia_equal_springs",
+    "algorithm22": "inertia_known_center",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 _guard_public_api(__name__)
+
+# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
+from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
+
+_add_printing_hooks_to_public(__name__)

@@ -19,6 +19,8 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 
 __all__ = ["ModalEstimate"]
@@ -28,7 +30,7 @@ _RANK_TOL = 1e-11  # sigma_order / sigma_1 below this: the data do not support t
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class ModalEstimate:
+class ModalEstimate(SymPyPrintable):
     """Modal model identified from sampled free-decay signals.
 
     Attributes
@@ -47,10 +49,10 @@ class ModalEstimate:
         Constant term ``A0_c`` (zeros when the model has no constant state).
     singular_values : ndarray
         Singular values of the data matrix the method decomposed (Hankel or linear-prediction matrix); the gap
-        after ``order`` values measures how well the model order is determined.
+        after ``n_poles`` values measures how well the model order is determined.
     residual : float
         Relative RMS misfit ``||y - y_model|| / ||y||`` over all channels and samples.
-    order : int
+    n_poles : int
         Number of exponentials in the model, ``2 n_modes + (1 if constant)``.
     n_samples : int
         Number of samples per channel that were fitted.
@@ -66,11 +68,19 @@ class ModalEstimate:
     offset: np.ndarray
     singular_values: np.ndarray
     residual: float
-    order: int
+    n_poles: int
     n_samples: int
     details: Mapping[str, Any] = field(default_factory=dict)
 
     # ----------------------------------------------------------------------------------------------- derived
+    @property
+    def order(self) -> int:
+        """Deprecated alias of :attr:`n_poles`."""
+        from .._deprecation import warn_deprecated
+
+        warn_deprecated("ModalEstimate.order", "ModalEstimate.n_poles")
+        return self.n_poles
+
     @property
     def n_modes(self) -> int:
         """Number of oscillatory modes."""
@@ -132,7 +142,7 @@ class ModalEstimate:
 
     def __repr__(self) -> str:
         lines = [
-            f"ModalEstimate(method={self.method!r}, order={self.order}, n_modes={self.n_modes}, "
+            f"ModalEstimate(method={self.method!r}, n_poles={self.n_poles}, n_modes={self.n_modes}, "
             f"channels={self.n_channels}, n_samples={self.n_samples}, dt={self.dt:g}, residual={self.residual:.3g})",
             f"  {'mode':>4} {'omega (rad/s)':>16} {'f (Hz)':>14} {'delta (1/s)':>14} {'zeta':>10}  amplitudes",
         ]
@@ -153,6 +163,7 @@ class ModalEstimate:
         lead = f"{self.offset[0]:.4g} + " if self.offset[0] != 0 else ""
         return "$y_1(t) = " + lead + " + ".join(terms) + "$"
 
+    @plot_method
     def plot(self, signals: Any = None, *, ax: Any = None, channel: int = 0) -> Any:
         """Plot the model signal of one channel (and the measured ``signals`` if given); returns the axes."""
         import matplotlib.pyplot as plt
@@ -217,16 +228,16 @@ def _resolve_order(n_modes: int | None, order: int | None, constant: bool) -> in
             raise ParameterError(f"n_modes must be a positive integer, got {n_modes!r}")
         if order is not None and order != 2 * int(n_modes) + c:
             raise ParameterError(
-                f"order={order} contradicts n_modes={n_modes} (with constant={constant} it must be "
+                f"n_poles={order} contradicts n_modes={n_modes} (with constant={constant} it must be "
                 f"{2 * int(n_modes) + c}); give only one of them"
             )
         return 2 * int(n_modes) + c
     if order is not None:
         if int(order) != order or order < 1 + c:
-            raise ParameterError(f"order must be an integer >= {1 + c}, got {order!r}")
+            raise ParameterError(f"n_poles must be an integer >= {1 + c}, got {order!r}")
         if (order - c) % 2:
             raise ParameterError(
-                f"order={order} with constant={constant} leaves a lone real exponential: order must be "
+                f"n_poles={order} with constant={constant} leaves a lone real exponential: n_poles must be "
                 f"2*n_modes{' + 1' if c else ''}"
             )
         return int(order)
@@ -457,7 +468,7 @@ def _fit(
         offset=np.asarray(offset, dtype=float),
         singular_values=np.asarray(singular_values, dtype=float),
         residual=residual,
-        order=2 * k + int(bool(constant)),
+        n_poles=2 * k + int(bool(constant)),
         n_samples=n,
         details=dict(details or {}),
     )

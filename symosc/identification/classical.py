@@ -19,6 +19,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..numeric import CompiledFunction
 from ..numeric import compile as _compile
@@ -28,7 +29,7 @@ __all__ = ["InertiaFormula", "flywheel", "physical_pendulum", "rocking_platform"
 
 
 @dataclass(frozen=True)
-class InertiaFormula:
+class InertiaFormula(SymPyPrintable):
     """A moment-of-inertia formula derived from equations of motion.
 
     ``expr`` is the moment of inertia; ``equations`` the equations of motion/measurement it solves; calling the
@@ -83,8 +84,8 @@ def flywheel() -> InertiaFormula:
 
 
 def physical_pendulum() -> InertiaFormula:
-    """Physical pendulum: mass ``m``, centre of mass at distance ``r`` from the pivot, small-oscillation angular
-    frequency ``omega``; returns the moment of inertia about the centre of mass.
+    """Physical pendulum: mass ``m``, center of mass at distance ``r`` from the pivot, small-oscillation angular
+    frequency ``omega``; returns the moment of inertia about the center of mass.
 
     Equation of motion ``(I + m r^2) phi'' + m g r phi = 0`` with ``phi = cos(omega t)``.
 
@@ -100,8 +101,8 @@ def physical_pendulum() -> InertiaFormula:
 
 def rocking_platform() -> InertiaFormula:
     """Platform (own inertia ``J`` about its hinge) rocking on a spring of stiffness ``c`` at lever ``l``; the
-    body's centre of mass is at distance ``d`` from the hinge axis, in its plane (no gravity moment).  Returns the
-    body's moment of inertia about its centre of mass from the angular frequency ``omega``.
+    body's center of mass is at distance ``d`` from the hinge axis, in its plane (no gravity moment).  Returns the
+    body's moment of inertia about its center of mass from the angular frequency ``omega``.
 
     Equation of motion ``(J + I + m d^2) phi'' + c l^2 phi = 0``.
 

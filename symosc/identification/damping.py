@@ -1,7 +1,7 @@
 """Effect of damping on the identified model (Belyakov Ch. III §4, eqs 90–106).
 
 ``M q'' + D q' + K q = 0``.  :func:`quadratic_modes` solves the quadratic eigenproblem
-``(lambda^2 M + lambda D + K) u = 0`` through its symmetric linearisation, the pencil ``A w = lambda B w`` with
+``(lambda^2 M + lambda D + K) u = 0`` through its symmetric linearization, the pencil ``A w = lambda B w`` with
 ``A = [[-K, 0], [0, M]]``, ``B = [[D, M], [M, 0]]``, ``w = (u, lambda u)`` — and reports the undamped-frequency
 estimates ``|lambda|`` (eq. 97) and mode-shape moduli (stage 3).  :func:`damping_perturbation` gives the
 first-order theory for small damping ``eps D``: ``lambda = i omega + eps lambda_1 + O(eps^2)`` with
@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 
 __all__ = ["DampingPerturbation", "QuadraticModes", "damping_perturbation", "quadratic_modes"]
@@ -37,7 +38,7 @@ def _mats(m: Any, d: Any, k: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 @dataclass(frozen=True, eq=False)
-class QuadraticModes:
+class QuadraticModes(SymPyPrintable):
     """Eigenpairs of ``lambda^2 M + lambda D + K`` with Im(lambda) >= 0, sorted by ``|lambda|``.
 
     ``vectors[:, j]`` is normalised to unit Euclidean norm with its largest component real and positive.
@@ -69,7 +70,8 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
 
     Examples
     --------
-    Proportional damping D = 0.01 K on a 1-DOF system m = 1, k = 4: lambda = -0.02 + i sqrt(4 - 0.0004), |lambda| = 2.
+    Proportional damping D = 0.01 K on a 1-DOF system m = 1, k = 4:
+    ``lambda = -0.02 + i sqrt(4 - 0.0004)``, ``|lambda| = 2``.
 
     >>> qm = quadratic_modes([[1.0]], [[0.04]], [[4.0]])
     >>> complex(np.round(qm.eigenvalues[0], 12)), float(np.round(qm.undamped_frequencies[0], 12))
@@ -100,7 +102,7 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
 
 
 @dataclass(frozen=True, eq=False)
-class DampingPerturbation:
+class DampingPerturbation(SymPyPrintable):
     """First-order small-damping theory (eqs 99–106).
 
     Attributes

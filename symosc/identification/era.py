@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .._deprecation import renamed_keyword
 from ..errors import ParameterError
 from ._signals import (
     ModalEstimate,
@@ -39,12 +40,15 @@ def _default_rows(n: int, nch: int, order: int | None) -> int:
     return min(rows, n - 1)
 
 
+@renamed_keyword({"order": "n_poles", "rows": "hankel_size"})
 def realize(
-    y: np.ndarray, order: int | None, *, rows: int | None = None, constant: bool = True
+    y: np.ndarray, n_poles: int | None, *, hankel_size: int | None = None, constant: bool = True
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int, int]:
-    """Kung realisation ``(A, C, x0, singular_values, order, rows)`` of a (channels, N) sequence ``y[:, j] = C A^j x0``.
+    """Kung realization ``(A, C, x0, singular_values, n_poles, hankel_size)`` of a sequence ``y[:, j] = C A^j x0``.
 
-    ``order=None`` selects the order from the largest singular-value gap.
+    ``y`` has shape (channels, N).
+
+    ``n_poles=None`` selects the order from the largest singular-value gap.
 
     Examples
     --------
@@ -55,7 +59,7 @@ def realize(
     >>> np.allclose(np.sort_complex(np.linalg.eigvals(A)), np.sort_complex(np.linalg.eigvals(a)))
     True
     """
-    u, s, vt, order, r = _hankel_svd(y, order, rows, constant)
+    u, s, vt, order, r = _hankel_svd(y, n_poles, hankel_size, constant)
     a, c, x0 = _realization(u, s, vt, order, y.shape[0])
     return a, c, x0, s, order, r
 
@@ -65,7 +69,7 @@ def _hankel_svd(y: np.ndarray, order: int | None, rows: int | None, constant: bo
     nch, n = y.shape
     r = _default_rows(n, nch, order) if rows is None else int(rows)
     if r < 2 or r > n - 1:
-        raise ParameterError(f"rows must be in [2, {n - 1}] for {n} samples, got {rows!r}")
+        raise ParameterError(f"hankel_size (block rows) must be in [2, {n - 1}] for {n} samples, got {rows!r}")
     h = _hankel(y, r)
     u, s, vt = np.linalg.svd(h, full_matrices=False)
     if order is None:
@@ -87,14 +91,15 @@ def _realization(u: np.ndarray, s: np.ndarray, vt: np.ndarray, order: int, nch: 
     return a, gamma[:nch], sq * vt[:order, 0]
 
 
+@renamed_keyword({"order": "n_poles", "rows": "hankel_size"})
 def era(
     signals: Any,
     dt: float,
     n_modes: int | None = None,
     *,
-    order: int | None = None,
+    n_poles: int | None = None,
     constant: bool = True,
-    rows: int | None = None,
+    hankel_size: int | None = None,
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
     """Kung / ERA estimate of damped modes shared by all channels of a free-decay record.
@@ -106,13 +111,13 @@ def era(
     dt : float
         Sampling period (s).
     n_modes : int, optional
-        Number of oscillatory modes.  If neither it nor ``order`` is given, the order is selected from the largest
+        Number of oscillatory modes.  If neither it nor ``n_poles`` is given, the order is selected from the largest
         gap of the Hankel singular values (returned in ``singular_values``).
-    order : int, optional
+    n_poles : int, optional
         State dimension, ``2 n_modes + 1`` with the constant (offset) state, e.g. 7 = 1 + 2*3 in the dissertation.
     constant : bool
         Include a constant (offset) state.
-    rows : int, optional
+    hankel_size : int, optional
         Number of block rows of the Hankel matrix (default: about N/(channels+1), at most 300/channels).
     nyquist_margin : float
         A pole above this fraction of the Nyquist frequency is reported as aliasing (IdentificationError).
@@ -120,7 +125,15 @@ def era(
     Returns
     -------
     ModalEstimate
-        ``details`` holds the realisation ``A`` (discrete), ``C``, ``x0``, the recipe's ``Q`` and ``rows``.
+        ``details`` holds the realisation ``A`` (discrete), ``C``, ``x0``, the recipe's ``Q`` and ``hankel_size``.
+
+    See Also
+    --------
+    matrix_pencil
+    esprit
+    prony
+    two_stage
+    refine
 
     Examples
     --------
@@ -128,13 +141,13 @@ def era(
     >>> t = np.arange(300) * 0.01
     >>> y = np.vstack([np.cos(20 * t) + np.cos(31 * t), np.cos(20 * t) - 0.5 * np.cos(31 * t)]) + 0.1
     >>> est = era(y, 0.01)
-    >>> est.order, np.round(est.frequencies, 8).tolist()
+    >>> est.n_poles, np.round(est.frequencies, 8).tolist()
     (5, [20.0, 31.0])
     >>> np.round(est.mode_shapes, 8).tolist()
     [[1.0, 1.0], [1.0, -0.5]]
     """
-    y, dt, p = _prepare(signals, dt, n_modes, order, constant, "Hankel realisation")
-    u, s, vt, p, r = _hankel_svd(y, p, rows, constant)
+    y, dt, p = _prepare(signals, dt, n_modes, n_poles, constant, "Hankel realization")
+    u, s, vt, p, r = _hankel_svd(y, p, hankel_size, constant)
 
     def poles_at(k: int) -> tuple[np.ndarray, dict[str, Any]]:
         a, c, x0 = _realization(u, s, vt, k, y.shape[0])
@@ -143,7 +156,7 @@ def era(
             q = (c @ t) * np.linalg.solve(t, x0)[None, :]
         except np.linalg.LinAlgError:  # defective realisation: keep going, Q is only informative
             q = np.full((c.shape[0], z.size), np.nan + 0j)
-        return z, {"A": a, "C": c, "x0": x0, "Q": q, "discrete_poles": z, "rows": r}
+        return z, {"A": a, "C": c, "x0": x0, "Q": q, "discrete_poles": z, "hankel_size": r}
 
     return _subspace_estimate(
         y, dt, p, constant, poles_at, method="era", singular_values=s, nyquist_margin=nyquist_margin

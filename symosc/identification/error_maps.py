@@ -1,7 +1,7 @@
-"""Error maps: identification error of the inertia parameters against the centre-of-mass offset (Belyakov Figs 21–24).
+"""Error maps: identification error of the inertia parameters against the center-of-mass offset (Belyakov Figs 21–24).
 
-Belyakov 2005, Ch. III §3.2 (report §3.9): the body of Tables 1–2 is moved so that its centre of mass sits at an
-offset ``(dx, dz)`` from the centre of stiffness of the stand; its free response after the release of a static force
+Belyakov (2005), Ch. III §3.2: the body of Tables 1–2 is moved so that its center of mass sits at an
+offset ``(dx, dz)`` from the center of stiffness of the stand; its free response after the release of a static force
 (the linear 3-DOF modal model) gets white noise of a given level, a signal estimator identifies the modes, and a
 reconstruction algorithm returns the inertia parameters.  The Monte Carlo mean of the relative errors over a grid of
 offsets is the error map (Figs 21–22); the smallest modal energy of the release over the same grid is the
@@ -22,12 +22,14 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ParameterError, SymoscError
 from ..numeric import bind
 from ._sweeping import raise_first_failure
 from .era import era
 from .noise import add_noise
-from .reconstruction import algorithm1, algorithm21, algorithm22
+from .reconstruction import inertia_equal_springs, inertia_from_release, inertia_known_center
 
 __all__ = ["ErrorMap", "error_map"]
 
@@ -38,13 +40,13 @@ _ALGORITHMS = ("1", "2.1", "2.2")
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class ErrorMap:
-    """Relative errors of identified inertia parameters over a grid of centre-of-mass offsets and noise levels.
+class ErrorMap(SymPyPrintable):
+    """Relative errors of identified inertia parameters over a grid of center-of-mass offsets and noise levels.
 
     Attributes
     ----------
     dx, dz : ndarray
-        Offsets (m) of the centre of mass from the centre of stiffness along x and z.
+        Offsets (m) of the center of mass from the center of stiffness along x and z.
     noise : ndarray
         Noise levels (standard deviation as a fraction of ``reference``).
     names : tuple of str
@@ -88,6 +90,7 @@ class ErrorMap:
         """Belyakov's criterion for Algorithm 1: min modal energy > half the mean modal energy, shape (dx, dz)."""
         return self.min_energy > 0.5 * self.energies.mean(axis=-1)
 
+    @plot_method
     def plot(self, name: str | None = None, *, noise_index: int = -1, energy: bool = False, ax: Any = None) -> Any:
         """Contour map in 1 % bands up to 10 % (Figs 21–22), or of the min modal energy (``energy=True``, Figs 23–24).
 
@@ -132,14 +135,15 @@ def _reconstruct(algorithm: str, omega, modes, truth, force, positions, poi):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # Algorithm 2.2's conditioning warning
         if algorithm == "1":
-            return algorithm1(omega, modes, force, positions, product_of_inertia=poi)
+            return inertia_from_release(omega, modes, force, positions, product_of_inertia=poi)
         if algorithm == "2.1":
-            return algorithm21(omega, modes, truth["m"], positions, product_of_inertia=poi)
-        return algorithm22(omega, modes, truth["m"], (truth["rx"], truth["rz"]), positions, product_of_inertia=poi)
+            return inertia_equal_springs(omega, modes, truth["m"], positions, product_of_inertia=poi)
+        center = (truth["rx"], truth["rz"])
+        return inertia_known_center(omega, modes, truth["m"], center, positions, product_of_inertia=poi)
 
 
 def _default_estimator(y: np.ndarray, step: float, rows: int) -> Any:
-    return era(y, step, 3, constant=False, rows=rows)
+    return era(y, step, 3, constant=False, hankel_size=rows)
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,6 +176,7 @@ def _error_map_run(level_index: int, a: int, b: int, run: int, *, ctx: _MapRuns)
         est = ctx.estimator(y, ctx.dt)
         omega, modes = est.undamped_frequencies, est.mode_shapes
         res = _reconstruct(ctx.algorithm, omega, modes, point, ctx.force, ctx.positions, ctx.poi).as_dict()
+        res["m"] = res["mass"]
     except (SymoscError, np.linalg.LinAlgError):
         out[-1] = 1.0
         return out
@@ -200,17 +205,17 @@ def error_map(
     executor: Any = "auto",
     progress: bool | None = None,
 ) -> ErrorMap:
-    """Monte Carlo error map of an identification pipeline over centre-of-mass offsets (Belyakov Figs 21–24).
+    """Monte Carlo error map of an identification pipeline over center-of-mass offsets (Belyakov Figs 21–24).
 
     Parameters
     ----------
     dx, dz : array_like
-        Offsets (m) of the centre of mass from the centre of stiffness along x and z (the dissertation maps
+        Offsets (m) of the center of mass from the center of stiffness along x and z (the dissertation maps
         ±0.4 m by ±0.3 m).
     noise : float or array_like
         White-noise standard deviation(s) as a fraction of ``reference`` (6 % is the dissertation's admissible level).
     algorithm : {"1", "2.1", "2.2"}
-        Reconstruction: known released force, equal springs and known mass, or known mass and centre of mass.
+        Reconstruction: known released force, equal springs and known mass, or known mass and center of mass.
     runs : int
         Noise realisations per grid point; run i at noise index l and point (a, b) uses seed (seed, l, a, b, i).
     values : mapping, optional
@@ -268,7 +273,7 @@ def error_map(
     poi = product_of_inertia
     model = body_on_springs(product_of_inertia=poi)
     vals = {str(k): float(v) for k, v in (STAND if values is None else values).items() if str(k) not in ("rx", "rz")}
-    xs, zs = (float(bind(e, vals)) for e in model.vertical_stiffness_centre())
+    xs, zs = (float(bind(e, vals)) for e in model.vertical_stiffness_center())
     positions = (vals["Lx"], vals["Lz"])
     if estimator is None:
         estimator = functools.partial(_default_estimator, rows=max(10, min(40, int(n_samples) // 10)))

@@ -23,6 +23,8 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import new_axes, plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = [
@@ -105,7 +107,7 @@ def _extreme(T: float, x0: np.ndarray, u_m: float, omega: float, sign: float) ->
 
 
 @dataclass(frozen=True)
-class MinTimeResult:
+class MinTimeResult(SymPyPrintable):
     """Minimum time to reach the circle ``|x| = a`` (scaled phase plane) and the optimal open-loop control.
 
     ``control(t)`` returns ``u_m sign(sin(omega (time - t) + alpha))`` (scaled control), the bang-bang law of the
@@ -258,7 +260,7 @@ def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class QuasiOptimalRun:
+class QuasiOptimalRun(SymPyPrintable):
     """Closed-loop run of the quasi-optimal law: event times, states at the events and the control on each arc."""
 
     time: float
@@ -266,11 +268,11 @@ class QuasiOptimalRun:
     events_x: np.ndarray = field(repr=False)
     controls: np.ndarray = field(repr=False)
 
-    def plot(self, ax: Any = None, points: int = 40) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, points: int = 40) -> Any:
         """Draw the phase-plane trajectory (arcs about ``(±u_m, 0)``)."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         for x, u, t0, t1 in zip(self.events_x[:-1], self.controls, self.events_t[:-1], self.events_t[1:], strict=True):
             th = np.linspace(0, 1, points) * (t1 - t0)
             d = x - np.array([u, 0.0])
@@ -332,7 +334,7 @@ def simulate_quasi_optimal(
 
 # ---------------------------------------------------------------------------------------------------- multi-DOF
 @dataclass(frozen=True)
-class ExcitationBound:
+class ExcitationBound(SymPyPrintable):
     """Multi-DOF excitation-time bound.
 
     ``times[i] = pi a_i omega_i / (2 b_i)`` is the dissertation's eq. (84) per mode and ``bound = max(times)``.  From
@@ -381,7 +383,7 @@ def excitation_time_bound(
 
     Examples
     --------
-    The stand of Ch. II §4.5 (equal springs, centred CM, ±5 N actuators, 2 mm amplitudes):
+    The stand of Ch. II §4.5 (equal springs, centered CM, ±5 N actuators, 2 mm amplitudes):
 
     >>> import numpy as np
     >>> Lx, Lz, k, am = 4.0, 1.74, 7.4e5, 2e-3

@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ._signals import ModalEstimate, _as_signals
 
@@ -78,7 +80,7 @@ def add_noise(
 
 
 @dataclass(frozen=True, eq=False)
-class CramerRaoBound:
+class CramerRaoBound(SymPyPrintable):
     """Cramér–Rao lower bounds (variances) for damped sinusoids in white Gaussian noise.
 
     Attributes are variances per mode (``frequency``, ``damping``: shape (n_modes,)) and per channel and mode
@@ -167,7 +169,7 @@ def cramer_rao_bound(
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class MonteCarloResult:
+class MonteCarloResult(SymPyPrintable):
     """Estimates over noise realisations: arrays of shape (runs, n_modes) (NaN rows for failed runs)."""
 
     frequencies: np.ndarray
@@ -277,7 +279,7 @@ def monte_carlo(
 
 
 @dataclass(frozen=True, eq=False)
-class ApplicabilityCheck:
+class ApplicabilityCheck(SymPyPrintable):
     """Belyakov's criterion for Algorithm 1: the weakest mode carries more than half the mean modal energy."""
 
     ok: bool
@@ -296,7 +298,7 @@ def applicability(energies: Any = None, *, mode_shapes: Any = None, force: Any =
 
     Examples
     --------
-    The dissertation's C' and the 2000 N release at spring 2 (report §3.9: 0.675, 0.719, 0.630 J):
+    The dissertation's C' and the 2000 N release at spring 2 (recomputed: 0.675, 0.719, 0.630 J):
 
     >>> C = [[-6.753510e-4, 6.737952e-4, -6.730062e-4], [-6.753488e-4, -7.192560e-4, -6.304674e-4],
     ...      [-6.753497e-4, -6.737934e-4, 6.730067e-4], [-6.753526e-4, 7.192575e-4, 6.304678e-4]]
@@ -319,7 +321,7 @@ def applicability(energies: Any = None, *, mode_shapes: Any = None, force: Any =
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class ErrorVsNoise:
+class ErrorVsNoise(SymPyPrintable):
     """Relative parameter errors of an identification pipeline against the noise level (Belyakov Fig. 20).
 
     ``errors`` has shape (levels, runs, parameters) and holds ``|estimate - truth| / |truth|`` (NaN for failed
@@ -349,7 +351,8 @@ class ErrorVsNoise:
             return 0.0
         return float(np.interp(max_error, [e[i - 1], e[i]], [self.levels[i - 1], self.levels[i]]))
 
-    def plot(self, ax: Any = None, names: Any = None) -> Any:
+    @plot_method
+    def plot(self, names: Any = None, *, ax: Any = None) -> Any:
         """Mean relative error (%) vs noise level (%) per parameter; returns the axes."""
         import matplotlib.pyplot as plt
 

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from .._deprecation import renamed_keyword
 from ..errors import IdentificationError, ParameterError
 from ._signals import (
     ModalEstimate,
@@ -34,10 +35,12 @@ def _subspace(y: np.ndarray, order: int | None, pencil: int | None, constant: bo
     cap = 300
     lpar = max(2, min(n // 3, cap)) if pencil is None else int(pencil)
     if not 1 <= lpar <= n - 2:
-        raise ParameterError(f"pencil parameter must be in [1, {n - 2}] for {n} samples, got {pencil!r}")
+        raise ParameterError(
+            f"hankel_size (the pencil parameter L) must be in [1, {n - 2}] for {n} samples, got {pencil!r}"
+        )
     if order is not None and lpar < order + 1:
         if pencil is not None:
-            raise ParameterError(f"pencil parameter {lpar} must exceed the order {order}; raise it")
+            raise ParameterError(f"hankel_size (pencil parameter) {lpar} must exceed n_poles = {order}; raise it")
         lpar = min(order + 1, n - 2)
     idx = np.arange(n - lpar)[:, None] + np.arange(lpar + 1)[None, :]
     h = y[:, idx].reshape(-1, lpar + 1)  # channels stacked vertically
@@ -75,7 +78,7 @@ def _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls: boo
 
     def poles_at(k: int) -> tuple[np.ndarray, dict[str, Any]]:
         z = _shift_poles(vt, k, tls)
-        return z, {"pencil": lpar, "discrete_poles": z}
+        return z, {"hankel_size": lpar, "discrete_poles": z}
 
     name = "esprit" if tls else "matrix_pencil"
     return _subspace_estimate(
@@ -83,14 +86,15 @@ def _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls: boo
     )
 
 
+@renamed_keyword({"order": "n_poles", "pencil": "hankel_size"})
 def matrix_pencil(
     signals: Any,
     dt: float,
     n_modes: int | None = None,
     *,
-    order: int | None = None,
+    n_poles: int | None = None,
     constant: bool = True,
-    pencil: int | None = None,
+    hankel_size: int | None = None,
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
     """Matrix-pencil estimate of damped modes (SVD-truncated, least-squares shift invariance).
@@ -101,12 +105,19 @@ def matrix_pencil(
         Real samples at t = 0, dt, 2 dt, ...
     dt : float
         Sampling period (s).
-    n_modes, order, constant
+    n_modes, n_poles, constant
         As for :func:`~symosc.identification.era`; ``None`` for both selects the order from the singular values.
-    pencil : int, optional
+    hankel_size : int, optional
         Pencil parameter L (default N/3, at most 300); the Hankel matrix has L + 1 columns.
     nyquist_margin : float
         A pole above this fraction of the Nyquist frequency is reported as aliasing (IdentificationError).
+
+    See Also
+    --------
+    esprit
+    era
+    prony
+    refine
 
     Examples
     --------
@@ -119,20 +130,27 @@ def matrix_pencil(
     >>> np.round(est.phases, 9).tolist()
     [[-1.0, 0.5]]
     """
-    return _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls=False)
+    return _run(signals, dt, n_modes, n_poles, constant, hankel_size, nyquist_margin, tls=False)
 
 
+@renamed_keyword({"order": "n_poles", "pencil": "hankel_size"})
 def esprit(
     signals: Any,
     dt: float,
     n_modes: int | None = None,
     *,
-    order: int | None = None,
+    n_poles: int | None = None,
     constant: bool = True,
-    pencil: int | None = None,
+    hankel_size: int | None = None,
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
     """TLS-ESPRIT estimate of damped modes (same subspace as :func:`matrix_pencil`, total-least-squares shift).
+
+    See Also
+    --------
+    matrix_pencil
+    era
+    prony
 
     Examples
     --------
@@ -143,4 +161,4 @@ def esprit(
     >>> round(float(est.frequencies[0]), 9), round(float(est.damping[0]), 9), round(float(est.offset[0]), 9)
     (12.0, 0.3, 1.5)
     """
-    return _run(signals, dt, n_modes, order, constant, pencil, nyquist_margin, tls=True)
+    return _run(signals, dt, n_modes, n_poles, constant, hankel_size, nyquist_margin, tls=True)

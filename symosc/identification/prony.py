@@ -17,6 +17,8 @@ from typing import Any
 
 import numpy as np
 
+from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ._signals import (
     ModalEstimate,
@@ -33,7 +35,7 @@ __all__ = ["SamplingAdvice", "prony", "sampling_advice"]
 
 
 @dataclass(frozen=True)
-class SamplingAdvice:
+class SamplingAdvice(SymPyPrintable):
     """Belyakov's sampling rules (eqs 43–45) for a record of ``n_samples`` at period ``dt``.
 
     Attributes
@@ -51,7 +53,7 @@ class SamplingAdvice:
         that the decimated ratio is close to 2.  Rounding can push it just below 2 (aliasing), so prefer
     safe_decimation : int
         ``floor(ratio / 2.2)`` (at least 1): the decimated ratio stays >= 2.2, where Prony is still most accurate
-        (report §4.9) and the fastest mode keeps clear of the Nyquist frequency.
+        and the fastest mode keeps clear of the Nyquist frequency.
     aliased : bool
         ``ratio < 2``: the fastest mode is above the Nyquist frequency.
     message : str
@@ -131,7 +133,7 @@ def _fastest_frequency(y: np.ndarray, dt: float) -> float | None:
     return 2 * np.pi * (above[-1] + 1) / (n * dt)
 
 
-def _auto_decimation(y: np.ndarray, dt: float, order: int | None) -> int:
+def _auto_decimation(y: np.ndarray, dt: float, n_poles: int | None) -> int:
     """Decimation factor from rule (45) when the record is oversampled (rule 43), else 1."""
     w = _fastest_frequency(y, dt)
     if w is None or w <= 0:
@@ -139,16 +141,17 @@ def _auto_decimation(y: np.ndarray, dt: float, order: int | None) -> int:
     adv = sampling_advice(dt, y.shape[1], w)
     if adv.ratio < 10:
         return 1
-    keep = 4 * (order or 10) + 20
+    keep = 4 * (n_poles or 10) + 20
     return max(1, min(adv.safe_decimation, y.shape[1] // keep))
 
 
+@renamed_keyword({"order": "n_poles"})
 def prony(
     signals: Any,
     dt: float,
     n_modes: int | None = None,
     *,
-    order: int | None = None,
+    n_poles: int | None = None,
     constant: bool = True,
     decimate: int | str = "auto",
     dps: int | None = None,
@@ -163,9 +166,9 @@ def prony(
     dt : float
         Sampling period (s).
     n_modes : int, optional
-        Number of oscillatory modes.  If neither it nor ``order`` is given, the order is selected from the
+        Number of oscillatory modes.  If neither it nor ``n_poles`` is given, the order is selected from the
         largest gap of the singular values of the data Hankel matrix.
-    order : int, optional
+    n_poles : int, optional
         Total number of exponentials, ``2 n_modes + 1`` with a constant term (``2 n_modes`` without).
     constant : bool
         Include the constant offset (Belyakov's A0, root z = 1).
@@ -173,7 +176,7 @@ def prony(
         Use every ``decimate``-th sample to find the poles (rule 45; see :func:`sampling_advice`); amplitudes and
         phases are still fitted on the full record.  ``"auto"`` (default) estimates the fastest mode from the
         record's periodogram and, when the record is oversampled (``omega_d/omega_max >= 10``, rule 43), decimates
-        by the safe factor of :func:`sampling_advice` (limited so that at least ``4*order + 20`` samples remain);
+        by the safe factor of :func:`sampling_advice` (limited so that at least ``4*n_poles + 20`` samples remain);
         on an oversampled noisy record the prediction otherwise fits the noise.  ``details["decimate"]`` tells
         the factor used.
     dps : int, optional
@@ -193,6 +196,12 @@ def prony(
     IdentificationError
         Rank-deficient data for the requested order, a mode at/above Nyquist, nearly repeated modes.
 
+    See Also
+    --------
+    era
+    matrix_pencil
+    sampling_advice
+
     Examples
     --------
     >>> import numpy as np
@@ -206,7 +215,7 @@ def prony(
     """
     y, dt = _as_signals(signals, dt)
     if isinstance(decimate, str) and decimate == "auto":
-        guess = _resolve_order(n_modes, order, constant)
+        guess = _resolve_order(n_modes, n_poles, constant)
         m = _auto_decimation(y, dt, guess)
     else:
         if (
@@ -221,7 +230,7 @@ def prony(
     yd = y[:, ::m]
     dtd = dt * m
     nch, n = yd.shape
-    p = _resolve_order(n_modes, order, constant)
+    p = _resolve_order(n_modes, n_poles, constant)
     use_const = bool(constant)
     if p is None:
         rows = max(2, min(n // 2, max(2, 200 // nch)))

@@ -8,10 +8,11 @@ normal-coordinate observation matrix ``C'`` (``modes``, shape ``(N, k)``: amplit
 
 and three ways to close it:
 
-* :func:`algorithm1` — the motion starts from the release of a known static force (``K' = diag(C'^T f)``);
-* :func:`algorithm21` — equal (unknown) springs and known mass (``K' = k C'^T C'``);
-* :func:`algorithm22` — known mass and centre of mass, arbitrary springs; ill-posed when the centre of mass sits
-  at the centre of stiffness (detected from the condition number).
+* :func:`inertia_from_release` (the thesis' Algorithm 1) — the motion starts from the release of a known static
+  force (``K' = diag(C'^T f)``);
+* :func:`inertia_equal_springs` (Algorithm 2.1) — equal (unknown) springs and known mass (``K' = k C'^T C'``);
+* :func:`inertia_known_center` (Algorithm 2.2) — known mass and center of mass, arbitrary springs; ill-posed when
+  the center of mass sits at the center of stiffness (detected from the condition number).
 
 Stage 3/4 of the common algorithm are :func:`real_modes` (complex -> sign(Re)·modulus) and
 :func:`check_distinct` (repeated frequencies -> :class:`~symosc.errors.IdentificationError`).
@@ -28,17 +29,19 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import module_getattr as _module_getattr
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 
 __all__ = [
     "InertiaEstimate",
     "InertiaTensor",
-    "algorithm1",
-    "algorithm21",
-    "algorithm22",
     "assemble_tensor",
     "central_identity",
     "check_distinct",
+    "inertia_equal_springs",
+    "inertia_from_release",
+    "inertia_known_center",
     "real_modes",
     "sensor_layout",
 ]
@@ -171,7 +174,7 @@ def central_identity(C: Any, modes: Any, omega: Any, modal_stiffness: Any) -> An
 
 # ---------------------------------------------------------------------------------------------------- results
 @dataclass(frozen=True)
-class InertiaEstimate:
+class InertiaEstimate(SymPyPrintable):
     """Dynamic parameters reconstructed from identified modes.
 
     ``Ixz`` follows ``convention`` (``"tensor"``: ``Ixz = -M23``; ``"dissertation"``: ``Ixz = +M23``).
@@ -201,8 +204,8 @@ class InertiaEstimate:
         )
 
     def as_dict(self) -> dict[str, float]:
-        """``{"m", "rx", "rz", "Izz", "Ixx", "Ixz"}`` as plain floats."""
-        return {"m": self.mass, "rx": self.rx, "rz": self.rz, "Izz": self.Izz, "Ixx": self.Ixx, "Ixz": self.Ixz}
+        """``{"mass", "rx", "rz", "Izz", "Ixx", "Ixz"}`` (the attribute names) as plain floats."""
+        return {"mass": self.mass, "rx": self.rx, "rz": self.rz, "Izz": self.Izz, "Ixx": self.Ixx, "Ixz": self.Ixz}
 
     def _repr_latex_(self) -> str:
         rows = r" \\ ".join(" & ".join(f"{v:.6g}" for v in row) for row in self.M)
@@ -214,7 +217,7 @@ def _c0(positions: np.ndarray) -> np.ndarray:
 
 
 def _from_point_o(M0: np.ndarray, **kw: Any) -> InertiaEstimate:
-    """Move the inertia matrix from point O to the centre of mass (M12 = M13 = 0): Schur complements."""
+    """Move the inertia matrix from point O to the center of mass (M12 = M13 = 0): Schur complements."""
     conv = kw.pop("convention")
     m = M0[0, 0]
     if not m > 0:
@@ -236,7 +239,7 @@ def _from_point_o(M0: np.ndarray, **kw: Any) -> InertiaEstimate:
 
 
 # ---------------------------------------------------------------------------------------------------- algorithms
-def algorithm1(
+def inertia_from_release(
     omega: Any,
     modes: Any,
     force: Sequence[float],
@@ -246,7 +249,9 @@ def algorithm1(
     rtol: float = 1e-3,
     complex_modes: str = "real",
 ) -> InertiaEstimate:
-    """Algorithm 1: free motion after the release of a known static force (Ch. II §1, eqs 34–35).
+    """Inertia from free motion after the release of a known static force (Belyakov (2005), Algorithm 1).
+
+    Ch. II §1, eqs 34–35.  The thesis calls this Algorithm 1; ``algorithm1`` is a deprecated alias.
 
     Static equilibrium in normal coordinates ``C'^T f = K' q0'`` with ``q0' = 1`` gives ``K'_ii = (C'^T f)_i``;
     the central identity with ``C = C(rx=0, rz=0)`` gives the inertia matrix about the origin O, and the
@@ -273,14 +278,20 @@ def algorithm1(
         the release and stays exact with damping; ``"modulus"`` is the dissertation's recipe, biased by
         ``|lambda|/omega_d`` per mode when the record is damped.
 
+    See Also
+    --------
+    inertia_equal_springs
+    inertia_known_center
+    assemble_tensor
+
     Examples
     --------
-    The dissertation's Appendix run (golden case, research report §4.4):
+    The dissertation's Appendix 1 run (Belyakov (2005), pp. 106–115):
 
     >>> import numpy as np
     >>> modes = np.array([[-0.0006753510, 0.0006737952, -0.0006730062], [-0.0006753488, -0.0007192560, -0.0006304674],
     ...                   [-0.0006753497, -0.0006737934, 0.0006730067], [-0.0006753526, 0.0007192575, 0.0006304678]])
-    >>> est = algorithm1([14.04726, 16.39794, 27.35160], modes, [0, -2000, 0, 0], (4, 1.74),
+    >>> est = inertia_from_release([14.04726, 16.39794, 27.35160], modes, [0, -2000, 0, 0], (4, 1.74),
     ...                  product_of_inertia="dissertation")
     >>> print(f"{est.mass:.5f} {est.Izz:.5f} {est.Ixx:.6f} {est.Ixz:.7f}")
     15007.77821 44031.41487 3005.936169 399.9900541
@@ -302,7 +313,7 @@ def algorithm1(
     return _from_point_o(M0, modal_stiffness=kp, modal_mass=kp / w**2, algorithm="1", convention=product_of_inertia)
 
 
-def algorithm21(
+def inertia_equal_springs(
     omega: Any,
     modes: Any,
     mass: float,
@@ -312,20 +323,28 @@ def algorithm21(
     product_of_inertia: str = "tensor",
     rtol: float = 1e-3,
 ) -> InertiaEstimate:
-    """Algorithm 2.1: equal unknown springs and known mass, any excitation (Ch. II §2.1, eq. 36).
+    """Inertia with equal unknown springs and known mass, any excitation (Belyakov (2005), Algorithm 2.1).
+
+    Ch. II §2.1, eq. 36.  The thesis calls this Algorithm 2.1; ``algorithm21`` is a deprecated alias.
 
     With equal springs ``K' = k C'^T C'``; ``M11 = m`` gives ``k``.  Invariant to the column scaling of ``C'``.
     ``variant="diag"`` (default) keeps only the diagonal of ``C'^T C'`` (exactly diagonal for exact data, so the
     reconstructed ``M`` stays symmetric); ``"full"`` uses the whole matrix and symmetrises ``M``.  On the
-    dissertation's data the two agree to 1e-5 (the research report's full-variant values, computed without
+    dissertation's data the two agree to 1e-5 (the full-variant values, computed without
     symmetrising, differ from both at the 1e-6 level in Izz and Ixx).
+
+    See Also
+    --------
+    inertia_from_release
+    inertia_known_center
 
     Examples
     --------
     >>> import numpy as np
     >>> modes = np.array([[-0.0006753510, 0.0006737952, -0.0006730062], [-0.0006753488, -0.0007192560, -0.0006304674],
     ...                   [-0.0006753497, -0.0006737934, 0.0006730067], [-0.0006753526, 0.0007192575, 0.0006304678]])
-    >>> est = algorithm21([14.04726, 16.39794, 27.35160], modes, 15000.0, (4, 1.74), product_of_inertia="dissertation")
+    >>> est = inertia_equal_springs([14.04726, 16.39794, 27.35160], modes, 15000.0, (4, 1.74),
+    ...                             product_of_inertia="dissertation")
     >>> print(f"{est.spring_stiffness:.1f} {est.Izz:.1f} {est.Ixx:.2f}")
     739970.7 44000.7 3000.34
     """
@@ -355,11 +374,11 @@ def algorithm21(
     )
 
 
-def algorithm22(
+def inertia_known_center(
     omega: Any,
     modes: Any,
     mass: float,
-    centre: Sequence[float],
+    center: Sequence[float],
     positions: Any,
     *,
     product_of_inertia: str = "tensor",
@@ -367,24 +386,31 @@ def algorithm22(
     cond_max: float = 1e4,
     cond_warn: float = 1e2,
 ) -> InertiaEstimate:
-    """Algorithm 2.2: known mass and centre of mass, arbitrary springs and excitation (Ch. II §2.2, eq. 37).
+    """Inertia with known mass and center of mass, arbitrary springs (Belyakov (2005), Algorithm 2.2).
+
+    Ch. II §2.2, eq. 37.  The thesis calls this Algorithm 2.2; ``algorithm22`` is a deprecated alias.
 
     With ``C`` known, ``M = sum_i kappa_i g_i g_i^T`` (``g_i`` = column i of ``C^T (C'^+)^T``, ``kappa_i`` the
     modal masses) and ``{M11 = m, M12 = 0, M13 = 0}`` is a 3x3 linear system for ``kappa``.
 
-    It is singular when the centre of mass is at the centre of stiffness (the translational mode decouples and
+    It is singular when the center of mass is at the center of stiffness (the translational mode decouples and
     ``M12, M13`` stop depending on the rotational modal masses).  The equilibrated condition number of the system is
     checked (computed with unit-norm mode shapes and lengths scaled by the rms sensor lever arm, so it does not
     depend on units or on the scaling of ``C'``): above ``cond_max`` an :class:`IdentificationError` says so, above
-    ``cond_warn`` a ``RuntimeWarning``.  At the centre of stiffness it is infinite; 1 cm away on the dissertation's
+    ``cond_warn`` a ``RuntimeWarning``.  At the center of stiffness it is infinite; 1 cm away on the dissertation's
     stand it is about 8e3, 30 cm away about 12.
 
     Parameters
     ----------
-    centre : (rx, rz)
-        Known centre of mass in the body frame.
+    center : (rx, rz)
+        Known center of mass in the body frame.
     cond_max, cond_warn : float
         Condition number above which to raise / to warn.
+
+    See Also
+    --------
+    inertia_from_release
+    inertia_equal_springs
 
     Examples
     --------
@@ -393,7 +419,7 @@ def algorithm22(
     >>> vals = dict(m=15000, rx=2.3, rz=0.8, Izz=44000, Ixx=3000, Ixz=400, Lx=4, Lz=1.74,
     ...             k1=7.0e5, k2=7.6e5, k3=7.3e5, k4=7.8e5)
     >>> data = body_on_springs().modal(vals)
-    >>> est = algorithm22(data.omega, data.observation, 15000, (2.3, 0.8), (4, 1.74))
+    >>> est = inertia_known_center(data.omega, data.observation, 15000, (2.3, 0.8), (4, 1.74))
     >>> print(f"{est.Izz:.6f} {est.Ixx:.6f} {est.Ixz:.6f}")
     44000.000000 3000.000000 400.000000
     """
@@ -401,22 +427,22 @@ def algorithm22(
     pos = sensor_layout(positions)
     if not (np.isfinite(mass) and mass > 0):
         raise ParameterError(f"mass must be positive and finite, got {mass!r}")
-    rx, rz = (float(v) for v in centre)
+    rx, rz = (float(v) for v in center)
     C = np.column_stack([np.ones(len(pos)), pos[:, 0] - rx, -(pos[:, 1] - rz)])
     g = C.T @ np.linalg.solve(cp.T @ cp, cp.T).T  # column i is g_i
     A = g[0][None, :] * g  # A[r, i] = g_i[0] * g_i[r]
     cond = _condition_22(cp, C)
     if not cond < cond_max:
         raise IdentificationError(
-            f"Algorithm 2.2 is ill-posed here: condition number {cond:.3g} > cond_max={cond_max:g}. The centre of "
-            f"mass ({rx:g}, {rz:g}) is (nearly) at the centre of stiffness, so the translational mode decouples and "
+            f"Algorithm 2.2 is ill-posed here: condition number {cond:.3g} > cond_max={cond_max:g}. The center of "
+            f"mass ({rx:g}, {rz:g}) is (nearly) at the center of stiffness, so the translational mode decouples and "
             "M12 = M13 = 0 do not determine the modal masses. Use Algorithm 1 (known released force) or 2.1 (equal "
             "springs) instead."
         )
     if cond > cond_warn:
         warnings.warn(
             f"Algorithm 2.2: condition number {cond:.3g}; errors in the modes are amplified about that much (the "
-            "centre of mass is close to the centre of stiffness)",
+            "center of mass is close to the center of stiffness)",
             RuntimeWarning,
             stacklevel=2,
         )
@@ -454,7 +480,7 @@ def _condition_22(cp: np.ndarray, C: np.ndarray) -> float:
 
 # ---------------------------------------------------------------------------------------------------- two orientations
 @dataclass(frozen=True)
-class InertiaTensor:
+class InertiaTensor(SymPyPrintable):
     """Five of the six inertia-tensor components from two orientations (``Iyz`` is never measured).
 
     Products follow ``convention``; ``Iyz`` is ``nan`` unless given.  ``source_Ixx`` says which run gave ``Ixx``.
@@ -476,7 +502,7 @@ class InertiaTensor:
         return {k: bool(np.isfinite(getattr(self, k))) for k in ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")}
 
     def matrix(self) -> np.ndarray:
-        """Inertia tensor about the centre of mass (``nan`` where ``Iyz`` is unknown)."""
+        """Inertia tensor about the center of mass (``nan`` where ``Iyz`` is unknown)."""
         s = _product_sign(self.convention)
         return np.array(
             [
@@ -487,7 +513,7 @@ class InertiaTensor:
         )
 
     def axis_moment(self, direction: Sequence[float]) -> float:
-        """Moment of inertia about the axis through the centre of mass with the given direction.
+        """Moment of inertia about the axis through the center of mass with the given direction.
 
         ``I_u = u^T J u`` (= ``Ix a^2 + Iy b^2 + Iz c^2 - 2 Ixy ab - 2 Ixz ac - 2 Iyz bc`` in the tensor
         convention).  Raises :class:`IdentificationError` if the axis needs the unknown ``Iyz``.
@@ -530,3 +556,11 @@ def assemble_tensor(run1: InertiaEstimate, run2: InertiaEstimate, *, Iyz: float 
         convention=run1.convention,
         source_Ixx=1 if first else 2,
     )
+
+
+_DEPRECATED_NAMES = {
+    "algorithm1": "inertia_from_release",
+    "algorithm21": "inertia_equal_springs",
+    "algorithm22": "inertia_known_center",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())

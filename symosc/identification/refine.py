@@ -60,7 +60,7 @@ def refine(estimate: ModalEstimate, signals: Any, *, max_nfev: int = 200, xtol: 
     y, dt = _as_signals(signals, estimate.dt)
     if y.shape[0] != estimate.n_channels:
         raise ParameterError(f"signals have {y.shape[0]} channels but the estimate has {estimate.n_channels}")
-    constant = estimate.order % 2 == 1
+    constant = estimate.n_poles % 2 == 1
     t = np.arange(y.shape[1]) * dt
     k = estimate.n_modes
     scale = np.abs(estimate.poles).max()

@@ -6,7 +6,7 @@ is checked: with ``method="auto"`` the complex step is compared against central 
 warning) when they disagree, e.g. because ``f`` takes moduli or casts to float.
 
 Elasticities ``E_ij = (dPhi_i/dxi_j) xi_j / Phi_i`` are relative sensitivities; the first-order relative error
-bound for relative input errors <= eps is ``sum_j |E_ij| eps`` (Belyakov's bound).  The report notes that the
+bound for relative input errors <= eps is ``sum_j |E_ij| eps`` (Belyakov's bound).  Note that the
 thesis's "<= 2 eps" holds per argument (max_j |E_ij| = 2 at its data point), not for the sum.
 """
 
@@ -19,13 +19,14 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 
 __all__ = ["JacobianResult", "jacobian", "sensitivity"]
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class JacobianResult:
+class JacobianResult(SymPyPrintable):
     """Jacobian of ``f`` at ``x`` with elasticities and a numerical error estimate.
 
     Attributes
@@ -131,9 +132,9 @@ def jacobian(
         raises if they disagree.  ``"central"``: Richardson-extrapolated central differences with error estimate
         from steps h and 2h.  ``"auto"``: complex step if it passes the check, else central (with a warning).
     step : float, optional
-        Relative step (default 1e-20 for the complex step, 1e-4 for central differences) times max(|x_j|, 1e-8).
+        Relative step (default 1e-20 for the complex step, 1e-4 for central differences) times ``max(|x_j|, 1e-8)``.
     rtol : float
-        Agreement required between complex step and central differences, relative to max |J|.
+        Agreement required between complex step and central differences, relative to ``max |J|``.
 
     Examples
     --------

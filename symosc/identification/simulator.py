@@ -1,7 +1,7 @@
 """Nonlinear 6-DOF simulation of the inertia stand: the virtual experiment (Belyakov 2005, Ch. III §1).
 
-State (eq. 89): angular momentum ``K`` about the centre of mass in the König frame (axes parallel to the fixed
-frame), Krylov angles ``theta`` of the body (``S = Sx Sy Sz``), centre-of-mass velocity ``v`` and displacement
+State (eq. 89): angular momentum ``K`` about the center of mass in the König frame (axes parallel to the fixed
+frame), Krylov angles ``theta`` of the body (``S = Sx Sy Sz``), center-of-mass velocity ``v`` and displacement
 ``x`` from its nominal position::
 
     dK/dt = sum r_i x f_i,   dtheta/dt = W(theta) S J^{-1} S^T K,   dv/dt = F/m,   dx/dt = v.
@@ -12,7 +12,7 @@ the undeformed spring (length ``h``); the base sits at ``rho_i - l0``.  Spring l
     f_i = -k_i l_i (1 - l0.l_i / |l_i|^2) - c_i ((l0.l_i) l_i / |l_i|^2 - l0)
 
 (axial stiffness ``k_i``, transverse ``c_i``; ``spring_law="linear"`` uses ``-diag(c, k, c)(l_i - l0)``, which is
-conservative).  Gravity ``-m g`` acts on the centre of mass; optional viscous damping ``-d diag(c/k, 1, c/k) v_i``
+conservative).  Gravity ``-m g`` acts on the center of mass; optional viscous damping ``-d diag(c/k, 1, c/k) v_i``
 at each attachment point (stiffness-proportional, so it leaves the mode shapes real).  The right-hand side is
 derived with SymPy and compiled with :func:`symosc.numeric.compile`; scipy's DOP853 integrates it.
 
@@ -31,6 +31,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._plotting import new_axes, plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import CompiledFunction, resolve
 from ..numeric import compile as _compile
@@ -182,7 +184,7 @@ class _Stand:
 
 
 @dataclass(frozen=True)
-class StandRecord:
+class StandRecord(SymPyPrintable):
     """Sampled sensor signals of a virtual experiment.
 
     Attributes
@@ -213,11 +215,11 @@ class StandRecord:
         ch, ns = self.signals.shape
         return f"StandRecord(channels={ch}, samples={ns}, dt={self.dt:g}, noise_sigma={self.noise_sigma:.3g})"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Plot the sensor signals (mm) against time."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         for j, y in enumerate(self.signals, start=1):
             ax.plot(self.t, 1e3 * y, lw=0.7, label=f"sensor {j}")
         ax.set_xlabel("t, s")
@@ -351,6 +353,12 @@ def simulate_stand(
     Returns
     -------
     StandRecord
+
+    See Also
+    --------
+    stand_system
+    matrix_pencil
+    inertia_from_release
 
     Examples
     --------

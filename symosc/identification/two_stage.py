@@ -5,7 +5,7 @@ A first realisation of the sampled record gives the continuous poles ``lambda_k`
 derivatives at t = 0, ``S_j = sum_k 2 Re(h_k lambda_k^(j-1))`` (eq. 48).  For ``q'' = A q``, ``y = C q`` they split
 into ``S_(2k-1) = C A^(k-1) q0`` (eq. 52) and ``S_(2k) = C A^(k-1) v0`` (eq. 53); Kung's algorithm on the odd
 subsequence returns ``(A, C, q0)`` directly in second-order form, with ``A ~ -M^-1 K`` up to a similarity.
-"Identification is thus done twice."  Time is rescaled by the largest |lambda| so that the Markov parameters
+"Identification is thus done twice."  Time is rescaled by the largest ``|lambda|`` so that the Markov parameters
 stay O(1).
 
 The trick is exact for conservative systems (no damping, A_d = 0 in eq. 46).  With damping the poles
@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import IdentificationError, ParameterError
 from ._signals import ModalEstimate
 from .era import era, realize
@@ -30,7 +31,7 @@ __all__ = ["SecondOrderModel", "two_stage"]
 
 
 @dataclass(frozen=True, repr=False, eq=False)
-class SecondOrderModel:
+class SecondOrderModel(SymPyPrintable):
     """Second-order model ``q'' = A q``, ``y = C q``, ``q(0) = q0``, ``q'(0) = v0`` in an identified basis.
 
     Attributes
@@ -65,7 +66,7 @@ class SecondOrderModel:
 
     @property
     def frequencies(self) -> np.ndarray:
-        """``sqrt|mu|`` (rad/s): the undamped frequencies (|lambda| of the first stage)."""
+        """``sqrt|mu|`` (rad/s): the undamped frequencies (``|lambda|`` of the first stage)."""
         return np.sqrt(np.abs(self.eigenvalues))
 
     @property
@@ -135,7 +136,7 @@ def two_stage(
     j = np.arange(2 * terms)
     markov = 2.0 * np.real(h @ (lam[:, None] ** j[None, :]))  # S_{j+1}, (c, 2*terms)
     odd, even = markov[:, 0::2], markov[:, 1::2]
-    a, c, q0, sv, _, _ = realize(odd, n, rows=terms // 2 + 1, constant=False)
+    a, c, q0, sv, _, _ = realize(odd, n, hankel_size=terms // 2 + 1, constant=False)
     # v0 from S_{2k} = C A^{k-1} v0 (least squares over the observability matrix)
     obs = np.vstack([c @ np.linalg.matrix_power(a, k) for k in range(terms)])
     v0, *_ = np.linalg.lstsq(obs, even.T.reshape(-1), rcond=None)

@@ -57,9 +57,6 @@ class ModalAnalysis:
     def __repr__(self) -> str:
         return f"ModalAnalysis(eigenvalues={[sp.sstr(e) if self.exact else float(e) for e in self.eigenvalues]})"
 
-    def _sympystr(self, printer) -> str:
-        return f"ModalAnalysis({printer._print(sp.Matrix(self.modes))})"
-
     def _latex(self, printer) -> str:
         return (
             r"\Lambda = "

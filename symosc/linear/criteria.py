@@ -77,7 +77,9 @@ class StabilityVerdict:
         return r",\ ".join(printer._print(sp.StrictGreaterThan(c, 0)) for c in self.conditions)
 
     def _repr_latex_(self) -> str:
-        return f"$${self._latex(sp.printing.latex.LatexPrinter())}$$"
+        from sympy.printing.latex import LatexPrinter
+
+        return f"$${self._latex(LatexPrinter())}$$"
 
 
 def hurwitz_matrix(coefficients: Any) -> sp.ImmutableMatrix:

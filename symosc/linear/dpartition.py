@@ -121,9 +121,6 @@ class DPartition:
     def __repr__(self) -> str:
         return f"DPartition(F = ({self.P})*{self.params[0]} + ({self.Q})*ν + {self.R}, ε={self.epsilon})"
 
-    def _sympystr(self, printer) -> str:
-        return f"DPartition(mu={printer._print(self.mu)}, nu={printer._print(self.nu)})"
-
     def _latex(self, printer) -> str:
         return rf"\mu(\omega) = {printer._print(self.mu)},\ \nu(\omega) = {printer._print(self.nu)}"
 

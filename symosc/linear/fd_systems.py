@@ -145,9 +145,6 @@ class FundamentalSolutions:
     def __repr__(self) -> str:
         return f"FundamentalSolutions(determinant={self.determinant}, degree={self.degree})"
 
-    def _sympystr(self, printer) -> str:
-        return printer._print(self.matrix)
-
     def _latex(self, printer) -> str:
         return printer._print(self.matrix)
 
@@ -381,9 +378,6 @@ class ImpulseResponse:
 
     def __repr__(self) -> str:
         return f"ImpulseResponse(direct={self.direct.tolist()}, kernel={self.kernel.tolist()})"
-
-    def _sympystr(self, printer) -> str:
-        return f"ImpulseResponse({printer._print(self.direct)}, {printer._print(self.kernel)})"
 
 
 def impulse_response(f: Any, e: Any, var: sp.Symbol, t: sp.Symbol | None = None) -> ImpulseResponse:

@@ -69,7 +69,7 @@ class PhasePortrait:
         )
 
     def _repr_latex_(self) -> str:
-        return rf"$\ddot y + {2 * self.h:.6g}\,\dot y + {self.k_squared:.6g}\,y = 0$ ({self.kind})"
+        return rf"$\ddot y + {2 * self.h:.6g}\,\dot y + {self.k_squared:.6g}\,y = 0\quad \text{{({self.kind})}}$"
 
     def plot(self, *, ax=None, arrows: bool = True):
         """Draw the trajectories (arrows in the direction of motion) and the invariant lines; returns the Axes."""

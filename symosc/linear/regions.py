@@ -57,9 +57,6 @@ class StabilityRegion:
     def __repr__(self) -> str:
         return f"StabilityRegion({sp.sstr(self.inequalities)})"
 
-    def _sympystr(self, printer) -> str:
-        return printer._print(self.inequalities)
-
     def _latex(self, printer) -> str:
         return printer._print(self.inequalities)
 

@@ -83,7 +83,10 @@ class RegulatorOptimum:
     def _repr_latex_(self) -> str:
         names = {"alpha": r"\alpha", "beta": r"\beta", "gamma1": r"\gamma_1", "gamma0": r"\gamma_0"}
         sym = names.get(self.criterion, r"\vartheta")
-        return rf"${sym} = {self.value:.6g}$ at $k_1 = {self.k1:.6g},\ k_2 = {self.k2:.6g}$ ({self.kind})"
+        return (
+            rf"${sym} = {self.value:.6g}\ \text{{at}}\ k_1 = {self.k1:.6g},\ k_2 = {self.k2:.6g}"
+            rf"\quad \text{{({self.kind})}}$"
+        )
 
     def plot(self, *, ax=None, n_points: int = 400):
         """The criterion against the free parameter over the admissible interval, optimum marked; returns the Axes."""

@@ -57,9 +57,6 @@ class RouthArray:
     def __repr__(self) -> str:
         return f"RouthArray(first_column={[sp.sstr(c) for c in self.first_column]}, sign_changes={self.sign_changes})"
 
-    def _sympystr(self, printer) -> str:
-        return "RouthArray(" + printer._print(sp.Matrix(_padded(self.rows))) + ")"
-
     def _latex(self, printer) -> str:
         return printer._print(sp.Matrix(_padded(self.rows)))
 

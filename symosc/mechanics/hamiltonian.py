@@ -149,9 +149,6 @@ class HamiltonianSystem:
     def _latex(self, printer: Any) -> str:
         return f"H = {printer._print(self._H)}"
 
-    def _sympystr(self, printer: Any) -> str:
-        return f"H = {printer._print(self._H)}"
-
     # ------------------------------------------------------------------ equations
     @cached_property
     def vector_field(self) -> sp.Matrix:

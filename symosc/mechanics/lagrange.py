@@ -20,6 +20,7 @@ from typing import Any
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..symbols import ddot, dot, sort_symbols, t
 from . import _constraints, _terms
@@ -57,7 +58,7 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
     return tuple(plain), replace
 
 
-class LagrangianSystem:
+class LagrangianSystem(SymPyPrintable):
     """A holonomic mechanical system given by its energies.
 
     Parameters
@@ -246,12 +247,38 @@ class LagrangianSystem:
         """The equations ``M q'' = F`` in notebooks (a summary for more than four coordinates)."""
         if len(self._q) > 4:
             return f"$\\text{{{self!r}}}$"
+        return f"$${self.latex()}$$"
+
+    def latex(self, *, simplify: bool = False) -> str:
+        """LaTeX of the equations of motion ``M(q) q'' = F(q, q', t)``.
+
+        Parameters
+        ----------
+        simplify : bool
+            Apply ``sympy.trigsimp`` to ``M`` and ``F`` first (e.g. ``sin**2 + cos**2 -> 1``).  Display only: the
+            stored matrices are unchanged.
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> print(n_link_pendulum(1).latex(simplify=True))  # doctest: +NORMALIZE_WHITESPACE
+        \\left[\\begin{matrix}l_{1}^{2} m_{1}\\end{matrix}\\right]
+        \\left[\\begin{matrix}\\ddot{\\phi_{1}}\\end{matrix}\\right]
+        = \\left[\\begin{matrix}- g l_{1} m_{1} \\sin{\\left(\\phi_{1} \\right)}\\end{matrix}\\right]
+
+        See Also
+        --------
+        mass_matrix, forcing
+        """
         names = {}
         for q, qd, qdd in zip(self._q, self._qd, self._qdd, strict=True):
             names[qd] = rf"\dot{{{sp.latex(q)}}}"
             names[qdd] = rf"\ddot{{{sp.latex(q)}}}"
-        lhs = sp.MatMul(self.mass_matrix, sp.Matrix(self._qdd), evaluate=False)
-        return f"$${sp.latex(lhs, symbol_names=names)} = {sp.latex(self.forcing, symbol_names=names)}$$"
+        M, F = self.mass_matrix, self.forcing
+        if simplify:
+            M, F = M.applyfunc(sp.trigsimp), F.applyfunc(sp.trigsimp)
+        lhs = sp.MatMul(M, sp.Matrix(self._qdd), evaluate=False)
+        return f"{sp.latex(lhs, symbol_names=names)} = {sp.latex(F, symbol_names=names)}"
 
     # ------------------------------------------------------------------ derivation
     @cached_property
@@ -346,7 +373,7 @@ class LagrangianSystem:
         return FirstOrderSystem(self)
 
     def linearize(self, point: Mapping[Any, Any] | None = None, *, check_equilibrium: bool = True):
-        """Linearise about ``point`` (coordinates -> values, default all zero) with zero velocities.
+        """Linearize about ``point`` (coordinates -> values, default all zero) with zero velocities.
 
         Builds M, D, K directly from the energies (no full nonlinear forcing is needed):
         with T = 1/2 q'^T M q' + b^T q' + T0,

@@ -1,4 +1,4 @@
-"""Linearised models ``M q'' + D q' + K(t) q = f(t)`` and their modal analysis."""
+"""Linearized models ``M q'' + D q' + K(t) q = f(t)`` and their modal analysis."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from .._validate import check_complete_names
 from ..errors import ModelError, ParameterError
 from ..numeric import compile
@@ -23,7 +24,7 @@ __all__ = ["LinearModel"]
 
 
 @dataclass(frozen=True)
-class LinearModel:
+class LinearModel(SymPyPrintable):
     """``M q'' + D q' + K q = f`` about an equilibrium; ``K`` and ``f`` may depend on time.
 
     Attributes
@@ -37,7 +38,7 @@ class LinearModel:
     coordinates : tuple of Symbol
         The deviations q from the point (same symbols as the nonlinear system).
     point : dict
-        The linearisation point.
+        The linearization point.
 
     Examples
     --------
@@ -63,10 +64,28 @@ class LinearModel:
         return f"LinearModel({n} DOF, {kind} stiffness; parameters: {names})"
 
     def _repr_latex_(self) -> str:
+        return f"$${self.latex()}$$"
+
+    def latex(self, *, simplify: bool = False) -> str:
+        """LaTeX of ``M q'' + D q' + K q = f``; ``simplify=True`` applies ``sympy.trigsimp`` first (display only).
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> tex = n_link_pendulum(1).linearize().latex(simplify=True)
+        >>> tex.startswith(r"\\left[\\begin{matrix}l_{1}^{2} m_{1}\\end{matrix}\\right] \\ddot{q}")
+        True
+
+        See Also
+        --------
+        symosc.mechanics.LagrangianSystem.latex
+        """
+        M, D, K = self.M, self.D, self.K
+        if simplify:
+            M, D, K = (m.applyfunc(sp.trigsimp) for m in (M, D, K))
         q = sp.Matrix(self.coordinates)
         return (
-            f"$${sp.latex(self.M)} \\ddot{{q}} + {sp.latex(self.D)} \\dot{{q}} + {sp.latex(self.K)} "
-            f"{sp.latex(q)} = {sp.latex(self.f)}$$"
+            f"{sp.latex(M)} \\ddot{{q}} + {sp.latex(D)} \\dot{{q}} + {sp.latex(K)} {sp.latex(q)} = {sp.latex(self.f)}"
         )
 
     @cached_property
@@ -194,6 +213,81 @@ class LinearModel:
         sign = np.sign(np.take_along_axis(Phi, idx, axis=-2))
         return omega, Phi * np.where(sign == 0, 1.0, sign)
 
+    # ------------------------------------------------------------------ control systems
+    def to_state_space(
+        self,
+        *,
+        inputs: Any = None,
+        outputs: Any = None,
+        values: Mapping[Any, Any] | None = None,
+        velocities: bool = False,
+        backend: str = "auto",
+    ) -> Any:
+        """The model as a state-space system ``x' = A x + B u``, ``y = C x`` with ``x = (q, q')``.
+
+        Parameters
+        ----------
+        inputs : coordinates, indices or array (n, m), optional
+            Where the inputs act: a unit generalized force on each listed coordinate (default: every coordinate),
+            or a force-distribution matrix ``E`` in ``M q'' + D q' + K q = E u``.
+        outputs : coordinates, indices or array (n, p), optional
+            The measured coordinates (default: all); ``velocities=True`` measures their rates instead.
+        values : mapping
+            Numbers for every parameter (keyed by Symbol or name).
+        backend : {"auto", "control", "scipy"}
+            ``control.StateSpace`` when python-control is installed (``"auto"``), else ``scipy.signal.StateSpace``.
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> sys = lin.to_state_space(values={"m1": 1.0, "l1": 1.0, "g": 9.81}, backend="scipy")
+        >>> sys.A.tolist(), sys.B.ravel().tolist()
+        ([[0.0, 1.0], [-9.81, 0.0]], [0.0, 1.0])
+
+        With python-control, Bode, Nyquist and step plots are one line each, e.g.
+        ``control.bode_plot(lin.to_transfer_function(values=...))``.
+
+        See Also
+        --------
+        to_transfer_function, natural_frequencies
+        """
+        from ._control import state_space
+
+        return state_space(self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, backend=backend)
+
+    def to_transfer_function(
+        self,
+        *,
+        inputs: Any = None,
+        outputs: Any = None,
+        values: Mapping[Any, Any] | None = None,
+        velocities: bool = False,
+        backend: str = "auto",
+    ) -> Any:
+        """Transfer function(s) from the inputs to the outputs (arguments as :meth:`to_state_space`).
+
+        ``control.TransferFunction`` (MIMO allowed) with python-control, else ``scipy.signal.TransferFunction``
+        (one input).
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> H = lin.to_transfer_function(values={"m1": 2.0, "l1": 1.0, "g": 9.81}, backend="scipy")
+        >>> H.num.round(12).tolist(), H.den.round(12).tolist()      # 1 / (m l^2 s^2 + m g l)
+        ([0.5], [1.0, 0.0, 9.81])
+
+        See Also
+        --------
+        to_state_space, symosc.operational.to_transfer_function
+        """
+        from ._control import transfer_function
+
+        return transfer_function(
+            self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, backend=backend
+        )
+
 
 def _frequencies(lam: np.ndarray) -> np.ndarray:
     scale = np.max(np.abs(lam), axis=-1, keepdims=True)
@@ -212,7 +306,7 @@ def _point_map(system: LagrangianSystem, point: Mapping[Any, Any] | None) -> dic
     for key, val in (point or {}).items():
         name = key.name if isinstance(key, sp.Symbol) else str(key)
         if name not in by_name:
-            raise ModelError(f"linearisation point names {name!r}, which is not a coordinate")
+            raise ModelError(f"linearization point names {name!r}, which is not a coordinate")
         q0[by_name[name]] = sp.sympify(val)
     return q0
 
@@ -272,6 +366,6 @@ def linearize_system(
             if fi != 0 and t not in fi.free_symbols and sp.simplify(fi) != 0:
                 raise ModelError(
                     f"the point {q0} is not an equilibrium: the generalised force on {q[i].name} is {fi}; "
-                    "pass check_equilibrium=False to linearise anyway"
+                    "pass check_equilibrium=False to linearize anyway"
                 )
     return lin

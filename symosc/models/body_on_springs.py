@@ -1,12 +1,12 @@
 """Rigid body on N vertical springs: the inertia-measurement stand of Belyakov (2005).
 
-A rigid body (mass ``m``, centre of mass ``r = (rx, ry, rz)`` in the body frame ``Oxyz`` whose origin is the
-attachment point of spring 1, inertia tensor about the centre of mass) rests on N vertical springs attached at
+A rigid body (mass ``m``, center of mass ``r = (rx, ry, rz)`` in the body frame ``Oxyz`` whose origin is the
+attachment point of spring 1, inertia tensor about the center of mass) rests on N vertical springs attached at
 points ``(x_j, 0, z_j)`` of ``Oxyz``.  Spring j has longitudinal (vertical) stiffness ``k_j`` and transverse
 stiffness ``c_j``, i.e. the stiffness tensor ``G_j = diag(c_j, k_j, c_j)`` (``y`` points up).  Displacement
 sensors at the attachment points measure vertical displacements.
 
-Linear 6-DOF model (Belyakov 2005, eqs 17–21), coordinates ``(x, y, z, theta_x, theta_y, theta_z)`` = centre-of-mass
+Linear 6-DOF model (Belyakov 2005, eqs 17–21), coordinates ``(x, y, z, theta_x, theta_y, theta_z)`` = center-of-mass
 displacement and small Krylov angles::
 
     blockdiag(m E, J) q'' + K6 q = 0,   K6 = C6^T G C6,   C6 = [[E, -R_1], ..., [E, -R_N]]
@@ -17,8 +17,8 @@ with ``R_j`` the cross-product matrix of ``rho_j = a_j - r``.  Keeping the verti
     M q'' + K q = 0,  y = C q,  C_j = (1, x_j - rx, -(z_j - rz)),  K = C^T diag(k) C,
     M = [[m, 0, 0], [0, Izz, s*Ixz], [0, s*Ixz, Ixx]].
 
-Product-of-inertia sign convention (research report section 2.7)
------------------------------------------------------------------
+Product-of-inertia sign convention
+----------------------------------
 ``product_of_inertia="tensor"`` (default): ``Ixy, Ixz, Iyz`` are the products ``∫xy dm, ...`` and the inertia
 tensor is ``[[Ixx, -Ixy, -Ixz], [-Ixy, Iyy, -Iyz], [-Ixz, -Iyz, Izz]]`` (the dissertation's Table 2 and eq. 26),
 so ``M23 = -Ixz``.  ``product_of_inertia="dissertation"``: the off-diagonal entries are ``+Ixy, +Ixz, +Iyz``, so
@@ -36,6 +36,9 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._plotting import new_axes, plot_method
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import bind, resolve
 from ..numeric import compile as _compile
@@ -113,11 +116,11 @@ class ModalData:
         times = np.asarray(times, dtype=float)
         return np.cos(np.multiply.outer(times, self.omega)) @ self.observation.T
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Bar chart of the modal amplitudes ``C'`` per sensor (one group of bars per mode)."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         n, k = self.observation.shape
         width = 0.8 / n
         for j in range(n):
@@ -128,11 +131,14 @@ class ModalData:
         return ax
 
     def modal_energy(self) -> np.ndarray:
-        """Energy ``K'_ii / 2`` stored in each mode by the release (J); the report's applicability measure."""
+        """Energy ``K'_ii / 2`` stored in each mode by the release (J).
+
+        The applicability measure of Belyakov (2005), Ch. III §3.
+        """
         return 0.5 * self.modal_stiffness
 
 
-class BodyOnSprings:
+class BodyOnSprings(SymPyPrintable):
     """Symbolic model of a rigid body on N vertical springs (see the module docstring).
 
     Build it with :func:`body_on_springs`.  Every matrix is a SymPy object computed on first access.
@@ -181,11 +187,11 @@ class BodyOnSprings:
     # ------------------------------------------------------------------ symbolic 6-DOF model
     @property
     def r(self) -> sp.Matrix:
-        """Centre of mass in ``Oxyz``."""
+        """Center of mass in ``Oxyz``."""
         return sp.Matrix([self.rx, self.ry, self.rz])
 
     def rho(self, j: int) -> sp.Matrix:
-        """Radius vector of attachment point ``j`` (1-based) relative to the centre of mass."""
+        """Radius vector of attachment point ``j`` (1-based) relative to the center of mass."""
         x, z = self.positions[j - 1]
         return sp.Matrix([x, 0, z]) - self.r
 
@@ -199,7 +205,7 @@ class BodyOnSprings:
 
     @cached_property
     def inertia_tensor(self) -> sp.Matrix:
-        """Inertia tensor about the centre of mass in ``Cxyz``, in the chosen product-of-inertia convention."""
+        """Inertia tensor about the center of mass in ``Cxyz``, in the chosen product-of-inertia convention."""
         s = self._s
         return sp.Matrix(
             [
@@ -230,18 +236,18 @@ class BodyOnSprings:
         return (self.C6.T * self.G_all * self.C6).applyfunc(sp.expand)
 
     def coupling(self) -> sp.Matrix:
-        """``sum_j R_j G_j`` (eq. 18): zero exactly when the centre of mass is the centre of stiffness."""
+        """``sum_j R_j G_j`` (eq. 18): zero exactly when the center of mass is the center of stiffness."""
         return sp.Matrix(sum((self.R(j) * self.G(j) for j in range(1, self.n_springs + 1)), sp.zeros(3, 3)))
 
-    def stiffness_centre(self, values: Mapping[Any, Any] | None = None) -> dict[sp.Symbol, sp.Expr]:
-        """Centre of stiffness ``{rx: ..., ry: ..., rz: ...}``: the point where ``sum R_j G_j = 0`` (eq. 18).
+    def stiffness_center(self, values: Mapping[Any, Any] | None = None) -> dict[sp.Symbol, sp.Expr]:
+        """Center of stiffness ``{rx: ..., ry: ..., rz: ...}``: the point where ``sum R_j G_j = 0`` (eq. 18).
 
         ``values`` (optional, keyed by symbol or name) are substituted exactly first, e.g. equal springs.
         Raises :class:`ModelError` if no such point exists (unequal ratios ``c_j/k_j`` make the conditions
-        incompatible); :meth:`vertical_stiffness_centre` always exists.
+        incompatible); :meth:`vertical_stiffness_center` always exists.
 
         >>> model = body_on_springs()
-        >>> model.stiffness_centre({"k1": 1, "k2": 1, "k3": 1, "k4": 1, "c1": 2, "c2": 2, "c3": 2, "c4": 2})
+        >>> model.stiffness_center({"k1": 1, "k2": 1, "k3": 1, "k4": 1, "c1": 2, "c2": 2, "c3": 2, "c4": 2})
         {rx: Lx/2, ry: 0, rz: Lz/2}
         """
         coupling = self.coupling()
@@ -251,12 +257,12 @@ class BodyOnSprings:
         sol = sp.solve(eqs, [self.rx, self.ry, self.rz], dict=True)
         if not sol or len(sol[0]) < 3:
             raise ModelError(
-                "no centre of stiffness: sum R_j G_j = 0 has no solution for these springs (the longitudinal and "
-                "transverse stiffness ratios c_j/k_j differ); use vertical_stiffness_centre() for the 3-DOF model"
+                "no center of stiffness: sum R_j G_j = 0 has no solution for these springs (the longitudinal and "
+                "transverse stiffness ratios c_j/k_j differ); use vertical_stiffness_center() for the 3-DOF model"
             )
         return {s: sp.simplify(sol[0][s]) for s in (self.rx, self.ry, self.rz)}
 
-    def vertical_stiffness_centre(self) -> tuple[sp.Expr, sp.Expr]:
+    def vertical_stiffness_center(self) -> tuple[sp.Expr, sp.Expr]:
         """``(sum k_j x_j / sum k_j, sum k_j z_j / sum k_j)``: where the 3-DOF stiffness matrix decouples."""
         ks = sum(self.k)
         return (
@@ -265,6 +271,10 @@ class BodyOnSprings:
         )
 
     # ------------------------------------------------------------------ 3-DOF reduction
+
+    stiffness_centre = _deprecated_attribute("stiffness_center")
+    vertical_stiffness_centre = _deprecated_attribute("vertical_stiffness_center")
+
     @cached_property
     def C(self) -> sp.Matrix:
         """``N x 3`` observation matrix (eq. 23): vertical rows of ``C6``, columns ``(y, theta_z, theta_x)``."""
@@ -401,9 +411,14 @@ def body_on_springs(
     Returns
     -------
     BodyOnSprings
-        Symbolic model: ``C6``, ``K6``, ``M6`` (6-DOF), ``C``, ``K``, ``M`` (3-DOF), centre of stiffness,
+        Symbolic model: ``C6``, ``K6``, ``M6`` (6-DOF), ``C``, ``K``, ``M`` (3-DOF), center of stiffness,
         ``modal(values, force)``.  Parameter names: ``m, rx, ry, rz, Ixx, Iyy, Izz, Ixy, Ixz, Iyz, k1..kN,
         c1..cN`` and ``Lx, Lz`` or ``x1..xN, z1..zN``.
+
+    See Also
+    --------
+    symosc.identification.simulate_stand
+    symosc.identification.inertia_from_release
 
     Examples
     --------

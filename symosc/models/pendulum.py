@@ -13,7 +13,7 @@ __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]
 
 
 def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
-    """The parameter symbols of the catalogue's n-link pendulum (DESIGN.md naming).
+    """The parameter symbols of the catalogue's n-link pendulum (names ``m1, l1, lc1, J1, ...``).
 
     >>> s = pendulum_symbols(2)
     >>> s["m"], s["lc"], s["g"], s["a"]
@@ -42,7 +42,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     links : {"point", "rigid"}
         ``"point"``: massless link ``i`` of length ``l_i`` with a point mass ``m_i`` at its end.
         ``"rigid"``: physical link with mass ``m_i``, hinge-to-hinge length ``l_i``, distance ``lc_i``
-        from its root hinge to its centre of mass and moment of inertia ``I_i`` about the centre of mass.
+        from its root hinge to its center of mass and moment of inertia ``I_i`` about the center of mass.
     inverted : bool
         Angles ``phi_i`` are measured from the downward vertical (hanging, ``False``) or from the
         upward vertical (``True``); in both cases ``phi = 0`` is an equilibrium.
@@ -54,6 +54,11 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     LagrangianSystem
         Coordinates ``phi1..phiN``; parameters ``m1..``, ``l1..``, ``lc1..``, ``I1..``, ``g``, ``a``, ``p``
         (only those that occur).
+
+    See Also
+    --------
+    pendulum_symbols
+    gribkov_khokhlov_table1
 
     Examples
     --------
@@ -83,7 +88,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     T = sp.S.Zero
     V = sp.S.Zero
     for k in range(n):
-        # Position of the body's mass centre: hinges 0..k-1 plus the distance along link k.
+        # Position of the body's mass center: hinges 0..k-1 plus the distance along link k.
         arm = [l[i] for i in range(k)] + [l[k] if links == "point" else lc[k]]
         y = y0 + up * sum(arm[i] * sp.cos(phi[i]) for i in range(k + 1))
         xd = sum(arm[i] * sp.cos(phi[i]) * dot(phi[i]) for i in range(k + 1))
@@ -98,7 +103,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
 def gribkov_khokhlov_table1() -> dict[str, float]:
     """Parameters of the double physical pendulum of Gribkov & Khokhlov (2015), Table 1, in SI units.
 
-    Table 1 gives m in g, lengths in mm and I (about the centre of mass) in g*mm^2; g = 9.81 m/s^2.
+    Table 1 gives m in g, lengths in mm and I (about the center of mass) in g*mm^2; g = 9.81 m/s^2.
     The paper reports natural frequencies 2.289 Hz and 5.094 Hz for this pendulum, which these values
     do not reproduce (about 1.7 % off; see ``derivations/gribkov_khokhlov_2015.py``).
 

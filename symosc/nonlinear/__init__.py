@@ -7,6 +7,10 @@ any requested order, and checked against direct numerical integration through :m
 
 from __future__ import annotations
 
+import sys as _sys
+
+from .._deprecation import module_getattr as _module_getattr
+from .._validate import guard_public_api as _guard_public_api
 from ._averaging_numeric import Fold, FrequencyResponse, SteadyState
 from ._ndof_exponents import CharacteristicExponentSeries
 from ._series import EpsSeries, RadiusEstimate
@@ -28,13 +32,13 @@ from .delay import (
     quasi_polynomial,
     quasi_polynomial_roots,
 )
-from .harmonic_linearisation import (
+from .harmonic_linearization import (
     HarmonicCycle,
-    HarmonicLinearisation,
-    LinearisationBoundary,
+    HarmonicLinearization,
+    LinearizationBoundary,
     TwoNonlinearityCycle,
-    harmonic_linearisation,
-    linearisation_boundary,
+    harmonic_linearization,
+    linearization_boundary,
     neimark_curve,
     self_oscillations,
     servo_characteristic,
@@ -96,10 +100,10 @@ __all__ = [
     "FrequencyResponse",
     "HalfSwingMap",
     "HarmonicCycle",
-    "HarmonicLinearisation",
+    "HarmonicLinearization",
     "LimitCycleSeries",
     "LindstedtSeries",
-    "LinearisationBoundary",
+    "LinearizationBoundary",
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
@@ -127,11 +131,11 @@ __all__ = [
     "dry_friction_torus_average",
     "fast_averaged_system",
     "half_swing_map",
-    "harmonic_linearisation",
+    "harmonic_linearization",
     "libration_period",
     "limit_cycle",
     "lindstedt",
-    "linearisation_boundary",
+    "linearization_boundary",
     "neimark_curve",
     "numeric_limit_cycle",
     "numeric_orbit",
@@ -158,7 +162,23 @@ __all__ = [
     "vibrational_stiffness",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
 
+# The module was called ``harmonic_linearisation`` before the project settled on American spelling: keep the old
+# import path working (its deprecated names warn once).
+_sys.modules[__name__ + ".harmonic_linearisation"] = _sys.modules[__name__ + ".harmonic_linearization"]
+
+_DEPRECATED_NAMES = {
+    "harmonic_linearisation": "harmonic_linearization",
+    "HarmonicLinearisation": "HarmonicLinearization",
+    "LinearisationBoundary": "LinearizationBoundary",
+    "linearisation_boundary": "linearization_boundary",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 _guard_public_api(__name__)
+
+# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
+from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
+
+_add_printing_hooks_to_public(__name__)

@@ -11,6 +11,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind, compile
 from .averaging import AveragedEquations, StationaryRegime, a, theta
@@ -105,10 +107,10 @@ def integrate_shortened(avg: AveragedEquations, a0: float, t_eval: Any, values: 
 
 # ---------------------------------------------------------------------------------------------- forced
 @dataclass(frozen=True)
-class SteadyState:
+class SteadyState(SymPyPrintable):
     """A steady forced response ``x = a cos(nu t - theta)`` (first approximation).
 
-    ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"centre"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
+    ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"center"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
     ``"saddle"`` (M2 < 0) or ``"unstable"`` (M2 > 0, M1 < 0).
     """
 
@@ -121,11 +123,11 @@ class SteadyState:
 
     @property
     def stable(self) -> bool:
-        return self.kind in ("stable", "centre")
+        return self.kind in ("stable", "center")
 
 
 @dataclass(frozen=True)
-class Fold:
+class Fold(SymPyPrintable):
     """A fold (vertical tangent) of the resonance curve: a jump frequency.  ``refined``: Newton converged."""
 
     nu: float
@@ -134,7 +136,7 @@ class Fold:
 
 
 @dataclass(frozen=True)
-class FrequencyResponse:
+class FrequencyResponse(SymPyPrintable):
     """Resonance curve ``W(nu, a) = 0`` sampled over ``nu``.
 
     ``amplitudes[i]`` holds every steady amplitude at ``nu[i]`` ascending (NaN-padded); ``stable`` marks the
@@ -162,7 +164,8 @@ class FrequencyResponse:
             f"max branches {self.amplitudes.shape[1]}, folds at nu = [{jumps}])"
         )
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Draw the resonance curve: stable states as dots, unstable as crosses, folds as circles."""
         import matplotlib.pyplot as plt
 
@@ -277,7 +280,7 @@ class _Forced:
         m1, m2, p2, q2 = (float(z) for z in self.M(nu, amp))
         scale = 1e-9 * (1 + abs(m2))
         if self.conservative:
-            kind = "centre" if m2 > 0 else "saddle"
+            kind = "center" if m2 > 0 else "saddle"
         elif m2 < -scale:
             kind = "saddle"
         else:

@@ -29,13 +29,15 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 
 __all__ = ["CharacteristicExponentSeries"]
 
 
 @dataclass(frozen=True)
-class CharacteristicExponentSeries:
+class CharacteristicExponentSeries(SymPyPrintable):
     """Characteristic (Floquet) exponents ``mu_i(eps) = sum_k c_ik eps**k + O(eps**(order+1))`` in rad/s.
 
     Attributes
@@ -46,7 +48,7 @@ class CharacteristicExponentSeries:
         frequency.  Imaginary parts are defined modulo the frequency ``omega(eps)`` (the multipliers are not).
     order : int
         Highest power of ``eps`` included; every included coefficient is exact to rounding.
-    eps : Symbol
+    eps_symbol : Symbol
         The expansion variable.
     labels : tuple of str
         What each row is.
@@ -54,8 +56,9 @@ class CharacteristicExponentSeries:
 
     coefficients: np.ndarray
     order: int
-    eps: sp.Symbol
+    eps_symbol: sp.Symbol
     labels: tuple
+    eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def evaluate(self, eps: float, order: int | None = None) -> np.ndarray:
         """The truncated sums at ``eps`` (complex array, rad/s)."""
@@ -74,7 +77,7 @@ class CharacteristicExponentSeries:
         c = self.coefficients[i]
         return sp.Add(
             *[
-                (sp.Float(z.real, digits) + sp.I * sp.Float(z.imag, digits)) * self.eps**k
+                (sp.Float(z.real, digits) + sp.I * sp.Float(z.imag, digits)) * self.eps_symbol**k
                 for k, z in enumerate(c)
                 if abs(z) > 0
             ]
@@ -82,7 +85,7 @@ class CharacteristicExponentSeries:
 
     def _repr_latex_(self) -> str:
         rows = r" \\ ".join(sp.latex(self.series(i, 8)) for i in range(len(self.labels)))
-        return rf"$\begin{{array}}{{l}}{rows}\end{{array}} + O({sp.latex(self.eps ** (self.order + 1))})$"
+        return rf"$\begin{{array}}{{l}}{rows}\end{{array}} + O({sp.latex(self.eps_symbol ** (self.order + 1))})$"
 
     def __repr__(self) -> str:
         lines = [f"CharacteristicExponentSeries(order={self.order}, rad/s;"]
@@ -240,7 +243,7 @@ def exponent_series(sol: Any, order: int) -> CharacteristicExponentSeries:
         labels += [f"mode {jj} +", f"mode {jj} -"]
     out = np.array([np.convolve(om_c, r)[: N + 1] for r in rows])
     out[0] = 0.0
-    return CharacteristicExponentSeries(coefficients=out, order=N, eps=eps, labels=tuple(labels))
+    return CharacteristicExponentSeries(coefficients=out, order=N, eps_symbol=eps, labels=tuple(labels))
 
 
 def _cauchy(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -12,6 +12,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import SeriesWarning
 
 __all__ = ["EpsSeries", "RadiusEstimate"]
@@ -31,7 +32,7 @@ def to_sympy_number(value: Any, dps: int = 17) -> sp.Expr:
 
 
 @dataclass(frozen=True)
-class RadiusEstimate:
+class RadiusEstimate(SymPyPrintable):
     """Radius of convergence of a power series estimated from its coefficients.
 
     Attributes
@@ -65,7 +66,7 @@ class RadiusEstimate:
 
 
 @dataclass(frozen=True)
-class EpsSeries:
+class EpsSeries(SymPyPrintable):
     """A truncated power series ``factor * sum_k c_k eps**k + O(eps**(order+1))``.
 
     Attributes
@@ -93,6 +94,38 @@ class EpsSeries:
         """The truncated series as a SymPy expression (without the O-term)."""
         poly = sp.Add(*[c * self.symbol**k for k, c in enumerate(self.coefficients)])
         return self.factor * poly if self.factor != 1 else poly
+
+    def _sympy_(self) -> sp.Expr:
+        """``sympy.sympify(series)`` gives the truncated sum (as :meth:`removeO`)."""
+        return self.expr
+
+    def removeO(self) -> sp.Expr:
+        """The truncated sum without the order term, as ``sympy.Expr.removeO``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from symosc.nonlinear import limit_cycle
+        >>> x, v = sp.symbols("x v")
+        >>> w = limit_cycle((1 - x**2) * v, 2).frequency
+        >>> w.removeO(), w.getO(), sp.sympify(w) == w.removeO()
+        (1 - eps**2/16, O(eps**3), True)
+        >>> w.as_series()
+        1 - eps**2/16 + O(eps**3)
+        """
+        return self.expr
+
+    def getO(self) -> sp.Order:
+        """The order term ``O(eps**(order + 1))``."""
+        return sp.O(self.symbol ** (self.order + 1), self.symbol)
+
+    def as_expr(self) -> sp.Expr:
+        """The truncated sum (the same as :meth:`removeO`)."""
+        return self.expr
+
+    def as_series(self) -> sp.Expr:
+        """The truncated sum with its order term, as ``sympy.series`` returns it."""
+        return self.expr + self.getO()
 
     def coefficient(self, k: int) -> sp.Expr:
         """Coefficient of ``eps**k`` (including ``factor``)."""

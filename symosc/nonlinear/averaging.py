@@ -26,6 +26,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..symbols import sort_symbols, t
 from . import _trig
@@ -142,7 +143,7 @@ def describing_function(g: Any, x: sp.Symbol | None = None, amplitude: sp.Symbol
 
 
 @dataclass(frozen=True)
-class StationaryRegime:
+class StationaryRegime(SymPyPrintable):
     """A stationary amplitude of the autonomous shortened equations (``a = 0``: the equilibrium).
 
     ``exponent`` is ``-d(a Phi)/da`` at the amplitude: small deviations grow like ``exp(exponent * t)``.
@@ -160,7 +161,7 @@ class StationaryRegime:
 
 
 @dataclass(frozen=True)
-class AveragedEquations:
+class AveragedEquations(SymPyPrintable):
     """Shortened (first-order averaged) equations of ``x'' + f(x, v) = R cos(nu t)`` (``R = 0``: autonomous).
 
     Attributes
@@ -188,11 +189,19 @@ class AveragedEquations:
     R: sp.Expr = sp.S.Zero
     nu: sp.Expr | None = None
     forcing_phase: sp.Expr = sp.S.Zero
-    centre: sp.Expr = sp.S.Zero
+    center: sp.Expr = sp.S.Zero
     amplitude: sp.Symbol = a
     phase: sp.Symbol = field(default=theta)
 
     # ------------------------------------------------------------------ symbolic objects
+    @property
+    def centre(self) -> sp.Expr:
+        """Deprecated alias of :attr:`center`."""
+        from .._deprecation import warn_deprecated
+
+        warn_deprecated("AveragedEquations.centre", "AveragedEquations.center")
+        return self.center
+
     @property
     def a_dot(self) -> sp.Expr:
         """Right-hand side of ``da/dt``."""
@@ -400,8 +409,8 @@ def averaged_equations(
     x, v : Symbol, optional
         The symbols used in ``f`` (default: those named ``x`` and ``v``).
     center : bool
-        Oscillate about the centre ``q*(a)`` solving ``<f(q* + a cos psi, ...)> = 0`` (5.345) instead of 0: needed
-        for asymmetric restoring forces (e.g. ``exp(x) - 1``); the result's ``centre`` holds ``q*(a)``.
+        Oscillate about the center ``q*(a)`` solving ``<f(q* + a cos psi, ...)> = 0`` (5.345) instead of 0: needed
+        for asymmetric restoring forces (e.g. ``exp(x) - 1``); the result's ``center`` holds ``q*(a)``.
 
     Returns
     -------
@@ -412,6 +421,12 @@ def averaged_equations(
     ModelError
         If ``f`` cannot be averaged exactly, if the forcing has a constant part, or if no comparison frequency
         can be inferred.
+
+    See Also
+    --------
+    describing_function
+    averaged_equations_ndof
+    harmonic_linearization
 
     Examples
     --------
@@ -450,7 +465,7 @@ def averaged_equations(
         w = nu_
     if f.has(t):
         raise ModelError("f must not depend on t explicitly; put the periodic force into forcing=")
-    qstar = _centre(f, x, v, w) if center else sp.S.Zero
+    qstar = _center(f, x, v, w) if center else sp.S.Zero
     sub = {x: qstar + a * sp.cos(_psi), v: -a * w * sp.sin(_psi)}
     fs = f.xreplace(sub)
     s_avg = _cycle_average(fs * sp.sin(_psi), _psi)
@@ -458,12 +473,12 @@ def averaged_equations(
     Phi = sp.expand(-s_avg / (w * a))
     Psi = sp.expand(w / 2 + c_avg / (w * a))
     return AveragedEquations(
-        f=f, x=x, v=v, kind=kind, frequency=w, Phi=Phi, Psi=Psi, R=R, nu=nu_, forcing_phase=gamma, centre=qstar
+        f=f, x=x, v=v, kind=kind, frequency=w, Phi=Phi, Psi=Psi, R=R, nu=nu_, forcing_phase=gamma, center=qstar
     )
 
 
-def _centre(f: sp.Expr, x: sp.Symbol, v: sp.Symbol, w: sp.Expr) -> sp.Expr:
-    """Centre ``q*(a)`` of the oscillation: ``<f(q* + a cos psi, -a w sin psi)> = 0`` (5.345), the branch with
+def _center(f: sp.Expr, x: sp.Symbol, v: sp.Symbol, w: sp.Expr) -> sp.Expr:
+    """Center ``q*(a)`` of the oscillation: ``<f(q* + a cos psi, -a w sin psi)> = 0`` (5.345), the branch with
     ``q*(0) = 0``."""
     qs = sp.Dummy("qstar", real=True)
     mean = _cycle_average(f.xreplace({x: qs + a * sp.cos(_psi), v: -a * w * sp.sin(_psi)}), _psi)
@@ -481,5 +496,5 @@ def _centre(f: sp.Expr, x: sp.Symbol, v: sp.Symbol, w: sp.Expr) -> sp.Expr:
         if at0 == 0:
             good.append(sp.simplify(sp.expand_log(sol, force=True)))
     if len(good) != 1:
-        raise ModelError(f"cannot single out the centre q*(a) from <f> = 0 (solutions {sols}); pass center=False")
+        raise ModelError(f"cannot single out the center q*(a) from <f> = 0 (solutions {sols}); pass center=False")
     return good[0]

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import bind
 from . import _trig
@@ -28,7 +29,7 @@ __all__ = ["MultiAveragedEquations", "averaged_equations_ndof", "dry_friction_ra
 
 
 @dataclass(frozen=True)
-class MultiAveragedEquations:
+class MultiAveragedEquations(SymPyPrintable):
     """Shortened equations of n non-resonant oscillators: amplitudes ``a_i``, phases ``psi_i``."""
 
     amplitudes: tuple[sp.Symbol, ...]

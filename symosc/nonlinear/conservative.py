@@ -46,7 +46,7 @@ class Equilibrium:
     separatrix_slopes: tuple | None
 
     def _repr_latex_(self) -> str:
-        return f"$q = {sp.latex(self.q)}$: {self.kind}"
+        return rf"$q = {sp.latex(self.q)}:\quad \text{{{self.kind}}}$"
 
 
 def _prepare(V: Any, q: Any, m: Any) -> tuple[sp.Expr, sp.Symbol, sp.Expr]:

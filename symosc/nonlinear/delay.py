@@ -26,6 +26,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
 
@@ -46,7 +48,7 @@ _EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
-class QuasiPolynomial:
+class QuasiPolynomial(SymPyPrintable):
     """``f(p) = sum_k P_k(p) exp(-tau_k p)``: ``terms`` is a tuple of ``(tau_k, coefficients of P_k ascending)``."""
 
     expr: sp.Expr
@@ -218,7 +220,7 @@ def count_roots(f: Any, region: tuple[float, float, float, float], variable: sp.
 
 
 @dataclass(frozen=True)
-class DelayRoots:
+class DelayRoots(SymPyPrintable):
     """Roots of a quasi-polynomial in a rectangle.
 
     Attributes
@@ -258,7 +260,8 @@ class DelayRoots:
         )
         return f"DelayRoots(count={self.count} in {self.region}: [{items}])"
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Scatter plot of the roots in the complex plane with the region outlined."""
         import matplotlib.pyplot as plt
 
@@ -366,7 +369,7 @@ def quasi_polynomial_roots(
 
 
 def _polish(q: QuasiPolynomial, derivs: list, box: tuple, m: int, dps: int, tol: float) -> Any:
-    """Newton from the box centre on ``f^(m-1)``; the result must lie in the box (slightly enlarged)."""
+    """Newton from the box center on ``f^(m-1)``; the result must lie in the box (slightly enlarged)."""
     x0, x1, y0, y1 = box
     with mpmath.workdps(dps):
         while len(derivs) <= m:

@@ -15,8 +15,7 @@ Two tools:
   averages the transformed equations symbolically and integrates the averaged force back to a potential).
   For the pendulum on a vertically vibrating pivot this recovers Kapitza's condition ``a^2 p^2 > 2 g l``.
 
-Kapitza's result is not in Bulgakov's appendix (it came in 1951); it follows from the appendix's first-order scheme
-(see seed-bulgakov-part3b.md §2.9).
+Kapitza's result is not in Bulgakov's appendix (it came in 1951); it follows from the appendix's first-order scheme.
 """
 
 from __future__ import annotations
@@ -27,6 +26,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind, compile
 from ..symbols import dot, t
@@ -57,7 +57,7 @@ def _fast_split(expr: sp.Expr, nu: sp.Expr) -> tuple[sp.Expr, dict[int, tuple[sp
 
 
 @dataclass(frozen=True)
-class FastAveragedSystem:
+class FastAveragedSystem(SymPyPrintable):
     """Shortened equations of ``dx/dt = F(x) + sum_m (f_m cos(m nu t) + phi_m sin(m nu t))``.
 
     Attributes
@@ -185,7 +185,7 @@ def fast_averaged_system(rhs: Any, state: Any, nu: Any, order: int = 1) -> FastA
 
 
 @dataclass(frozen=True)
-class VibrationalAveraging:
+class VibrationalAveraging(SymPyPrintable):
     """Slow equations of ``M q'' = -grad V + Q + Phi(q, t)`` with fast zero-mean ``Phi`` (Kapitza averaging).
 
     Attributes
@@ -221,7 +221,7 @@ class VibrationalAveraging:
     def stiffness(self, point: dict) -> sp.Matrix:
         """Hessian of ``V_eff`` at an equilibrium ``point`` (mapping coordinate -> value)."""
         if self.effective_potential is None:
-            raise ModelError("the averaged force is not potential; linearise slow_force instead")
+            raise ModelError("the averaged force is not potential; linearize slow_force instead")
         q = sp.Matrix(self.coordinates)
         H = sp.hessian(self.effective_potential, q)
         return sp.simplify(
@@ -298,7 +298,7 @@ def vibrational_averaging(
     if n > 1 and any(M.has(s) for s in q):
         raise ModelError(
             "a coordinate-dependent mass matrix is supported for one degree of freedom only (the symbolic averaging "
-            "of M(q)^-1 terms blows up for n >= 2); linearise about the equilibrium first"
+            "of M(q)^-1 terms blows up for n >= 2); linearize about the equilibrium first"
         )
     V = sp.sympify(potential)
     if V.has(t):

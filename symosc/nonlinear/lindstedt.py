@@ -16,6 +16,9 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
 from ._fourier import ExactArith, RingArith, Trig, _Arith
@@ -30,7 +33,7 @@ TAU = sp.Symbol("tau")
 
 
 @dataclass(frozen=True)
-class LindstedtSeries:
+class LindstedtSeries(SymPyPrintable):
     """Periodic family of ``x'' + x = eps*f(x)`` through ``x(0) = A, x'(0) = 0`` (Newcomb–Lindstedt).
 
     Attributes
@@ -47,13 +50,14 @@ class LindstedtSeries:
 
     f: sp.Expr
     x: sp.Symbol
-    eps: sp.Symbol
+    eps_symbol: sp.Symbol
     amplitude: sp.Symbol
     order: int
     frequency: EpsSeries
     frequency_squared: EpsSeries
     period: EpsSeries
     _harmonics: tuple = field(repr=False, compare=False)  # cos coefficients of y_k (x = A*y)
+    eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Expr:
         """``x(tau)`` truncated at ``order`` (a cosine polynomial in ``tau = omega*t``)."""
@@ -64,7 +68,7 @@ class LindstedtSeries:
         for k, cs in enumerate(self._harmonics[: n + 1]):
             for h, c in enumerate(cs):
                 if c != 0:
-                    out += c * self.eps**k * sp.cos(h * tau)
+                    out += c * self.eps_symbol**k * sp.cos(h * tau)
         return sp.expand(self.amplitude * out)
 
     def frequency_in_amplitude(self) -> sp.Expr:
@@ -73,7 +77,7 @@ class LindstedtSeries:
         Each power of ``eps`` carries at least ``A**(dmin - 1)`` (``dmin`` = lowest degree in ``f`` above 1), so all
         terms up to ``A**(order*(dmin-1))`` are exact.
         """
-        expr = sp.expand(self.frequency.expr.subs(self.eps, 1))
+        expr = sp.expand(self.frequency.expr.subs(self.eps_symbol, 1))
         poly = sp.Poly(expr, self.amplitude)
         dmin = min(k for k in sp.Poly(self.f, self.x).monoms() if k[0] > 1)[0] if self._nonlinear_degrees() else 2
         top = self.order * (dmin - 1)
@@ -85,13 +89,13 @@ class LindstedtSeries:
     def omega(self, eps: Any, A: Any, order: int | None = None, **values: Any) -> Any:
         """Numeric frequency of the truncated series (NumPy broadcasting over ``eps`` and ``A``)."""
         expr = self._truncated(self.frequency, order)
-        params = sorted(expr.free_symbols - {self.eps, self.amplitude}, key=lambda s: s.name)
-        fn = _compile(expr, [self.eps, self.amplitude, *params])
+        params = sorted(expr.free_symbols - {self.eps_symbol, self.amplitude}, key=lambda s: s.name)
+        fn = _compile(expr, [self.eps_symbol, self.amplitude, *params])
         return fn(eps, A, *[values[p.name] for p in params])
 
     def _truncated(self, s: EpsSeries, order: int | None) -> sp.Expr:
         n = s.order if order is None else min(int(order), s.order)
-        return s.factor * sp.Add(*[c * self.eps**k for k, c in enumerate(s.coefficients[: n + 1])])
+        return s.factor * sp.Add(*[c * self.eps_symbol**k for k, c in enumerate(s.coefficients[: n + 1])])
 
     def validate(self, eps: float, A: float, **kwargs: Any) -> Any:
         """Compare with the numerically integrated period; see :func:`symosc.nonlinear.validate.validate_lindstedt`."""
@@ -101,11 +105,11 @@ class LindstedtSeries:
 
     def __repr__(self) -> str:
         shown = EpsSeries(
-            self.frequency.coefficients[:4], self.eps, min(3, self.order), name="omega"
+            self.frequency.coefficients[:4], self.eps_symbol, min(3, self.order), name="omega"
         )  # a readable head
         return (
-            f"LindstedtSeries(x'' + x = {self.eps}*({self.f}), x(0) = {self.amplitude}, order={self.order},\n"
-            f"  omega = {shown.expr} + ... (to {self.eps}**{self.order}))"
+            f"LindstedtSeries(x'' + x = {self.eps_symbol}*({self.f}), x(0) = {self.amplitude}, order={self.order},\n"
+            f"  omega = {shown.expr} + ... (to {self.eps_symbol}**{self.order}))"
         )
 
     def _repr_latex_(self) -> str:
@@ -151,12 +155,13 @@ def _lindstedt_raw(coeffs: dict[int, Any], ar: _Arith, order: int) -> tuple[list
     return y, s
 
 
+@renamed_keyword({"eps": "eps_symbol"})
 def lindstedt(
     f: Any,
     order: int,
     *,
     x: sp.Symbol = X,
-    eps: sp.Symbol = EPS,
+    eps_symbol: sp.Symbol = EPS,
     amplitude: sp.Symbol = AMP,
 ) -> LindstedtSeries:
     """Newcomb–Lindstedt frequency series of ``x'' + x = eps*f(x)`` with ``x(0) = A``, ``x'(0) = 0``.
@@ -174,6 +179,12 @@ def lindstedt(
     Returns
     -------
     LindstedtSeries
+
+    See Also
+    --------
+    limit_cycle
+    numeric_period
+    validate_lindstedt
 
     Examples
     --------
@@ -193,6 +204,7 @@ def lindstedt(
     >>> om2.coeff(sp.Symbol("A"), 2)
     -5*c1**2/6 + 3*c2/4
     """
+    eps = eps_symbol
     if isinstance(order, bool) or not isinstance(order, int | np.integer) or order < 1:
         raise ParameterError(f"order must be an integer >= 1, got {order!r}")
     order = int(order)
@@ -263,7 +275,7 @@ def lindstedt(
     return LindstedtSeries(
         f=f,
         x=x,
-        eps=eps,
+        eps_symbol=eps,
         amplitude=amplitude,
         order=order,
         frequency=EpsSeries(tuple(conv(c, k) for k, c in enumerate(w)), eps, order, name="omega"),

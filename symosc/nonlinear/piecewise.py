@@ -26,8 +26,10 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._lazy import LazyFunction
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
-from ..numeric import compile
 
 __all__ = [
     "CoulombMotion",
@@ -48,7 +50,7 @@ def _num(x: Any, name: str) -> sp.Expr:
 
 
 @dataclass(frozen=True)
-class CoulombMotion:
+class CoulombMotion(SymPyPrintable):
     """Exact motion of ``x'' + 2 eps x' + k^2 (x + B sign x') = 0`` from rest at ``x0``.
 
     Attributes
@@ -123,7 +125,8 @@ class CoulombMotion:
             f"at x = {float(self.final_position):.6g}; turning points [{pts}{more}])"
         )
 
-    def plot(self, ax=None, n: int = 2000):
+    @plot_method
+    def plot(self, *, ax: Any = None, n: int = 2000) -> Any:
         """Draw ``x(t)`` with the dead zone shaded."""
         import matplotlib.pyplot as plt
 
@@ -193,7 +196,7 @@ def coulomb_oscillator(x0: Any, B: Any, k: Any = 1, eps: Any = 0, max_half_swing
 
 
 @dataclass(frozen=True)
-class HalfSwingMap:
+class HalfSwingMap(SymPyPrintable):
     """Turning-point map of one right-to-left half-swing: from rest at ``a > 0`` to the next rest at ``-b``.
 
     ``phi`` is the function with ``Phi(a) = Phi(-b)``; call the object with ``a`` to get ``b`` (negative when the
@@ -289,8 +292,8 @@ def half_swing_map(V: Any, q: sp.Symbol, *, friction: Any = 0, drag: Any = 0) ->
         q=q,
         phi=phi,
         force=force,
-        _phi_num=compile(phi, [q], check=False).raw,
-        _force_num=compile(force, [q], check=False).raw,
+        _phi_num=LazyFunction(phi, [q]),
+        _force_num=LazyFunction(force, [q]),
     )
 
 

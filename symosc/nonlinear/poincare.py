@@ -11,7 +11,7 @@ Harmonics are truncated Fourier series with exact rational, binary fixed-point (
 (see :mod:`symosc.nonlinear._fourier`): no symbolic trigonometry is involved, so the van der Pol series reaches
 order 24 exactly in seconds and order 60+ in floating point.
 
-References: Bulgakov (1954) §§5.16–5.22 (seed 004, report part 2 §2.1); Andersen & Geer, SIAM J. Appl. Math. 42
+References: Bulgakov (1954) §§5.16–5.22; Andersen & Geer, SIAM J. Appl. Math. 42
 (1982) 678–693 (van der Pol to order 24); Nayfeh, *Perturbation Methods* (1973) §3.1.
 """
 
@@ -25,6 +25,10 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._fourier import ExactArith, FloatArith, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
@@ -43,7 +47,7 @@ _ARITHMETICS = ("exact", "float", "mpmath")
 # public API
 # ---------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class LimitCycleSeries:
+class LimitCycleSeries(SymPyPrintable):
     """The periodic solution of ``x'' + x = eps*f(x, x', eps)`` by Poincaré's method.
 
     The phase variable is ``tau = omega*t``; the phase is fixed by ``x'(0) = 0``, so ``x(0)`` is the amplitude
@@ -75,7 +79,7 @@ class LimitCycleSeries:
     f: sp.Expr
     x: sp.Symbol
     v: sp.Symbol
-    eps: sp.Symbol
+    eps_symbol: sp.Symbol
     order: int
     arithmetic: str
     dps: int | None
@@ -88,6 +92,7 @@ class LimitCycleSeries:
     floquet_exponent: EpsSeries
     stable: bool
     _harmonics: tuple = field(repr=False, compare=False)  # per order: (cos list, sin list) of scaled x_k
+    eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     @property
     def frequency_squared(self) -> EpsSeries:
@@ -95,7 +100,7 @@ class LimitCycleSeries:
         c = self.frequency.coefficients
         n = self.frequency.order
         sq = tuple(sp.Add(*[c[i] * c[k - i] for i in range(k + 1)]) for k in range(n + 1))
-        return EpsSeries(sq, self.eps, n, name="omega**2")
+        return EpsSeries(sq, self.eps_symbol, n, name="omega**2")
 
     def harmonics(self, order: int | None = None) -> list[tuple[list, list]]:
         """Fourier coefficients ``(cos[n], sin[n])`` of ``x_k(tau)`` for k = 0..order (SymPy numbers, unscaled)."""
@@ -116,8 +121,12 @@ class LimitCycleSeries:
         nh = max(len(cs) for cs, _ in self._harmonics[: n + 1])
         out = sp.Integer(0)
         for h in range(nh):
-            cc = sp.Add(*[cs[h] * self.eps**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)])
-            sc = sp.Add(*[ss[h] * self.eps**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)])
+            cc = sp.Add(
+                *[cs[h] * self.eps_symbol**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)]
+            )
+            sc = sp.Add(
+                *[ss[h] * self.eps_symbol**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)]
+            )
             out += cc * sp.cos(h * tau) + sc * sp.sin(h * tau)
         return sp.expand(A0 * out) if A0 != 1 else out
 
@@ -139,7 +148,8 @@ class LimitCycleSeries:
         omega = self.frequency.evaluate(eps, n)
         return np.stack([A0 * x, A0 * omega * dx])
 
-    def plot(self, eps: float, order: int | None = None, ax: Any = None, *, numeric: bool = True) -> Any:
+    @plot_method
+    def plot(self, eps: float, order: int | None = None, *, ax: Any = None, numeric: bool = True) -> Any:
         """Phase portrait ``(x, dx/dt)`` of the truncated series at ``eps``, with the numeric cycle for comparison."""
         import matplotlib.pyplot as plt
 
@@ -152,11 +162,11 @@ class LimitCycleSeries:
         if numeric:
             from .validate import numeric_orbit
 
-            xn, vn = numeric_orbit(self.f, eps, x=self.x, v=self.v, eps_symbol=self.eps)
+            xn, vn = numeric_orbit(self.f, eps, x=self.x, v=self.v, eps_symbol=self.eps_symbol)
             ax.plot(xn, vn, "--", label="numeric cycle")
         ax.set_xlabel(str(self.x))
         ax.set_ylabel(f"d{self.x}/dt")
-        ax.set_title(f"limit cycle, {self.eps} = {eps:g}")
+        ax.set_title(f"limit cycle, {self.eps_symbol} = {eps:g}")
         ax.legend()
         return ax
 
@@ -170,8 +180,9 @@ class LimitCycleSeries:
     def __repr__(self) -> str:
         st = "stable" if self.stable else "unstable"
         return (
-            f"LimitCycleSeries(x'' + x = {self.eps}*({self.f}), order={self.order}, arithmetic={self.arithmetic!r},\n"
-            f"  A* = {self.generating_amplitude} ({st} for small {self.eps} > 0),\n"
+            f"LimitCycleSeries(x'' + x = {self.eps_symbol}*({self.f}), order={self.order}, "
+            f"arithmetic={self.arithmetic!r},\n"
+            f"  A* = {self.generating_amplitude} ({st} for small {self.eps_symbol} > 0),\n"
             f"  {self._short(self.frequency)},\n  {self._short(self.amplitude)})"
         )
 
@@ -183,8 +194,8 @@ class LimitCycleSeries:
 
     def _repr_latex_(self) -> str:
         return (
-            f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps ** (self.order + 1))}),\\quad "
-            f"a = {sp.latex(self.amplitude.expr)} + O({sp.latex(self.eps ** (self.order + 1))})$"
+            f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))}),\\quad "
+            f"a = {sp.latex(self.amplitude.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))})$"
         )
 
 
@@ -192,13 +203,14 @@ class LimitCycleSeries:
 _MAX_ORDER = 60
 
 
+@renamed_keyword({"eps": "eps_symbol"})
 def limit_cycle(
     f: Any,
     order: int,
     *,
     x: sp.Symbol = X,
     v: sp.Symbol = V,
-    eps: sp.Symbol = EPS,
+    eps_symbol: sp.Symbol = EPS,
     arithmetic: str = "exact",
     dps: int | None = None,
     amplitude0: float | None = None,
@@ -238,6 +250,13 @@ def limit_cycle(
         (conservative: a family of cycles, use :func:`~symosc.nonlinear.lindstedt`), or only a multiple root; several
         roots and no ``amplitude0``.
 
+    See Also
+    --------
+    lindstedt
+    numeric_limit_cycle
+    validate_limit_cycle
+    periodic_solution_ndof
+
     Examples
     --------
     Van der Pol (Bulgakov §5.22): amplitude 2, frequency ``1 - eps**2/16 + 17 eps**4/3072 + ...``
@@ -252,6 +271,7 @@ def limit_cycle(
     >>> lc.floquet_exponent.coefficients[:2]
     (0, -1)
     """
+    eps = eps_symbol
     if isinstance(order, bool) or not isinstance(order, int | np.integer) or order < 1:
         raise ParameterError(f"order must be an integer >= 1, got {order!r}")
     order = int(order)
@@ -354,7 +374,7 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
         f=f,
         x=x,
         v=v,
-        eps=eps,
+        eps_symbol=eps,
         order=order,
         arithmetic=arithmetic,
         dps=dps,

@@ -24,6 +24,9 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile as _compile
 from ._fourier import FixedArith, Trig, _Arith, make_arith
@@ -65,7 +68,7 @@ def _modes(M: sp.Matrix, K: sp.Matrix, dps: int) -> tuple[list, mpmath.matrix]:
 
 
 @dataclass(frozen=True)
-class NDofPeriodicSolution:
+class NDofPeriodicSolution(SymPyPrintable):
     """Periodic solution of ``M q'' + K q = eps*f(q, q')`` continued from one linear mode.
 
     Attributes
@@ -90,7 +93,7 @@ class NDofPeriodicSolution:
     order: int
     arithmetic: str
     q: tuple
-    eps: sp.Symbol
+    eps_symbol: sp.Symbol
     mode_frequencies: tuple
     mode_shapes: np.ndarray = field(repr=False)
     generating_amplitude: float = 0.0
@@ -103,6 +106,7 @@ class NDofPeriodicSolution:
     _coords: tuple = field(default=(), repr=False, compare=False)  # per order: per coordinate (cos, sin) lists
     _numeric: Any = field(default=None, repr=False, compare=False)
     _exponent_cache: dict = field(default_factory=dict, repr=False, compare=False)
+    eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Matrix:
         """``q(tau)`` (column Matrix) truncated at ``order``; ``tau = omega*t``."""
@@ -117,9 +121,9 @@ class NDofPeriodicSolution:
                 cs, ss = self._coords[k][i]
                 for h, (c, s) in enumerate(zip(cs, ss, strict=True)):
                     if c != 0:
-                        e += A0 * c * self.eps**k * sp.cos(h * tau)
+                        e += A0 * c * self.eps_symbol**k * sp.cos(h * tau)
                     if s != 0:
-                        e += A0 * s * self.eps**k * sp.sin(h * tau)
+                        e += A0 * s * self.eps_symbol**k * sp.sin(h * tau)
             out.append(e)
         return sp.Matrix(out)
 
@@ -178,7 +182,7 @@ class NDofPeriodicSolution:
         return _validate_ndof(self, float(eps), rtol, exponent_order)
 
     def _repr_latex_(self) -> str:
-        return f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps ** (self.order + 1))})$"
+        return f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))})$"
 
     def __repr__(self) -> str:
         w = ", ".join(f"{x:.6g}" for x in self.mode_frequencies)
@@ -194,6 +198,7 @@ def _head(series: EpsSeries, terms: int = 4) -> str:
     return f"{float(series.factor):.10g} * sum_k c_k eps**k, c = [{cs}, ...] (to order {series.order})"
 
 
+@renamed_keyword({"eps": "eps_symbol"})
 def periodic_solution_ndof(
     M: Any,
     K: Any,
@@ -203,7 +208,7 @@ def periodic_solution_ndof(
     order: int,
     *,
     mode: int = 0,
-    eps: sp.Symbol = EPS,
+    eps_symbol: sp.Symbol = EPS,
     arithmetic: str = "float",
     dps: int | None = None,
     amplitude0: float | None = None,
@@ -236,6 +241,7 @@ def periodic_solution_ndof(
     >>> round(sol.generating_amplitude, 12), sol.stable
     (2.828427124746, True)
     """
+    eps = eps_symbol
     if isinstance(order, bool) or not isinstance(order, int | np.integer) or order < 1:
         raise ParameterError(f"order must be an integer >= 1, got {order!r}")
     if arithmetic not in ("float", "mpmath"):
@@ -360,7 +366,7 @@ def periodic_solution_ndof(
         order=order,
         arithmetic=arithmetic,
         q=q,
-        eps=eps,
+        eps_symbol=eps,
         mode_frequencies=tuple(float(mpmath.sqrt(lj)) if lj > 0 else float("nan") for lj in lams),
         mode_shapes=np.array([[float(Phi[i, j]) for j in range(n)] for i in range(n)]),
         generating_amplitude=float(A0),

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile
 
@@ -47,7 +48,7 @@ def _pos(x: Any, name: str, allow_zero: bool = False) -> sp.Expr:
 
 
 @dataclass(frozen=True)
-class ClockEscapement:
+class ClockEscapement(SymPyPrintable):
     """Balance wheel ``x'' + x = -B sign(x')`` (time in units ``sqrt(m/sigma)``) kicked by ``h/2`` energy units at
     ``x = +f`` on the leftward swing and ``x = -f`` on the rightward swing.
 
@@ -112,7 +113,7 @@ class ClockEscapement:
 def clock_escapement(B: Any, h: Any, f: Any = 0) -> ClockEscapement:
     """Clock with Coulomb friction and an instantaneous escapement impulse (Bulgakov §5.11).
 
-    The map is derived from energy conservation about the friction centre ``+B`` of the leftward swing:
+    The map is derived from energy conservation about the friction center ``+B`` of the leftward swing:
     ``(b + B)^2 = (a - B)^2 + h``.
 
     Examples
@@ -137,7 +138,7 @@ def clock_escapement(B: Any, h: Any, f: Any = 0) -> ClockEscapement:
 
 
 @dataclass(frozen=True)
-class StepGenerator:
+class StepGenerator(SymPyPrintable):
     """Cycle of ``x'' + 2 eps x' + k^2 x = k^2 S H(x')``: turning points ``+A`` and ``-B`` (5.166)."""
 
     S: sp.Expr
@@ -159,7 +160,8 @@ class StepGenerator:
 
 
 def step_valve_generator(S: Any, eps: Any, k: Any = 1) -> StepGenerator:
-    """Valve generator with an ideal step characteristic (Bulgakov §5.13; model reconstructed from the OCR).
+    """Valve generator with an ideal step characteristic (Bulgakov (1954), §5.13; the model is
+    reconstructed where the print is illegible).
 
     >>> g = step_valve_generator(1, 0)
     Traceback (most recent call last):
@@ -226,7 +228,7 @@ def backlash_critical_gap(z: float, f: float, variant: str = "follower") -> floa
 
 
 @dataclass(frozen=True)
-class FlywheelDesign:
+class FlywheelDesign(SymPyPrintable):
     """Flywheel from Radinger's formula: ``M r_m^2 delta = Delta E`` (leading term of §5.24).
 
     ``energy_swing`` is ``Delta E = max E - min E`` of ``E(s) = Integral(torque - r_m^2 a'(s)/2)``; ``extremes`` are

@@ -20,6 +20,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from .._validate import check_finite, check_positive
 from ..errors import ConvergenceError, ParameterError, SeriesWarning
 from ..numeric import compile as _compile
@@ -39,7 +41,7 @@ _EPS = sp.Symbol("eps")
 
 
 @dataclass(frozen=True)
-class NumericCycle:
+class NumericCycle(SymPyPrintable):
     """A limit cycle located numerically on the section ``v = 0, x > 0``.
 
     Attributes
@@ -156,6 +158,12 @@ def numeric_limit_cycle(
     dps : int, optional
         If given, polish the result with :func:`mpmath.odefun` at ``dps`` digits (slow; for reference values at
         moderate ``eps``).  Amplitude and period are then ``mpf``.
+
+    See Also
+    --------
+    limit_cycle
+    numeric_orbit
+    numeric_period
 
     Examples
     --------
@@ -282,7 +290,7 @@ def numeric_period(
 
 
 @dataclass(frozen=True)
-class SeriesValidation:
+class SeriesValidation(SymPyPrintable):
     """Truncated series against the numerical cycle/period.
 
     ``rows`` holds one dict per (eps, order) with the series and numeric values, the errors, the size of the last
@@ -314,7 +322,8 @@ class SeriesValidation:
     def __repr__(self) -> str:
         return "SeriesValidation(\n" + self.table() + f"\n radius of convergence estimate: {self.radius})"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Frequency error vs order for each eps (log scale)."""
         import matplotlib.pyplot as plt
 
@@ -347,6 +356,11 @@ def validate_limit_cycle(
     dps : int, optional
         Use the mpmath reference (see :func:`numeric_limit_cycle`).
 
+    See Also
+    --------
+    limit_cycle
+    numeric_limit_cycle
+
     Examples
     --------
     >>> import sympy as sp
@@ -367,7 +381,7 @@ def validate_limit_cycle(
     for e in eps_list:
         t0 = time.perf_counter()
         cyc = numeric_limit_cycle(
-            f_num, e, x=lc.x, v=lc.v, eps_symbol=lc.eps, guess=float(lc.generating_amplitude), rtol=rtol, dps=dps
+            f_num, e, x=lc.x, v=lc.v, eps_symbol=lc.eps_symbol, guess=float(lc.generating_amplitude), rtol=rtol, dps=dps
         )
         tnum = time.perf_counter() - t0
         # the table reports the validity itself (in_validity), so the SeriesWarning of each evaluation is not repeated
@@ -430,7 +444,7 @@ def validate_lindstedt(ls: Any, eps: float, A: float, *, orders: Any = None, rto
     True
     """
     eps, A = check_finite("eps", eps), check_finite("A", A)
-    T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps, rtol=rtol)
+    T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps_symbol, rtol=rtol)
     om_num = 2 * np.pi / T
     orders = [ls.order] if orders is None else [int(o) for o in orders]
     rows = []

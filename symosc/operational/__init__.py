@@ -45,7 +45,7 @@ from .theorems import (
     shift,
     similarity,
 )
-from .transform import NumericInversion, carson, inverse_carson, invert_numeric
+from .transform import NumericInversion, carson, inverse_carson, invert_numeric, to_transfer_function
 
 __all__ = [
     "CARSON_TABLE",
@@ -92,9 +92,15 @@ __all__ = [
     "solve_operational",
     "step_image",
     "table_entry",
+    "to_transfer_function",
 ]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 from .._validate import guard_public_api as _guard_public_api
 
 _guard_public_api(__name__)
+
+# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
+from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
+
+_add_printing_hooks_to_public(__name__)

@@ -12,8 +12,8 @@ A step function ``x(t) = h(floor(t/tau) tau)`` is described by its sequence ``x_
 
 invert any rational image of ``gamma`` with ``deg numerator <= deg denominator``.
 
-What is reconstructed: the OCR of §2.22–2.26 is poor; the formulas above follow the research report, which rebuilt
-them from the surviving fragments (the identification with the z-transform is the report's own observation).
+What is reconstructed: parts of §§2.22–2.26 are illegible in the available copy of the book; the formulas above
+were rebuilt from the legible fragments (the identification with the z-transform is ours, not the book's).
 Here everything is verified against direct recursion in the tests.  The consistency relations of degenerate
 systems are carried over from §2.21b by analogy (the solution evaluated at ``n < m_k`` must reproduce the data).
 """
@@ -25,6 +25,7 @@ from functools import cached_property
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots
 
@@ -115,7 +116,7 @@ def inverse_step_image(image, gamma: sp.Symbol = _gamma, n: sp.Symbol = _n) -> s
 
 
 @dataclass(frozen=True)
-class DifferenceSolution:
+class DifferenceSolution(SymPyPrintable):
     """Result of :func:`solve_difference`: ``y_n = M_n + S(T) x_n + sum_{j<n} N_{n-j-1} x_j`` (2.130).
 
     Attributes
@@ -152,7 +153,7 @@ class DifferenceSolution:
         return f"$$y_n = {sp.latex(self.response)}$$"
 
     def values(self, count: int) -> list[sp.Matrix]:
-        """Exact ``y_0 .. y_{count-1}`` (needs numeric initial values)."""
+        """Exact values ``y_k`` for ``k < count`` (needs numeric initial values)."""
         return [self.response.subs(self.n, k).doit().applyfunc(sp.simplify) for k in range(count)]
 
 
@@ -263,7 +264,7 @@ def solve_difference(f, e, inputs=None, initial=None, *, T: sp.Symbol | None = N
 
 
 @dataclass(frozen=True)
-class IndefiniteSum:
+class IndefiniteSum(SymPyPrintable):
     """Result of :func:`indefinite_sum`: the general solution ``y`` of ``Delta y = y(t + tau) - y(t) = x(t)`` (2.68),
 
         y(t) = sum_{j=1}^{floor(t/tau)} x(t - j tau) + A(t),     A(t) = a(t - tau floor(t/tau)),
@@ -353,8 +354,8 @@ def indefinite_sum(x, t: sp.Symbol, tau, piece=None, *, p: sp.Symbol | None = No
     place of the constant of integration.  The first term is the definite sum, the solution vanishing on
     ``0 <= t < tau``.
 
-    What is reconstructed: (2.67), the image equation and (2.68) are legible in the seed; the closed form of the
-    image ``eta`` above is the book's intermediate step with the OCR garbling removed.  The tests check
+    What is reconstructed: (2.67), the image equation and (2.68) are legible in the book; the closed form of the
+    image ``eta`` above is the book's intermediate step, rebuilt where the print is illegible.  The tests check
     ``Delta y = x`` pointwise and ``eta`` against numeric quadrature of ``p Integral(y exp(-p t))``.
 
     Parameters

@@ -27,7 +27,7 @@ _METHODS = ("auto", "hurwitz", "closed", "residues")
 
 
 def hurwitz_matrix(denominator, p: sp.Symbol) -> sp.Matrix:
-    """The ``s x s`` Hurwitz matrix ``Hw[i, j] = k_(2j - i)`` (1-based) of ``k0 p**s + ... + ks``.
+    """The ``s x s`` Hurwitz matrix ``Hw[i, j] = k_(2j - i)`` (1-based) of ``k0 p**s + … + ks``.
 
     >>> import sympy as sp
     >>> p = sp.Symbol("p")

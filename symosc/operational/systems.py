@@ -18,9 +18,12 @@ returned as :attr:`OperationalSolution.constraints`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 
+from .._plotting import new_axes, plot_method
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..symbols import t as _t
 from .heaviside import heaviside_expand
@@ -31,7 +34,7 @@ __all__ = ["OperationalSolution", "solve_operational"]
 
 
 @dataclass(frozen=True)
-class OperationalSolution:
+class OperationalSolution(SymPyPrintable):
     """Result of :func:`solve_operational`.
 
     Attributes
@@ -103,14 +106,14 @@ class OperationalSolution:
             sub[k if isinstance(k, sp.Basic) else sp.Symbol(str(k))] = v
         return all(sp.simplify((c.lhs - c.rhs).subs(sub)) == 0 for c in self.constraints)
 
-    def plot(self, values: dict | None = None, t_max: float = 10.0, ax=None):
+    @plot_method
+    def plot(self, values: dict | None = None, t_max: float = 10.0, *, ax: Any = None) -> Any:
         """Plot the response components for numeric ``values`` of the symbols in it."""
-        import matplotlib.pyplot as plt
         import numpy as np
 
         from .. import numeric
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         expr = numeric.bind(self.response, values or {})
         fn = numeric.compile(expr, [self.t])
         ts = np.linspace(1e-9, t_max, 400)
@@ -198,6 +201,12 @@ def solve_operational(
     ------
     ModelError
         If ``det f`` vanishes identically or shapes do not match.
+
+    See Also
+    --------
+    carson
+    inverse_carson
+    to_transfer_function
 
     Examples
     --------

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..symbols import t as _t
 
 __all__ = ["CARSON_TABLE", "TableEntry", "carson_by_table", "carson_matrix_exp", "table_entry"]
@@ -27,7 +28,7 @@ _tau0 = sp.Symbol("tau0", positive=True)
 
 
 @dataclass(frozen=True)
-class TableEntry:
+class TableEntry(SymPyPrintable):
     """One row of the table of images: ``original(t) <-> image(p)`` (Carson: image = p * Laplace[original])."""
 
     name: str

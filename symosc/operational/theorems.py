@@ -11,6 +11,7 @@ from collections.abc import Sequence
 
 import sympy as sp
 
+from .._deprecation import renamed_keyword
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots
 
@@ -218,7 +219,8 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
     return (g - 1) ** m * sp.sympify(image) - g * sp.Add(*[(g - 1) ** (m - j - 1) * betas[j] for j in range(m)])
 
 
-def differentiate_parameter(image, s: sp.Symbol, order: int = 1) -> sp.Expr:
+@renamed_keyword({"order": "n"})
+def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
     """Differentiation with respect to a parameter (2.42): ``d^k X(p, s)/ds^k <-> d^k x(t, s)/ds^k``.
 
     The Carson transform commutes with differentiation in a parameter ``s`` independent of ``t`` and ``p`` (for
@@ -232,9 +234,9 @@ def differentiate_parameter(image, s: sp.Symbol, order: int = 1) -> sp.Expr:
     """
     if not isinstance(s, sp.Symbol):
         raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
-    if int(order) != order or order < 0:
-        raise ParameterError(f"order must be an integer >= 0, got {order}")
-    return sp.diff(sp.sympify(image), s, int(order))
+    if int(n) != n or n < 0:
+        raise ParameterError(f"n (the derivative order) must be an integer >= 0, got {n}")
+    return sp.diff(sp.sympify(image), s, int(n))
 
 
 def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
@@ -269,20 +271,21 @@ def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     return sp.sympify(image).subs(p, p / a)
 
 
-def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), order: int | None = None) -> sp.Expr:
-    """Image of the ``m``-th derivative (2.18): ``p**m X - p**m x(0) - p**(m-1) x'(0) - ... - p x^(m-1)(0)``.
+@renamed_keyword({"order": "n"})
+def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int | None = None) -> sp.Expr:
+    """Image of the ``m``-th derivative (2.18): ``p**m X - p**m x(0) - p**(m-1) x'(0) - … - p x^(m-1)(0)``.
 
-    ``initial`` holds ``x(0+), x'(0+), ..., x^(m-1)(0+)``; ``order`` defaults to ``len(initial)`` (with zero data
-    pass ``order`` alone, giving (2.20)).
+    ``initial`` holds ``x(0+), x'(0+), ..., x^(m-1)(0+)``; ``n`` defaults to ``len(initial)`` (with zero data
+    pass ``n`` alone, giving (2.20)).
 
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> sp.cancel(differentiate_original(p**2 / (p**2 + 1), p, [1]))   # (cos t)' = -sin t
     -p/(p**2 + 1)
     """
-    m = len(initial) if order is None else int(order)
+    m = len(initial) if n is None else int(n)
     if m < 0:
-        raise ParameterError("order must be >= 0")
+        raise ParameterError("n (the derivative order) must be >= 0")
     if len(initial) > m:
         raise ParameterError(f"{len(initial)} initial values given for a derivative of order {m}")
     init = list(initial) + [0] * (m - len(initial))
@@ -305,7 +308,8 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
     return sp.sympify(image) / p**times + constant
 
 
-def differentiate_image(image, p: sp.Symbol, order: int = 1) -> sp.Expr:
+@renamed_keyword({"order": "n"})
+def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     """Image of ``t**m x(t)`` (2.23): ``(-1)**m p d^m/dp^m [X(p)/p]``.
 
     >>> import sympy as sp
@@ -313,9 +317,9 @@ def differentiate_image(image, p: sp.Symbol, order: int = 1) -> sp.Expr:
     >>> sp.factor(differentiate_image(p / (p + 1), p, 2))    # t**2 exp(-t)
     2*p/(p + 1)**3
     """
-    if order < 0:
-        raise ParameterError("order must be >= 0")
-    return sp.cancel((-1) ** order * p * sp.diff(sp.sympify(image) / p, p, order))
+    if n < 0:
+        raise ParameterError("n (the derivative order) must be >= 0")
+    return sp.cancel((-1) ** n * p * sp.diff(sp.sympify(image) / p, p, n))
 
 
 def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:

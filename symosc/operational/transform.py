@@ -7,12 +7,15 @@ image, and ``x'(t) <-> p (X(p) - x(0))``.  Originals are functions of ``t > 0``;
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import mpmath
 import numpy as np
 import sympy as sp
 
 from .. import numeric
+from .._plotting import new_axes, plot_method
+from .._printing import SymPyPrintable
 from .._validate import check_finite_array, check_int, check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
@@ -20,7 +23,7 @@ from ._rational import check_expression, check_symbol
 from .heaviside import heaviside_expand
 from .table import _Unsupported, carson_by_table
 
-__all__ = ["NumericInversion", "carson", "inverse_carson", "invert_numeric"]
+__all__ = ["NumericInversion", "carson", "inverse_carson", "invert_numeric", "to_transfer_function"]
 
 _METHODS = ("auto", "table", "sympy")
 _INV_METHODS = ("auto", "heaviside", "sympy")
@@ -43,6 +46,12 @@ def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "a
     ------
     ModelError
         If no closed form is found.
+
+    See Also
+    --------
+    inverse_carson
+    carson_by_table
+    invert_numeric
 
     Examples
     --------
@@ -91,6 +100,12 @@ def inverse_carson(
         function) and when no closed form is found.
 
     ``roots="numeric"`` uses 30-digit numeric poles (see :func:`heaviside_expand`).
+
+    See Also
+    --------
+    carson
+    heaviside_expand
+    invert_numeric
 
     Examples
     --------
@@ -218,7 +233,7 @@ def _split_delays(image, p) -> dict | None:
 
 
 @dataclass(frozen=True)
-class NumericInversion:
+class NumericInversion(SymPyPrintable):
     """Values of an original found by numeric inversion of its image (:func:`invert_numeric`).
 
     Attributes
@@ -248,11 +263,11 @@ class NumericInversion:
             f"max_error_estimate={float(np.max(self.error_estimate)):.2e}, converged={self.converged})"
         )
 
-    def plot(self, ax=None):
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Plot ``x(t)``."""
-        import matplotlib.pyplot as plt
 
-        ax = ax or plt.gca()
+        ax = new_axes(ax)
         ax.plot(self.t, self.values)
         ax.set_xlabel("t")
         ax.set_ylabel("x(t)")
@@ -296,6 +311,11 @@ def invert_numeric(
     ------
     ConvergenceError
         If the two methods disagree by more than ``tol``.
+
+    See Also
+    --------
+    inverse_carson
+    carson
 
     Examples
     --------
@@ -364,3 +384,26 @@ def invert_numeric(
             achieved=float(err[i]),
         )
     return NumericInversion(t=ts, values=arr, error_estimate=err, method=method, converged=True)
+
+
+def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *, backend: str = "auto") -> Any:
+    """A rational transfer function W(p), such as a ratio Y(p)/U(p) of Carson images, as a control object.
+
+    Returns ``control.TransferFunction`` when python-control is installed, else ``scipy.signal.TransferFunction``;
+    ``values`` gives numbers for the other symbols.  Delays (``exp(-p tau)``) do not convert.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p, k, T = sp.symbols("p k T", positive=True)
+    >>> H = to_transfer_function(k / (T * p + 1), p, {"k": 2, "T": 0.5}, backend="scipy")
+    >>> H.num.tolist(), H.den.tolist()
+    ([4.0], [1.0, 2.0])
+
+    See Also
+    --------
+    symosc.mechanics.LinearModel.to_transfer_function
+    """
+    from .._control import transfer_function_from_expr
+
+    return transfer_function_from_expr(image, p, values, backend=backend)

@@ -1,7 +1,7 @@
 """The methods Gribkov & Khokhlov (2015) compare their modified Ince–Strutt diagram with.
 
 All regions are expressed in the first-tone coordinates ``a^1 = -4 (p_1/p)^2``, ``q^1 = 2 a p_1^2 / g`` of
-:mod:`symosc.periodic.stability`; ``r_i = (p_1/p_i)^2``.  The paper (seed 000, introduction and Fig. 5) only
+:mod:`symosc.periodic.stability`; ``r_i = (p_1/p_i)^2``.  The paper (introduction and Fig. 5) only
 cites the approximate methods; what is implemented is reconstructed from the cited works' known results:
 
 ``"floquet"`` (Demidovich [4])
@@ -38,6 +38,8 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from .floquet import monodromy
 from .ince_strutt import series_boundary
@@ -254,7 +256,7 @@ def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 
 
 # ---------------------------------------------------------------------------------------- comparison
 @dataclass(frozen=True)
-class MethodComparison:
+class MethodComparison(SymPyPrintable):
     """Boundaries of several methods on a common ``q^1`` grid (the paper's Fig. 5).
 
     Attributes
@@ -296,7 +298,8 @@ class MethodComparison:
     def __repr__(self) -> str:
         return f"MethodComparison(methods={list(self.regions)}, {self.q.size} q values)"
 
-    def plot(self, ax: Any = None, *, a_range: tuple[float, float] | None = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, a_range: tuple[float, float] | None = None) -> Any:
         """All regions in first-tone axes (``a^1`` horizontal, ``q^1`` vertical), like the paper's Fig. 5."""
         import matplotlib.pyplot as plt
 

@@ -2,8 +2,8 @@
 
 The fundamental matrix ``X(t)`` with ``X(0) = I`` satisfies ``X(t + T) = X(t) X(T)``; ``X(T)`` is the
 monodromy matrix, its eigenvalues ``rho`` are the Floquet multipliers and ``zeta = ln(rho) / T`` the
-characteristic exponents (defined modulo ``2*pi*i/T``).  Sources: Bulgakov ch. 11 (seed 004, §11.1–11.4;
-research report seed-bulgakov-part3b.md §2.6) and Gribkov & Khokhlov 2015, eq. (2)–(5) (seed 000).
+characteristic exponents (defined modulo ``2*pi*i/T``).  Sources: Bulgakov (1954),
+§§11.1–11.4, and Gribkov & Khokhlov (2015), eqs. (2)–(5).
 
 The matrix ODE is integrated for all ``n`` columns at once (one ``n x n`` matrix product per
 right-hand-side call) together with ``s' = tr A(t)``, so that the Liouville relation
@@ -29,6 +29,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from .._validate import check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
@@ -38,7 +40,7 @@ __all__ = ["FloquetResult", "floquet_multipliers", "monodromy"]
 
 
 @dataclass(frozen=True)
-class FloquetResult:
+class FloquetResult(SymPyPrintable):
     """Monodromy matrix of ``x' = A(t) x`` over one period and what follows from it.
 
     Attributes
@@ -148,8 +150,8 @@ class FloquetResult:
             used |= cluster
             k = int(cluster.sum())
             if k > 1:
-                centre = on[cluster].mean()
-                sv = np.linalg.svd(self.monodromy - centre * np.eye(self.monodromy.shape[0]), compute_uv=False)
+                center = on[cluster].mean()
+                sv = np.linalg.svd(self.monodromy - center * np.eye(self.monodromy.shape[0]), compute_uv=False)
                 nullity = int(np.sum(sv <= ctol * scale))
                 if nullity < k:
                     return "critical"
@@ -174,7 +176,8 @@ class FloquetResult:
         )
         return f"$$\\rho = \\{{{rho}\\}},\\quad \\text{{{self.stability}}}$$"
 
-    def plot(self, ax: Any = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None) -> Any:
         """Multipliers in the complex plane with the unit circle."""
         import matplotlib.pyplot as plt
 
@@ -308,6 +311,10 @@ def monodromy(
     ConvergenceError
         If the integrator fails or the Liouville check is worse than ``max(1e-6, 1e4 * rtol)``.
 
+    See Also
+    --------
+    floquet_multipliers
+
     Examples
     --------
     >>> import sympy as sp
@@ -401,5 +408,10 @@ def floquet_multipliers(A: Any, period: float, **kwargs: Any) -> np.ndarray:
     >>> rho = floquet_multipliers(lambda t: np.array([[-1.0, 0.0], [0.0, -2.0]]), 1.0)
     >>> np.allclose(rho, [np.exp(-1), np.exp(-2)])
     True
+
+    See Also
+    --------
+    monodromy
+    stability_region
     """
     return monodromy(A, period, **kwargs).floquet_multipliers

@@ -6,7 +6,7 @@ bounded between the characteristic curves ``a_n(q) < a < b_{n+1}(q)`` (n = 0, 1,
 ``b_n < a < a_n``.  Negative ``q`` is mapped to ``|q|`` (the shift ``x -> x + pi/2`` changes the sign of
 ``q`` and only swaps ``a_{2k+1}`` with ``b_{2k+1}``, so the stable set is even in ``q``).
 
-Modified diagram (Gribkov & Khokhlov 2015, §3 of the research report, eq. (7)): an N-mode system whose
+Modified diagram (Gribkov & Khokhlov (2015), §3, eq. (7)): an N-mode system whose
 modes obey Mathieu equations with ``a_i = a^1 / r_i``, ``q_i = q^1 / r_i`` (``r_i = (p_1/p_i)^2``) is drawn in
 the first-tone coordinates ``(a^1, q^1)``: each boundary curve ``a = f(q)`` of mode ``i`` becomes
 ``a^1 = r_i f(q^1 / r_i)``.  The principal stability region is bounded below by the highest ``a_0``-curve
@@ -23,6 +23,10 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._deprecation import renamed_keyword
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -143,7 +147,7 @@ def series_boundary(kind: str, n: int, terms: int) -> Callable[[Any], np.ndarray
 
 # ---------------------------------------------------------------------------------------- classic
 @dataclass(frozen=True)
-class InceStruttDiagram:
+class InceStruttDiagram(SymPyPrintable):
     """The classic Ince–Strutt diagram: characteristic curves ``a_n(q)``, ``b_n(q)`` on a q grid.
 
     Attributes
@@ -151,7 +155,7 @@ class InceStruttDiagram:
     q : ndarray
         Grid of ``q >= 0``.
     a_curves, b_curves : dict[int, ndarray]
-        ``a_n(q)`` for ``n = 0..orders`` and ``b_n(q)`` for ``n = 1..orders``.
+        ``a_n(q)`` for ``n = 0..n_max`` and ``b_n(q)`` for ``n = 1..n_max``.
     """
 
     q: np.ndarray
@@ -159,27 +163,31 @@ class InceStruttDiagram:
     b_curves: dict
 
     @property
-    def orders(self) -> int:
+    def n_max(self) -> int:
+        """Largest index ``n`` of the characteristic curves ``a_n``, ``b_n``."""
         return max(self.a_curves)
+
+    orders = _deprecated_attribute("n_max")
 
     def is_stable(self, a: Any, q: Any) -> np.ndarray:
         """Exact stability of ``(a, q)`` (see :func:`mathieu_stable`)."""
         return mathieu_stable(a, q)
 
     def __repr__(self) -> str:
-        return f"InceStruttDiagram(orders 0..{self.orders}, q in [{self.q[0]:g}, {self.q[-1]:g}], {self.q.size} points)"
+        return f"InceStruttDiagram(n = 0..{self.n_max}, q in [{self.q[0]:g}, {self.q[-1]:g}], {self.q.size} points)"
 
     def _repr_latex_(self) -> str:
         return r"$$y'' + (a - 2q\cos 2x)\,y = 0:\quad \text{stable for } a_n(q) < a < b_{n+1}(q)$$"
 
-    def plot(self, ax: Any = None, *, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
         """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``."""
         import matplotlib.pyplot as plt
 
         if ax is None:
             _, ax = plt.subplots(figsize=(7, 5))
         if shade:  # stable bands a_n < a < b_{n+1}; the last band is open to the right
-            for n in range(self.orders + 1):
+            for n in range(self.n_max + 1):
                 right = self.b_curves[n + 1] if n + 1 in self.b_curves else np.full(self.q.shape, a_range[1])
                 ax.fill_betweenx(self.q, self.a_curves[n], np.maximum(right, self.a_curves[n]), color="0.85")
         for kind, curves, ls in (("a", self.a_curves, "k-"), ("b", self.b_curves, "k--")):
@@ -199,22 +207,29 @@ class InceStruttDiagram:
         return ax
 
 
-def ince_strutt_diagram(orders: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
-    """Characteristic curves ``a_0..a_orders``, ``b_1..b_orders`` on ``q in [0, q_max]``.
+@renamed_keyword({"orders": "n_max"})
+def ince_strutt_diagram(n_max: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
+    """Characteristic curves ``a_0..a_n_max``, ``b_1..b_n_max`` on ``q in [0, q_max]``.
 
-    >>> d = ince_strutt_diagram(orders=2, q_max=1.0, num=3)
+    >>> d = ince_strutt_diagram(n_max=2, q_max=1.0, num=3)
     >>> sorted(d.a_curves), sorted(d.b_curves)
     ([0, 1, 2], [1, 2])
     >>> [round(float(d.a_curves[n][0]), 12) for n in range(3)]   # a_n(0) = n**2
     [0.0, 1.0, 4.0]
+
+    See Also
+    --------
+    modified_ince_strutt
+    mathieu_a
+    mathieu_b
     """
-    if isinstance(orders, bool) or not isinstance(orders, int) or orders < 0:
-        raise ParameterError(f"orders must be a non-negative integer, got {orders!r}")
+    if isinstance(n_max, bool) or not isinstance(n_max, int) or n_max < 0:
+        raise ParameterError(f"n_max must be a non-negative integer, got {n_max!r}")
     if not (np.isfinite(q_max) and q_max > 0):
         raise ParameterError(f"q_max must be positive and finite, got {q_max!r}")
     q = np.linspace(0.0, float(q_max), int(num))
-    a_c = {n: _char("a", n, q) for n in range(orders + 1)}
-    b_c = {n: _char("b", n, q) for n in range(1, orders + 1)}
+    a_c = {n: _char("a", n, q) for n in range(n_max + 1)}
+    b_c = {n: _char("b", n, q) for n in range(1, n_max + 1)}
     return InceStruttDiagram(q=q, a_curves=a_c, b_curves=b_c)
 
 
@@ -230,7 +245,7 @@ def _normalise_ratios(ratios: Any) -> tuple[float, ...]:
 
 
 @dataclass(frozen=True)
-class ModifiedInceStruttDiagram:
+class ModifiedInceStruttDiagram(SymPyPrintable):
     """Modified Ince–Strutt diagram of Gribkov & Khokhlov (2015) in first-tone coordinates ``(a^1, q^1)``.
 
     Attributes
@@ -319,17 +334,19 @@ class ModifiedInceStruttDiagram:
         rn = self.ratios[-1]
         return rf"$$a_0(q) < a < {rn:.6g}\, b_1\!\left(\frac{{q}}{{{rn:.6g}}}\right)$$"
 
+    @plot_method
+    @renamed_keyword({"orders": "n_max"})
     def plot(
         self,
-        ax: Any = None,
         *,
-        orders: int = 1,
+        ax: Any = None,
+        n_max: int = 1,
         q_max: float = 1.0,
         a_range: tuple[float, float] | None = None,
         num: int = 201,
         shade: bool = True,
     ) -> Any:
-        """Boundary curves of resonances ``0..orders`` for every mode (mode 1 solid, higher modes dashed) in
+        """Boundary curves of resonances ``0..n_max`` for every mode (mode 1 solid, higher modes dashed) in
         first-tone axes, the principal stability region shaded (the paper's Fig. 3)."""
         import matplotlib.pyplot as plt
 
@@ -340,7 +357,7 @@ class ModifiedInceStruttDiagram:
         lo_a, hi_a = np.inf, -np.inf
         for m in range(1, len(self.ratios) + 1):
             ls = styles[min(m - 1, len(styles) - 1)]
-            for n in range(orders + 1):
+            for n in range(n_max + 1):
                 ca = self.curve("a", n, m, q)
                 ax.plot(ca, q, "k" + ls, lw=1.0)
                 lo_a, hi_a = min(lo_a, ca.min()), max(hi_a, ca.max())
@@ -375,6 +392,12 @@ def modified_ince_strutt(
     lower_terms, upper_terms : int, optional
         Use that many non-zero terms of the power series (8) of ``a_0`` / (9) of ``b_1`` instead of the exact
         characteristic values.
+
+    See Also
+    --------
+    ince_strutt_diagram
+    stability_region
+    mathieu_a
 
     Examples
     --------

@@ -22,16 +22,16 @@ Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_seri
     Rayleigh quotient in extended precision, and falls back to ``"mp"`` when the estimate misses the target.
     Scalar and vectorised calls give the same bits.
     Measured: relative error <= 1e-13 (absolute where |value| < 1) against 50-digit values for n <= 100,
-    |q| <= 1e4 (``benchmarks/mathieu_vs_scipy.py``).
+    ``|q| <= 1e4`` (``benchmarks/mathieu_vs_scipy.py``).
 ``"hill"``
-    plain float64 eigenvalue at two matrix sizes that must agree; absolute error ~ eps * 2|q| (so values near zero
+    plain float64 eigenvalue at two matrix sizes that must agree; absolute error ``~ eps * 2|q|`` (so values near zero
     at large q lose digits -- that is why ``"auto"`` refines).
 ``"mp"``
     Newton iteration on the Hill continued fraction in mpmath at ``dps`` digits (default 30), two sizes that must
     agree; returns ``mpmath.mpf`` values.
 ``"series"``
     the exact power series of :mod:`~symosc.periodic.mathieu_series` with its order chosen for ``tol``; raises
-    ``ConvergenceError`` when |q| is too close to (or beyond) the radius of convergence.
+    ``ConvergenceError`` when ``|q|`` is too close to (or beyond) the radius of convergence.
 
 Near-degenerate neighbours (a_n, b_{n+1} at large q, b_n, a_n at small q for large n) differ by less than the
 rounding error; there both neighbours are computed and the returned values are clamped so that the ordering holds
@@ -47,6 +47,7 @@ from typing import Any
 import mpmath
 import numpy as np
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from . import _hill, _hill_batch
 from .mathieu_series import _check_n, mathieu_series_value
@@ -59,7 +60,7 @@ _DEFAULT_DPS = 30
 
 
 @dataclass(frozen=True)
-class MathieuValues:
+class MathieuValues(SymPyPrintable):
     """Characteristic values with what the method achieved.
 
     Attributes
@@ -215,7 +216,7 @@ def mathieu_characteristic(
         Decimal digits for ``"mp"`` (default 30) and for ``"series"`` (mpmath evaluation).  ``"auto"`` with ``dps``
         means ``"mp"``.
     tol : float, optional
-        Target error (relative where |value| >= 1, absolute below): for ``"auto"`` (default 1e-13; the result is
+        Target error (relative where ``|value| >= 1``, absolute below): for ``"auto"`` (default 1e-13; the result is
         checked against it), ``"hill"`` (accepted difference between the two matrix sizes, never below float64
         noise), ``"series"`` (default 1e-13).
 
@@ -476,6 +477,12 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     -------
     float or numpy.ndarray (``mpmath.mpf`` / object array for ``method="mp"``)
 
+    See Also
+    --------
+    mathieu_b
+    mathieu_characteristic
+    mathieu_series_value
+
     Examples
     --------
     >>> round(mathieu_a(0, 1.0), 12)
@@ -506,6 +513,12 @@ def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     Returns
     -------
     float or numpy.ndarray (``mpmath.mpf`` / object array for ``method="mp"``)
+
+    See Also
+    --------
+    mathieu_a
+    mathieu_characteristic
+    mathieu_series_value
 
     Examples
     --------

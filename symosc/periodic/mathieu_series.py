@@ -14,7 +14,7 @@ form of the Hill matrix (first coupling 2q instead of sqrt(2) q for the even cos
 rational.
 
 Radius of convergence (not large): a_0 and a_2 meet at the branch points q = +-1.4688i, so the series of a_0 converges
-only for |q| < 1.4688 (Meixner & Schafke 1954; Mulholland & Goldstein 1929); :func:`mathieu_series_radius` estimates
+only for ``|q| < 1.4688`` (Meixner & Schafke 1954; Mulholland & Goldstein 1929); :func:`mathieu_series_radius` estimates
 the radius for any n from the coefficients themselves.
 """
 
@@ -27,6 +27,7 @@ from fractions import Fraction
 import mpmath
 import sympy
 
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ParameterError
 from ._hill import family_index
 
@@ -190,7 +191,7 @@ def mathieu_series_b(n: int, order: int, *, symbol: sympy.Symbol | None = None) 
 
 
 @dataclass(frozen=True)
-class SeriesValue:
+class SeriesValue(SymPyPrintable):
     """A numeric value of a truncated Mathieu series and what was achieved.
 
     Attributes
@@ -250,12 +251,12 @@ def mathieu_series_value(
     n : int
         Index.
     q : float
-        Point (any real; the series is a polynomial in q, valid for |q| below the radius of convergence).
+        Point (any real; the series is a polynomial in q, valid for ``|q|`` below the radius of convergence).
     order : int, optional
         Fixed order; by default the smallest of 8, 16, 32, ... up to ``max_order`` whose error estimate is below
         ``tol * max(1, |value|)``.
     tol : float
-        Target error (relative where |value| >= 1, absolute below).
+        Target error (relative where ``|value| >= 1``, absolute below).
     max_order : int
         Largest order tried when ``order`` is not given.
     dps : int, optional
@@ -270,6 +271,12 @@ def mathieu_series_value(
     ConvergenceError
         When ``order`` is not given and no order up to ``max_order`` reaches ``tol`` (q too close to or beyond the
         radius of convergence).
+
+    See Also
+    --------
+    mathieu_series_a
+    mathieu_series_radius
+    mathieu_a
 
     Examples
     --------
@@ -321,7 +328,7 @@ def mathieu_series_value(
 def mathieu_series_radius(kind: str, n: int, order: int = 60) -> float:
     """Estimate the radius of convergence of the series of a_n or b_n from its coefficients.
 
-    Ratio test on the envelope of the coefficients over the last half of the orders: R ~ |c_i / c_j|^(1/(j-i))
+    Ratio test on the envelope of the coefficients over the last half of the orders: ``R ~ |c_i / c_j|^(1/(j-i))``
     with i, j the largest coefficients in (order/2, 3 order/4] and (3 order/4, order], corrected for the
     j^(-3/2) law of square-root branch points.  An estimate: good to ~1 % for a_0 (1.4688, the branch point
     q = 1.4688i where a_0 meets a_2), a few per cent when complex branch points make the coefficients oscillate.

@@ -1,6 +1,6 @@
 """Stability region of a statically unstable pendulum system with a vertically vibrating pivot.
 
-Gribkov & Khokhlov (2015), seed 000, §3 of the research report.  The linearised inverted N-link pendulum
+Gribkov & Khokhlov (2015), §3.  The linearized inverted N-link pendulum
 with pivot ``y = a cos(p t)``,
 
     M phi'' + (-g + a p^2 cos(p t)) C phi = 0,                                              (6)
@@ -25,6 +25,9 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._lazy import LazyFunction
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
 from ..symbols import sort_symbols, t
@@ -69,6 +72,16 @@ class _ParametricModel:
     def amplitude_from_q(self, p: np.ndarray, q1: np.ndarray) -> np.ndarray:
         p1 = self.natural_frequencies[0]
         return q1 * p**2 / (2.0 * p1**2 * np.abs(self._nu(p)))
+
+
+class _ExcitationFactor:
+    """``nu(p)`` as a float array (picklable: holds the expression, not a closure)."""
+
+    def __init__(self, fn: LazyFunction) -> None:
+        self.fn = fn
+
+    def __call__(self, pp: Any) -> np.ndarray:
+        return np.asarray(self.fn(np.asarray(pp, dtype=float)), dtype=float)
 
 
 def _linear_model(system: Any) -> Any:
@@ -124,10 +137,7 @@ def _extract_model(system: Any, values: Mapping[Any, Any]) -> _ParametricModel:
     nu_fn = compile(nu, [p, *nu_params], name="excitation_factor")
     nu_vals = [float(v) for v in resolve(nu_params, values)]
     nu_fn(1.0, *nu_vals)
-    raw = nu_fn.raw
-
-    def nu_num(pp: Any) -> np.ndarray:
-        return np.asarray(raw(np.asarray(pp, dtype=float), *nu_vals), dtype=float)
+    nu_num = _ExcitationFactor(LazyFunction(nu, [p, *nu_params], bound=nu_vals, name="excitation_factor"))
 
     from scipy.linalg import eigh
 
@@ -179,7 +189,7 @@ def _solve_decreasing(f: Callable[[np.ndarray], np.ndarray], target: np.ndarray)
 
 
 @dataclass(frozen=True)
-class StabilityRegion:
+class StabilityRegion(SymPyPrintable):
     """Stability region of the inverted system with a vibrating pivot.
 
     First-tone coordinates ``(a^1, q^1)``: ``a^1 = -4 (p_1/p)^2``, ``q^1 = 2 a p_1^2 / g`` (``p`` excitation
@@ -209,6 +219,11 @@ class StabilityRegion:
     _classify: Callable = field(repr=False, compare=False)
     _model: _ParametricModel = field(repr=False, compare=False)
     _q_bounds: Callable | None = field(default=None, repr=False, compare=False)
+    _options: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def __reduce__(self) -> tuple:
+        """Pickle the model and the method; the boundary functions are rebuilt on loading (they are closures)."""
+        return (_region_from_model, (self.method, self._model), dict(self._options))
 
     # ---------------------------------------------------------------- first-tone coordinates
     def lower(self, q: Any) -> np.ndarray:
@@ -297,10 +312,11 @@ class StabilityRegion:
             rf"\ q^1 = \frac{{2 a p_1^2}}{{g}},\ p_1 = {self.natural_frequencies[0]:.6g}$$"
         )
 
+    @plot_method
     def plot(
         self,
-        ax: Any = None,
         *,
+        ax: Any = None,
         coords: str = "first-tone",
         q_max: float | None = None,
         p_range: tuple[float, float] | None = None,
@@ -361,7 +377,7 @@ def stability_region(
     Parameters
     ----------
     system : LagrangianSystem or LinearModel
-        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearised at ``q = 0``).
+        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
     values : mapping
         Parameter values (keyed by Symbol or name) except the excitation amplitude and frequency.
     method : str
@@ -388,6 +404,12 @@ def stability_region(
     ParameterError
         Unknown method or missing parameter values.
 
+    See Also
+    --------
+    modified_ince_strutt
+    compare_methods
+    floquet_multipliers
+
     Examples
     --------
     >>> from symosc.models import n_link_pendulum
@@ -401,6 +423,23 @@ def stability_region(
     if method not in METHODS:
         raise ParameterError(f"unknown method {method!r}; choose one of {METHODS}")
     model = _extract_model(system, values)
+    return _region_from_model(method, model, order=order, lower_terms=lower_terms, upper_terms=upper_terms, rtol=rtol)
+
+
+def _region_from_model(
+    method: str,
+    model: _ParametricModel,
+    state: dict | None = None,
+    *,
+    order: int = 1,
+    lower_terms: int | None = None,
+    upper_terms: int | None = None,
+    rtol: float = 1e-12,
+) -> StabilityRegion:
+    """The region of ``method`` for an extracted model (``state``: the options, when called by unpickling)."""
+    if state:
+        return _region_from_model(method, model, **state)
+    options = {"order": order, "lower_terms": lower_terms, "upper_terms": upper_terms, "rtol": rtol}
     ratios = tuple(float(r) for r in model.ratios)
     if method == "modified-ince-strutt":
         diag = modified_ince_strutt(ratios, lower_terms=lower_terms, upper_terms=upper_terms)
@@ -415,7 +454,10 @@ def stability_region(
             _upper=diag.upper,
             _classify=diag.is_stable,
             _model=model,
+            _options=options,
         )
     from . import comparison
 
-    return comparison._build(method, model, ratios, order=order, rtol=rtol)
+    region = comparison._build(method, model, ratios, order=order, rtol=rtol)
+    region._options.update(options)
+    return region

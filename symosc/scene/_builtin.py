@@ -12,7 +12,7 @@ source = "Gribkov & Khokhlov (2015), §4, Table 1"
 [system]
 model = "n_link_pendulum"
 n = 2
-links = "rigid"          # physical links: mass, centre of mass lc, moment of inertia I about the centre of mass
+links = "rigid"          # physical links: mass, center of mass lc, moment of inertia I about the center of mass
 inverted = false
 pivot = "fixed"
 

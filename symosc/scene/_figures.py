@@ -12,7 +12,7 @@ def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: flo
     from ..periodic import modified_ince_strutt as build
 
     lo = min(-0.05, 2.0 * point[0]) if point is not None else -0.05
-    build(ratios[1:] or ratios).plot(ax, q_max=q_max, a_range=(lo, 1.2 * min(ratios)))
+    build(ratios[1:] or ratios).plot(ax=ax, q_max=q_max, a_range=(lo, 1.2 * min(ratios)))
     ax.axvline(0.0, color="0.5", lw=0.6)
     if point is not None:
         ax.plot([point[0]], [point[1]], "o", color="C3", label="excitation point")
@@ -23,7 +23,7 @@ def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: flo
 def ince_strutt(ax: Any, *, orders: int, q_max: float) -> Any:
     from ..periodic import ince_strutt_diagram
 
-    return ince_strutt_diagram(orders, q_max).plot(ax)
+    return ince_strutt_diagram(orders, q_max).plot(ax=ax)
 
 
 def resonance(ax: Any, *, nu: list, amplitudes: list, stable: list) -> Any:

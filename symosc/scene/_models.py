@@ -31,7 +31,7 @@ def _pendulum_dimension(name: str) -> str:
 
 
 class MechanicalModel:
-    """A Lagrangian system built on first use; linearisation, K(t) split and equations of motion on demand."""
+    """A Lagrangian system built on first use; linearization, K(t) split and equations of motion on demand."""
 
     category = "mechanical"
 
@@ -188,7 +188,7 @@ class LinearOnlyModel:
         return _body_dimension(name)
 
     def positive(self, name: str) -> bool:
-        """Products of inertia and coordinates of the centre of mass and of the springs may be negative."""
+        """Products of inertia and coordinates of the center of mass and of the springs may be negative."""
         return not (name in ("Ixy", "Ixz", "Iyz", "rx", "ry", "rz") or name[0] in "xz")
 
 

@@ -149,7 +149,7 @@ def linear_matrices(q: Question) -> QuestionResult:
                 f"K0 = {_num_matrix(K0)}",
             ]
             data["numeric"] = {"M": M.tolist(), "D": D.tolist(), "K0": K0.tolist()}
-    return QuestionResult("linear_matrices", "Linearised model M q'' + D q' + K q = f (LaTeX)", tuple(lines), data=data)
+    return QuestionResult("linear_matrices", "Linearized model M q'' + D q' + K q = f (LaTeX)", tuple(lines), data=data)
 
 
 def equations_of_motion(q: Question) -> QuestionResult:
@@ -289,7 +289,7 @@ def floquet(q: Question) -> QuestionResult:
     table = Table(
         ("p, Hz", "a, mm", "max |rho|", "verdict"),
         tuple(rows),
-        "Floquet multipliers of the linearised 2N-dimensional system",
+        "Floquet multipliers of the linearized 2N-dimensional system",
     )
     return QuestionResult(
         "floquet",

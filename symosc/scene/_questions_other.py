@@ -260,7 +260,7 @@ def identify(q: Question) -> QuestionResult:
     lines = [f"residual {est.residual:.3e}"]
     if q.opts.get("force") is not None:
         with q.log.step("inertia reconstruction (Algorithm 1)", "Belyakov (2005), ch. II §1"):
-            res = ident.algorithm1(
+            res = ident.inertia_from_release(
                 est.undamped_frequencies,
                 est.mode_shapes,
                 q.opts["force"],

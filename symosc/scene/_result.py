@@ -120,10 +120,14 @@ class QuestionResult:
     def __repr__(self) -> str:
         return f"QuestionResult({self.kind!r}, {self.title!r})"
 
-    def _repr_latex_(self) -> str | None:
-        """The LaTeX of the answer (equations of motion) in notebooks; ``None`` when it has none."""
+    def _repr_latex_(self) -> str:
+        """The LaTeX of the answer (equations of motion) in notebooks; a summary when it has none."""
         latex = self.data.get("latex")
-        return f"$${latex}$$" if isinstance(latex, str) else None
+        if isinstance(latex, str):
+            return f"$${latex}$$"
+        from .._printing import SymPyPrintable
+
+        return f"${SymPyPrintable._summary_latex(self)}$"
 
 
 @dataclass(frozen=True)
@@ -238,7 +242,7 @@ class SceneResult:
         """Write ``report.<fmt>``, ``results.json`` and the figures (PNG) into ``outdir``; returns the paths.
 
         Everything is written to a temporary folder first and moved in at the end: a failure leaves nothing
-        half-written.  Figures need matplotlib; without it the report says so and the rest is written.
+        half-written.  Figures need matplotlib; without it the scene report says so and the rest is written.
         """
         outdir = Path(outdir)
         outdir.mkdir(parents=True, exist_ok=True)

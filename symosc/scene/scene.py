@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -102,7 +102,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
             mq.natural_frequencies,
         ),
         QuestionSpec(
-            "linear_matrices", "M, D, K of the linearised model (LaTeX and numbers)", _LIN, {}, mq.linear_matrices
+            "linear_matrices", "M, D, K of the linearized model (LaTeX and numbers)", _LIN, {}, mq.linear_matrices
         ),
         QuestionSpec(
             "equations_of_motion", "nonlinear equations M(q) q'' = F (LaTeX)", _MECH, {}, mq.equations_of_motion
@@ -243,12 +243,16 @@ class Scene:
     path: str
     title: str
     source: str
-    model: Any
+    model: Any = field(repr=False)
     values: dict
     excitation: dict
     questions: list
-    log: DerivationLog
-    _ctx: Ctx
+    log: DerivationLog = field(repr=False)
+    _ctx: Ctx = field(repr=False)
+
+    def __reduce__(self) -> tuple:
+        """Pickled as its text and parameter values: the lazy model is rebuilt (derivations are redone on use)."""
+        return (_rebuild_scene, (self._ctx.text, self.path, dict(self.values)))
 
     def run(self) -> SceneResult:
         """Answer every question; returns a :class:`SceneResult` (report, tables, figures, data, log).
@@ -329,6 +333,12 @@ def load(path: str | os.PathLike) -> Scene:
             str(p), "", f"cannot read the scene file ({exc.strerror or exc})", fix="check the path"
         ) from None
     return loads(text, name=str(p))
+
+
+def _rebuild_scene(text: str, path: str, values: dict) -> Scene:
+    scene = loads(text, name=path)
+    scene.values = values
+    return scene
 
 
 def loads(text: str, *, name: str = "<string>", overrides: Mapping[str, Any] | None = None) -> Scene:

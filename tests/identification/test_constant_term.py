@@ -30,7 +30,7 @@ def test_default_call_on_offset_free_noisy_record(estimator):
     true_w = np.array([w for w, _, _ in MODES])
     for seed in range(12):
         est = estimator(_record(sigma=0.02, seed=seed), DT, 3)
-        assert est.n_modes == 3 and est.order == 7
+        assert est.n_modes == 3 and est.n_poles == 7
         # the 2 % noise gives frequency standard deviations of a few 1e-3 rad/s (Cramér–Rao, see test_pencil)
         np.testing.assert_allclose(est.frequencies, true_w, atol=0.02)
         np.testing.assert_allclose(est.damping, [d for _, d, _ in MODES], atol=0.02)

@@ -54,8 +54,8 @@ def test_era_noise_free_stand_is_exact():
     plus the equilibrium offset (gravity sag, report §4.1): frequencies and C' to ~1e-9."""
     y, w, cprime = _signals(0.02212, 1254)
     sag = np.array([-0.0497, -0.0497, -0.0497, -0.0497])
-    est = era(y + sag[:, None], 0.02212, rows=30)
-    assert est.order == 7  # 1 + 2*3 as in the dissertation
+    est = era(y + sag[:, None], 0.02212, hankel_size=30)
+    assert est.n_poles == 7  # 1 + 2*3 as in the dissertation
     np.testing.assert_allclose(est.frequencies, w, rtol=1e-10)
     np.testing.assert_allclose(est.damping, 0.0, atol=1e-8)
     np.testing.assert_allclose(est.mode_shapes, cprime, rtol=1e-8, atol=1e-12)
@@ -75,8 +75,8 @@ def test_era_one_percent_noise_stand():
     y, w, cprime = _signals(0.02212, 1254)
     rng = np.random.default_rng(7)
     noisy = y + 0.01 * 0.00067 * rng.standard_normal(y.shape) + 0.01
-    est = era(noisy, 0.02212, rows=40)
-    assert est.order == 7
+    est = era(noisy, 0.02212, hankel_size=40)
+    assert est.n_poles == 7
     np.testing.assert_allclose(est.frequencies, w, rtol=1e-4)
     np.testing.assert_allclose(est.mode_shapes, cprime, rtol=5e-3)
 
@@ -85,7 +85,7 @@ def test_era_damped_modes_and_undamped_frequency():
     """Proportional-like modal damping: |lambda| is the undamped frequency (Belyakov eq. 97, report §3.10)."""
     delta = np.array([0.05, 0.08, 0.2])
     y, w, _cprime = _signals(0.02212, 1254, damping=delta)
-    est = era(y, 0.02212, 3, constant=False, rows=30)
+    est = era(y, 0.02212, 3, constant=False, hankel_size=30)
     np.testing.assert_allclose(est.damping, delta, rtol=1e-8)
     np.testing.assert_allclose(est.undamped_frequencies, w, rtol=1e-10)
     np.testing.assert_allclose(est.damping_ratios, delta / w, rtol=1e-8)
@@ -124,7 +124,7 @@ def test_two_stage_recovers_second_order_structure():
     a static release, and q0 the static deflection."""
     c, k, w, _u, q0, cprime = _stand()
     y, _, _ = _signals(0.02212, 1254)
-    model = two_stage(y + 0.01, 0.02212, 3, rows=30)
+    model = two_stage(y + 0.01, 0.02212, 3, hankel_size=30)
     a_true = -np.linalg.solve(MASS, k)
     t = np.linalg.lstsq(c, model.C, rcond=None)[0]  # C_identified = C_true T
     np.testing.assert_allclose(c @ t, model.C, atol=1e-9 * np.abs(model.C).max())
@@ -144,7 +144,7 @@ def test_two_stage_with_initial_velocity():
     a = np.linalg.solve(u, q0)
     b = np.linalg.solve(u, v0) / w
     y = c @ u @ (a[:, None] * np.cos(np.outer(w, t)) + b[:, None] * np.sin(np.outer(w, t)))
-    model = two_stage(y, 0.02212, 3, constant=False, rows=30)
+    model = two_stage(y, 0.02212, 3, constant=False, hankel_size=30)
     tt = np.linalg.lstsq(c, model.C, rcond=None)[0]
     np.testing.assert_allclose(tt @ model.v0, v0, rtol=1e-6, atol=1e-9)
 
@@ -153,7 +153,7 @@ def test_two_stage_damped_uses_undamped_frequencies():
     """With modal damping the second stage works on |lambda| (Belyakov eq. 97): A ~ -M^-1 K exactly."""
     _c, _k, w, _u, _q0, _cprime = _stand()
     y, _, _ = _signals(0.02212, 1254, damping=np.array([0.05, 0.08, 0.2]))
-    model = two_stage(y, 0.02212, 3, constant=False, rows=30)
+    model = two_stage(y, 0.02212, 3, constant=False, hankel_size=30)
     np.testing.assert_allclose(model.frequencies, w, rtol=1e-9)
     np.testing.assert_allclose(np.sort(-model.eigenvalues.real), w**2, rtol=1e-9)
 
@@ -161,7 +161,7 @@ def test_two_stage_damped_uses_undamped_frequencies():
 def test_realize_order_selection_and_rows():
     """Order from the singular-value gap; explicit rows are honoured; python-control-like signature."""
     y, w, _ = _signals(0.05, 300)
-    a, c, _x0, _sv, n, rows = realize(y, None, rows=20, constant=False)
+    a, c, _x0, _sv, n, rows = realize(y, None, hankel_size=20, constant=False)
     assert n == 6 and rows == 20 and a.shape == (6, 6) and c.shape == (4, 6)
     z = np.sort(np.angle(np.linalg.eigvals(a)))[3:] / 0.05
     np.testing.assert_allclose(z, w, rtol=1e-10)
@@ -184,8 +184,8 @@ def test_era_bad_input():
     with pytest.raises(ParameterError, match="larger than"):
         era(y[:, :20], 0.05, 6)
     with pytest.raises(ParameterError, match="rows"):
-        era(y, 0.05, 3, constant=False, rows=1000)
+        era(y, 0.05, 3, constant=False, hankel_size=1000)
     with pytest.raises(ParameterError, match="dt"):
         era(y, 0.0)
     with pytest.raises(ParameterError, match="contradicts"):
-        era(y, 0.05, 3, order=5)
+        era(y, 0.05, 3, n_poles=5)

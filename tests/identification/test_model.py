@@ -27,8 +27,8 @@ def test_k6_symmetric_and_eq18():
     ) == sp.zeros(3, 3)
 
 
-def test_equal_springs_centred_block():
-    """Equal springs, CM at the rectangle centre: (y, theta_z, theta_x) block of K6 = k diag(4, Lx^2, Lz^2) (§2.4)."""
+def test_equal_springs_centered_block():
+    """Equal springs, CM at the rectangle center: (y, theta_z, theta_x) block of K6 = k diag(4, Lx^2, Lz^2) (§2.4)."""
     model = body_on_springs()
     k, c = sp.symbols("k c", positive=True)
     sub = {**{s: k for s in model.k}, **{s: c for s in model.c}, model.rx: model.Lx / 2, model.rz: model.Lz / 2}
@@ -57,18 +57,18 @@ def test_reduced_stiffness_is_selection_of_k6_when_ry_zero():
     assert (block - model.K).applyfunc(sp.expand) == sp.zeros(3, 3)
 
 
-def test_stiffness_centre():
-    """Centre of stiffness: sum R G = 0 at (Lx/2, 0, Lz/2) for equal springs; none for unequal c/k ratios."""
+def test_stiffness_center():
+    """Center of stiffness: sum R G = 0 at (Lx/2, 0, Lz/2) for equal springs; none for unequal c/k ratios."""
     model = body_on_springs()
     eq = {"k1": 3, "k2": 3, "k3": 3, "k4": 3, "c1": 1, "c2": 1, "c3": 1, "c4": 1}
-    centre = model.stiffness_centre(eq)
-    assert centre == {model.rx: model.Lx / 2, model.ry: 0, model.rz: model.Lz / 2}
-    coupling = model.coupling().subs({sp.Symbol(k, positive=True): v for k, v in eq.items()}).subs(centre)
+    center = model.stiffness_center(eq)
+    assert center == {model.rx: model.Lx / 2, model.ry: 0, model.rz: model.Lz / 2}
+    coupling = model.coupling().subs({sp.Symbol(k, positive=True): v for k, v in eq.items()}).subs(center)
     assert coupling.applyfunc(sp.simplify) == sp.zeros(3, 3)
-    with pytest.raises(ModelError, match="no centre of stiffness"):
-        model.stiffness_centre({"k1": 1, "k2": 2, "k3": 3, "k4": 4, "c1": 1, "c2": 1, "c3": 1, "c4": 1})
-    # vertical centre of stiffness decouples the 3-DOF stiffness for unequal springs
-    xs, zs = model.vertical_stiffness_centre()
+    with pytest.raises(ModelError, match="no center of stiffness"):
+        model.stiffness_center({"k1": 1, "k2": 2, "k3": 3, "k4": 4, "c1": 1, "c2": 1, "c3": 1, "c4": 1})
+    # vertical center of stiffness decouples the 3-DOF stiffness for unequal springs
+    xs, zs = model.vertical_stiffness_center()
     K = model.K.subs({model.rx: xs, model.rz: zs}).applyfunc(sp.simplify)
     assert K[0, 1] == 0 and K[0, 2] == 0
 
@@ -137,7 +137,7 @@ def test_offset_cases(ks, omega):
 
 
 def test_uncoupled_formulas_eq86():
-    """Equal springs, centred CM, no product: omega = 2 sqrt(k/m), Lx sqrt(k/Izz), Lz sqrt(k/Ixx) (eq. 86)."""
+    """Equal springs, centered CM, no product: omega = 2 sqrt(k/m), Lx sqrt(k/Izz), Lz sqrt(k/Ixx) (eq. 86)."""
     vals = {**TABLE12, "Ixz": 0.0}
     data = body_on_springs().modal(vals)
     k = 7.4e5

@@ -40,7 +40,7 @@ def test_noise_free_exact(method):
     np.testing.assert_allclose(est.amplitudes[0], A, rtol=1e-9)
     np.testing.assert_allclose(est.phases[0], PHI, atol=1e-9)
     assert est.offset[0] == pytest.approx(0.2, rel=1e-9)
-    assert est.details["pencil"] == N // 3
+    assert est.details["hankel_size"] == N // 3
 
 
 def test_high_order_and_near_repeated_modes():
@@ -69,9 +69,9 @@ def test_heavily_oversampled_record():
     dt = 2 * np.pi / (500 * w.max())
     t = np.arange(2000) * dt
     y = 0.1 + sum(np.exp(-0.05 * t) * np.cos(wk * t + k) for k, wk in enumerate(w))
-    np.testing.assert_allclose(era(y, dt, 3, rows=150).frequencies, w, rtol=1e-6)
+    np.testing.assert_allclose(era(y, dt, 3, hankel_size=150).frequencies, w, rtol=1e-6)
     for method in (matrix_pencil, esprit):
-        np.testing.assert_allclose(method(y, dt, 3, pencil=150).frequencies, w, rtol=1e-6)
+        np.testing.assert_allclose(method(y, dt, 3, hankel_size=150).frequencies, w, rtol=1e-6)
     with pytest.raises(IdentificationError, match="decimate"):
         prony(y, dt, 3, decimate=1)
     # decimate="auto" (the default) applies rule (45) from the periodogram's fastest mode
@@ -181,9 +181,9 @@ def test_monte_carlo_counts_failures():
 def test_pencil_bad_input():
     y = _clean()
     with pytest.raises(ParameterError, match="pencil parameter"):
-        matrix_pencil(y, DT, 3, pencil=1000)
+        matrix_pencil(y, DT, 3, hankel_size=1000)
     with pytest.raises(ParameterError, match="must exceed"):
-        esprit(y, DT, 3, pencil=4)
+        esprit(y, DT, 3, hankel_size=4)
     with pytest.raises(ParameterError, match="NaN"):
         esprit(np.append(y, np.nan), DT, 3)
     with pytest.raises(IdentificationError, match="Nyquist"):

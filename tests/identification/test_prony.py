@@ -45,16 +45,16 @@ def test_noise_free_three_modes_machine_precision():
     np.testing.assert_allclose(_wrap(est.phases - PHI - np.pi * (A < 0)), 0, atol=1e-9)
     np.testing.assert_allclose(est.offset, OFFSET, rtol=1e-9)
     np.testing.assert_allclose(est.frequencies_hz, W / (2 * np.pi), rtol=1e-11)
-    assert est.order == 7 and est.residual < 1e-11
+    assert est.n_poles == 7 and est.residual < 1e-11
     np.testing.assert_allclose(est.reconstruct(), _synth(dt, 100), atol=1e-10)
 
 
 def test_order_selected_from_singular_values():
     dt = 2 * np.pi / (5 * W.max())
     est = prony(_synth(dt, 120, channels=1), dt)
-    assert est.order == 7 and est.n_modes == 3
+    assert est.n_poles == 7 and est.n_modes == 3
     est = prony(_synth(dt, 120, channels=1, offset=False), dt)
-    assert est.order == 6 and est.n_modes == 3 and est.offset[0] == 0.0
+    assert est.n_poles == 6 and est.n_modes == 3 and est.offset[0] == 0.0
 
 
 def test_decimation_and_mpmath_rooting():
@@ -139,7 +139,7 @@ def test_prony_bad_input():
     with pytest.raises(ParameterError, match="n_modes"):
         prony(y, dt, 0)
     with pytest.raises(ParameterError, match="lone real"):
-        prony(y, dt, order=6)
+        prony(y, dt, n_poles=6)
     with pytest.raises(IdentificationError, match="support only"):
         prony(y, dt, 5)
     with pytest.raises(IdentificationError, match="identically zero"):

@@ -80,10 +80,10 @@ def test_sensitivity_of_package_algorithm1_matches_independent_closed_form():
     """Generic use on the package's reconstruction (takes (frequencies, C') arrays, returns a dataclass): its
     stage-3 moduli defeat the complex step, so central differences are used, and they agree with the complex-step
     Jacobian of the independent closed form above (report §3.8)."""
-    from symosc.identification import algorithm1
+    from symosc.identification import inertia_from_release
 
     def recon(w, c):
-        return algorithm1(w, c, [0.0, -2000.0, 0.0, 0.0], (4.0, 1.74), product_of_inertia="dissertation")
+        return inertia_from_release(w, c, [0.0, -2000.0, 0.0, 0.0], (4.0, 1.74), product_of_inertia="dissertation")
 
     with pytest.warns(RuntimeWarning, match="central differences"):
         res = sensitivity(recon, OMEGA, C_PRIME)
@@ -140,7 +140,7 @@ def test_float_casting_function_falls_back_to_central():
 
 
 def test_sensitivity_wrapper_against_uncoupled_closed_form():
-    """Equal springs, CM at the centre (report §2.4): m = 4k/w1^2, Izz = k Lx^2/w2^2, Ixx = k Lz^2/w3^2.
+    """Equal springs, CM at the center (report §2.4): m = 4k/w1^2, Izz = k Lx^2/w2^2, Ixx = k Lz^2/w3^2.
     Derivatives compared with the hand-differentiated closed form."""
     k, lx, lz = 740000.0, 4.0, 1.74
 
@@ -184,17 +184,17 @@ def test_error_vs_noise_end_to_end_linear_stand():
     test_era), noise as a % of 0.00067 m, ERA then Algorithm 1.  At 1 % noise Izz and Ixx are within 0.5 %
     (report: ~0.06-0.07 %), the Izz error grows with the noise, and the thesis's "<= 2 % error up to 6 % noise"
     holds (loose)."""
-    from symosc.identification import algorithm1, era, error_vs_noise
+    from symosc.identification import era, error_vs_noise, inertia_from_release
 
     from .test_era import _signals
 
     y, _, _ = _signals(0.02212, 1254)
 
     def pipe(sig, dt):
-        est = era(sig, dt, 3, constant=False, rows=30)
-        return algorithm1(est.frequencies, est.mode_shapes, [0.0, -2000.0, 0.0, 0.0], (4.0, 1.74))
+        est = era(sig, dt, 3, constant=False, hankel_size=30)
+        return inertia_from_release(est.frequencies, est.mode_shapes, [0.0, -2000.0, 0.0, 0.0], (4.0, 1.74))
 
-    truth = {"Izz": 44000.0, "Ixx": 3000.0, "m": 15000.0}
+    truth = {"Izz": 44000.0, "Ixx": 3000.0, "mass": 15000.0}
     ev = error_vs_noise(pipe, y, 0.02212, truth, [0.01, 0.06, 0.12], reference=0.00067, runs=4, seed=5)
     assert ev.failures.sum() == 0
     assert ev.mean[0, 0] < 5e-3 and ev.mean[0, 1] < 5e-3

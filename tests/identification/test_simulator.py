@@ -7,7 +7,7 @@ import sympy as sp
 from scipy.spatial.transform import Rotation
 
 from symosc.errors import ModelError, ParameterError
-from symosc.identification.reconstruction import algorithm1
+from symosc.identification.reconstruction import inertia_from_release
 from symosc.identification.simulator import krylov_rate_matrix, krylov_rotation, simulate_stand
 from symosc.models import body_on_springs
 
@@ -79,13 +79,13 @@ def test_end_to_end_one_percent_noise(record):
     """
     from symosc.identification import matrix_pencil
 
-    estimate = matrix_pencil(record.signals, record.dt, 3, constant=False, pencil=200)
+    estimate = matrix_pencil(record.signals, record.dt, 3, constant=False, hankel_size=200)
     estimates = {
         "matrix_pencil": (estimate.undamped_frequencies, estimate.mode_shapes),
         "least squares": fit_modes(record.signals, record.dt),
     }
     for name, (w, cp) in estimates.items():
-        est = algorithm1(w, cp, F2, (4, 1.74), product_of_inertia="dissertation")
+        est = inertia_from_release(w, cp, F2, (4, 1.74), product_of_inertia="dissertation")
         assert est.Izz == pytest.approx(44000, rel=5e-3), name
         assert est.Ixx == pytest.approx(3000, rel=5e-3), name
         assert est.mass == pytest.approx(15000, rel=5e-3), name
@@ -93,7 +93,7 @@ def test_end_to_end_one_percent_noise(record):
         assert est.Ixz == pytest.approx(400, rel=0.05), name
     # noise-free: the 6-DOF simulation and the 3-DOF model agree to within the model error (report §4.5)
     w, cp = fit_modes(record.clean, record.dt)
-    est = algorithm1(w, cp, F2, (4, 1.74), product_of_inertia="dissertation")
+    est = inertia_from_release(w, cp, F2, (4, 1.74), product_of_inertia="dissertation")
     assert (est.Izz, est.Ixx, est.mass) == pytest.approx((44000, 3000, 15000), rel=1e-4)
 
 
@@ -159,22 +159,22 @@ def test_damped_release_algorithm1():
     and so biases Algorithm 1 by several tenths of a percent here; the thesis's "no loss of accuracy" holds for
     the frequencies and for the scale-invariant Algorithms 2.1/2.2, not for the modulus in Algorithm 1.
     """
-    from symosc.identification import algorithm21, matrix_pencil
+    from symosc.identification import inertia_equal_springs, matrix_pencil
 
     model = body_on_springs(product_of_inertia="dissertation")
     rec = simulate_stand(model, VALS, force=F2, dt=4 * 0.002212, n_samples=1400, damping=1e4)
-    est = matrix_pencil(rec.clean, rec.dt, 3, constant=False, pencil=200)
+    est = matrix_pencil(rec.clean, rec.dt, 3, constant=False, hankel_size=200)
     lin = model.modal(VALS)
     np.testing.assert_allclose(est.undamped_frequencies, lin.omega, rtol=2e-5)
     assert est.damping[0] == pytest.approx(4e4 / (2 * 15000), rel=1e-3)  # vertical mode: sum d / 2m
     amps = 2 * est.complex_amplitudes
-    exact = algorithm1(est.undamped_frequencies, amps, F2, (4, 1.74), product_of_inertia="dissertation")
+    exact = inertia_from_release(est.undamped_frequencies, amps, F2, (4, 1.74), product_of_inertia="dissertation")
     assert (exact.Izz, exact.Ixx, exact.mass) == pytest.approx((44000, 3000, 15000), rel=1e-4)
-    biased = algorithm1(est.undamped_frequencies, amps, F2, (4, 1.74), product_of_inertia="dissertation",
+    biased = inertia_from_release(est.undamped_frequencies, amps, F2, (4, 1.74), product_of_inertia="dissertation",
                         complex_modes="modulus")  # fmt: skip
     assert biased.Ixx / 3000 - 1 < -0.01
     assert biased.mass / 15000 - 1 == pytest.approx(-(1 - np.sqrt(1 - (4e4 / 30000 / lin.omega[0]) ** 2)), rel=0.05)
-    e21 = algorithm21(est.undamped_frequencies, amps, 15000, (4, 1.74), product_of_inertia="dissertation")
+    e21 = inertia_equal_springs(est.undamped_frequencies, amps, 15000, (4, 1.74), product_of_inertia="dissertation")
     assert (e21.Izz, e21.Ixx) == pytest.approx((44000, 3000), rel=1e-4)
 
 

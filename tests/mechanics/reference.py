@@ -33,15 +33,15 @@ def sympy_pendulum(n: int, links: str, inverted: bool, pivot: str):
     for k in range(n):
         frame = N.orientnew(f"A{k + 1}", "Axis", [sign * -q[k] if inverted else q[k], N.z])
         arm = s["l"][k] if links == "point" else s["lc"][k]
-        centre = pos + arm * (sp.sin(q[k]) * N.x + sign * sp.cos(q[k]) * N.y)
+        center = pos + arm * (sp.sin(q[k]) * N.x + sign * sp.cos(q[k]) * N.y)
         P = Point(f"P{k + 1}")
-        P.set_pos(O, centre - y0 * N.y)
-        P.set_vel(N, centre.dt(N))
+        P.set_pos(O, center - y0 * N.y)
+        P.set_vel(N, center.dt(N))
         if links == "point":
             body = Particle(f"B{k + 1}", P, s["m"][k])
         else:
             body = RigidBody(f"B{k + 1}", P, frame, s["m"][k], (inertia(frame, 0, 0, s["I"][k]), P))
-        body.potential_energy = s["m"][k] * s["g"] * centre.dot(N.y)
+        body.potential_energy = s["m"][k] * s["g"] * center.dot(N.y)
         bodies.append(body)
         pos = pos + s["l"][k] * (sp.sin(q[k]) * N.x + sign * sp.cos(q[k]) * N.y)
     L = Lagrangian(N, *bodies)

@@ -146,7 +146,7 @@ def test_gyroscopic_rotating_frame():
     assert sp.simplify(lin.K - (k - m * W**2) * sp.eye(2)) == sp.zeros(2, 2)
 
 
-def test_linearisation_equals_jacobian_of_forcing():
+def test_linearization_equals_jacobian_of_forcing():
     """The energy route to (D, K) agrees with -dF/dq', -dF/dq of the full nonlinear forcing."""
     system = n_link_pendulum(3, links="rigid", inverted=True, pivot="vertical")
     lin = system.linearize()
@@ -163,7 +163,7 @@ def test_linearisation_equals_jacobian_of_forcing():
 
 
 def test_linearize_about_nonzero_point():
-    """Pendulum linearised about the upright position phi = pi has K = -m g l."""
+    """Pendulum linearized about the upright position phi = pi has K = -m g l."""
     s = n_link_pendulum(1)
     lin = s.linearize({"phi1": sp.pi})
     m, l, g = sp.symbols("m1 l1 g", positive=True)

@@ -1,4 +1,4 @@
-"""Linearisation and modal analysis against closed forms."""
+"""Linearization and modal analysis against closed forms."""
 
 from __future__ import annotations
 

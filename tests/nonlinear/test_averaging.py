@@ -124,7 +124,7 @@ def test_describing_function_of_odd_powers(k, c):
 
 
 def test_describing_function_even_power_vanishes():
-    """Even nonlinearities have no first harmonic (they shift the centre instead, §5.29)."""
+    """Even nonlinearities have no first harmonic (they shift the center instead, §5.29)."""
     assert describing_function(x**2 + x**4) == 0
 
 
@@ -254,7 +254,7 @@ def test_softening_duffing_example_book():
     # numeric classification: x* = a cos(theta)
     states = avg.steady_states({})
     got = sorted((s.amplitude * math.cos(s.theta), s.kind) for s in states)
-    assert [k for _, k in got] == ["centre", "centre", "saddle"]
+    assert [k for _, k in got] == ["center", "center", "saddle"]
     np.testing.assert_allclose([g for g, _ in got], [float(x1), float(x2), 1.0], atol=1e-10)
 
 
@@ -355,13 +355,13 @@ def test_ndof_resonance_refused():
 
 # ------------------------------------------------------------------------------------------ non-polynomial forces
 def test_exponential_shock_absorber_book():
-    """Seed 004, §5.29 example (3) (5.355)–(5.357): f = k^2 (e^q - 1): centre q* = -ln I0(a),
+    """Seed 004, §5.29 example (3) (5.355)–(5.357): f = k^2 (e^q - 1): center q* = -ln I0(a),
     omega = k sqrt(2 I1(a)/(a I0(a))) = k (1 - a^2/16 + 13 a^4/1536 - ...) (Jacobi–Anger averaging)."""
     import mpmath
 
     k = sp.Symbol("k", positive=True)
     avg = averaged_equations(k**2 * (sp.exp(x) - 1), center=True)
-    assert avg.centre == -sp.log(sp.besseli(0, a))
+    assert avg.center == -sp.log(sp.besseli(0, a))
     assert sp.simplify(avg.frequency_squared - 2 * k**2 * sp.besseli(1, a) / (a * sp.besseli(0, a))) == 0
     assert sp.simplify(avg.Phi) == 0
     for av in (0.05, 0.2):
@@ -401,14 +401,14 @@ def test_damped_pendulum_by_averaging_book():
     assert 1.8 < e2 / e1 < 3.2  # the averaging error grows like a0^2 (neglected amplitude-dependent terms)
 
 
-def test_quadratic_spring_centre_shift():
+def test_quadratic_spring_center_shift():
     """Asymmetric polynomial spring f = q + c q^2: <f(q* + a cos)> = 0 gives q* = (sqrt(1 - 2 c^2 a^2) - 1)/(2c);
     checked against the mean position of the integrated motion (c = 0.1, a = 0.5)."""
     c = sp.Symbol("c", positive=True)
     avg = averaged_equations(x + c * x**2, center=True)
-    assert sp.simplify(avg.centre - (sp.sqrt(1 - 2 * c**2 * a**2) - 1) / (2 * c)) == 0
+    assert sp.simplify(avg.center - (sp.sqrt(1 - 2 * c**2 * a**2) - 1) / (2 * c)) == 0
     cv, av = 0.1, 0.5
-    qs = float(avg.centre.subs({c: cv, a: av}))
+    qs = float(avg.center.subs({c: cv, a: av}))
     ev = lambda _t, y: y[1]  # noqa: E731
     sol = solve_ivp(
         lambda _t, y: [y[1], -y[0] - cv * y[0] ** 2],

@@ -1,7 +1,7 @@
 """High-frequency forcing: Bulgakov's appendix (1940) and Kapitza's pendulum (seed-bulgakov-part3b.md §2.9, T19).
 
 The averaged results are checked against Floquet theory computed here directly with SciPy (monodromy of the
-linearised Mathieu-type equation) and against direct integration of the full equations.
+linearized Mathieu-type equation) and against direct integration of the full equations.
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ def _monodromy(delta, eps_, period):
 
 @pytest.mark.parametrize("ratio, stable", [(0.8, False), (0.9, False), (1.12, True), (1.5, True), (3.0, True)])
 def test_kapitza_threshold_vs_floquet(ratio, stable):
-    """Linearised about theta = pi: phi'' + (-g/l + (a p^2/l) cos p t) phi = 0.  With a/l = 0.01 the Floquet
+    """Linearized about theta = pi: phi'' + (-g/l + (a p^2/l) cos p t) phi = 0.  With a/l = 0.01 the Floquet
     multipliers are on the unit circle exactly when a^2 p^2 > 2 g l (points >= 10 % from the threshold)."""
     gv, lv, av = 9.81, 1.0, 0.01
     pv = math.sqrt(ratio * 2 * gv * lv) / av
@@ -197,7 +197,7 @@ def _floquet_stable(M, K0, K1, p):
 
 def test_two_link_inverted_pendulum_vs_floquet():
     """Double inverted pendulum on a vibrating pivot: the averaged stiffness K0 + K1 M^-1 K1/(2 p^2) is positive
-    definite exactly where the Floquet multipliers of the linearised system stay on the unit circle (a/l = 0.01,
+    definite exactly where the Floquet multipliers of the linearized system stay on the unit circle (a/l = 0.01,
     p at 0.85 and 1.2 times the averaged threshold)."""
     from symosc.models import n_link_pendulum
     from symosc.nonlinear.high_frequency import vibrational_stiffness
@@ -227,7 +227,7 @@ def test_two_link_inverted_pendulum_vs_floquet():
 
 @pytest.mark.parametrize("ratio, stable", [(0.9, False), (1.12, True)])
 def test_kapitza_threshold_vs_symosc_periodic_floquet(kapitza, ratio, stable):
-    """Cross-check with the periodic-systems package: symosc.periodic.floquet.monodromy of the linearised equation
+    """Cross-check with the periodic-systems package: symosc.periodic.floquet.monodromy of the linearized equation
     about theta = pi agrees with the sign of V_eff''(pi) (10 % on either side of a^2 p^2 = 2 g l)."""
     from symosc.periodic.floquet import monodromy
 

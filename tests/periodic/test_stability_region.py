@@ -81,8 +81,8 @@ def test_classic_diagram_classification_against_direct_integration():
 
 
 def test_classic_diagram_curves_and_ordering():
-    d = ince_strutt_diagram(orders=3, q_max=8.0, num=41)
-    assert d.orders == 3
+    d = ince_strutt_diagram(n_max=3, q_max=8.0, num=41)
+    assert d.n_max == 3
     q = d.q[1:]
     chain = [d.a_curves[0], d.b_curves[1], d.a_curves[1], d.b_curves[2], d.a_curves[2], d.b_curves[3]]
     for lo, hi in itertools.pairwise(chain):
@@ -299,8 +299,8 @@ def test_plots_and_reprs():
     assert "modified-ince-strutt" in repr(reg) and "a_0" in reg._repr_latex_()
     reg.plot()
     reg.plot(coords="dimensional", num=20)
-    modified_ince_strutt(0.7).plot(orders=3, q_max=2.0, num=40)
-    ince_strutt_diagram(orders=2, q_max=3.0, num=21).plot()
+    modified_ince_strutt(0.7).plot(n_max=3, q_max=2.0, num=40)
+    ince_strutt_diagram(n_max=2, q_max=3.0, num=21).plot()
     assert "0.7" in repr(modified_ince_strutt(0.7))
     plt.close("all")
 

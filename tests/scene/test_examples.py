@@ -170,7 +170,7 @@ def check_belyakov_identification():
     """The record was simulated from the dissertation's body: Algorithm 1 recovers it."""
     _, res = _run("belyakov_identification")
     est = res["identify"].data["inertia"]
-    true = dict(m=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
+    true = dict(mass=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400)
     for key, val in true.items():
         assert est[key] == pytest.approx(val, rel=5e-3 if key == "Ixz" else 5e-4), key
 

@@ -1,4 +1,4 @@
-"""Harmonic linearisation of multi-DOF systems with one nonlinearity; the servo of Bulgakov §12.9–12.10.
+"""Harmonic linearization of multi-DOF systems with one nonlinearity; the servo of Bulgakov §12.9–12.10.
 
 Sources: seed 004_e76fcda81caa05d8.txt §12.7 (12.66–12.80), §12.9 (12.89–12.124), §12.10 (Table 13); report
 seed-bulgakov-part3b.md §2.7 and tests T14–T16.  References are the book's closed forms (checked symbolically) and
@@ -14,8 +14,8 @@ from scipy.integrate import solve_ivp
 
 from symosc.errors import ModelError, ParameterError
 from symosc.nonlinear import (
-    harmonic_linearisation,
-    linearisation_boundary,
+    harmonic_linearization,
+    linearization_boundary,
     neimark_curve,
     self_oscillations,
     servo_characteristic,
@@ -36,7 +36,7 @@ def test_servo_boundary_without_servomotor_inertia():
     """T15, §12.9 (12.100), (12.103), (12.109): z* = T(U - y)/(x y), omega^2 = (U - y)/(U x), and
     Im[F22(i w) Delta1(-i w)] = T w (U - y) with F22 = x D^2 + y D + 1 and Delta1 = Delta/(D^2 + w^2)."""
     delta = servo_characteristic(T, U, 0, x, y, z)
-    (b,) = linearisation_boundary(delta, z)
+    (b,) = linearization_boundary(delta, z)
     assert sp.simplify(b.h - T * (U - y) / (x * y)) == 0
     assert sp.simplify(b.omega2 - (U - y) / (U * x)) == 0
     d_star = sp.factor(delta.subs(z, b.h))
@@ -53,7 +53,7 @@ def test_servo_boundary_with_servomotor_inertia():
     """T15, §12.9 V != 0 (12.117), (12.119): z* = T(U+V)(U+V-y)/(y[(U+V)x - UVy]),
     omega^2 = (U+V-y)/((U+V)x - UVy); and the Hurwitz determinant (12.116) vanishes there."""
     delta = servo_characteristic(T, U, V, x, y, z)
-    (b,) = linearisation_boundary(delta, z)
+    (b,) = linearization_boundary(delta, z)
     zs = T * (U + V) * (U + V - y) / (y * ((U + V) * x - U * V * y))
     assert sp.simplify(b.h - zs) == 0
     assert sp.simplify(b.omega2 - (U + V - y) / ((U + V) * x - U * V * y)) == 0
@@ -66,7 +66,7 @@ def test_numeric_boundary_is_a_nyquist_crossing():
     h = sp.Symbol("h")
     delta0 = sp.expand((D + 1) * (D + 2) * (D + 3))
     delta = delta0 + h
-    (b,) = linearisation_boundary(delta, h)
+    (b,) = linearization_boundary(delta, h)
     assert abs(b.h - 60) < 1e-9 and abs(b.omega2 - 11) < 1e-12  # classical 1/((s+1)(s+2)(s+3)) margin
     K = complex(1 / delta0.subs(D, 1j * np.sqrt(b.omega2)))
     assert abs(K.imag) < 1e-12 and abs(-1 / K.real - b.h) < 1e-9
@@ -74,10 +74,10 @@ def test_numeric_boundary_is_a_nyquist_crossing():
 
 def test_describing_functions_against_analytic_forms():
     """T14 and report item 17: ideal relay 4/(pi A); cubic 3A^2/4; relay with linear part."""
-    assert sp.simplify(harmonic_linearisation(sp.sign(s), s, A) - 4 / (sp.pi * A)) == 0
-    assert harmonic_linearisation(s**3, s, A) == R(3, 4) * A**2
+    assert sp.simplify(harmonic_linearization(sp.sign(s), s, A) - 4 / (sp.pi * A)) == 0
+    assert harmonic_linearization(s**3, s, A) == R(3, 4) * A**2
     c = sp.Symbol("c", positive=True)
-    assert sp.simplify(harmonic_linearisation(c * s + 2 * sp.sign(s), s, A) - (c + 8 / (sp.pi * A))) == 0
+    assert sp.simplify(harmonic_linearization(c * s + 2 * sp.sign(s), s, A) - (c + 8 / (sp.pi * A))) == 0
 
 
 def _integrate(params, g, y0, tend):
@@ -158,7 +158,7 @@ def test_servo_region_3_large_stable_cycle_against_integration():
 
 
 def test_servo_with_inertia_equations_consistent_with_characteristic():
-    """The first-order form of (12.89) with V > 0, linearised (g = z sigma), has the characteristic polynomial
+    """The first-order form of (12.89) with V > 0, linearized (g = z sigma), has the characteristic polynomial
     (12.94)-(12.95): its Jacobian's eigenvalues are the roots of servo_characteristic."""
     zz = 0.7
     rhs, state, _ = servo_equations(2.0, 1.5, 0.3, 1.2, 0.4, 0.25, zz * s, s)
@@ -228,9 +228,9 @@ def test_two_nonlinearities_against_closed_form_and_integration():
 def test_bad_input():
     h = sp.Symbol("h")
     with pytest.raises(ModelError, match="linear in h"):
-        linearisation_boundary(D**2 + h**2 * D + 1, h)
+        linearization_boundary(D**2 + h**2 * D + 1, h)
     with pytest.raises(ModelError, match="not odd"):
-        harmonic_linearisation(s**2, s, A)
+        harmonic_linearization(s**2, s, A)
     with pytest.raises(ModelError, match="degree <= 1"):
         neimark_curve(D**2 + h**2, h, sp.Symbol("h2"), [1.0])
     with pytest.raises(ParameterError, match="T > 0"):

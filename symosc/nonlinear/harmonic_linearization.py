@@ -1,24 +1,23 @@
-"""Harmonic linearisation of multi-DOF systems with one nonlinear element (Bulgakov §12.7, §12.9–12.10).
+"""Harmonic linearization of multi-DOF systems with one nonlinear element (Bulgakov §12.7, §12.9–12.10).
 
-Reconstructed from the research report seed-bulgakov-part3b.md §2.7 / tests T15–T16 and the seed text
-(004_e76fcda81caa05d8.txt, eqs. 12.66–12.80, 12.89–12.124):
+After Bulgakov (1954), eqs. (12.66)–(12.80), (12.89)–(12.124):
 
 * §12.7: the nonlinear term ``g(y_l)`` of the m-th equation is replaced by ``h y_l`` (coefficient of harmonic
-  linearisation ``h``).  The characteristic determinant is then linear in ``h``, ``Delta(D) = Delta_0(D) + h F(D)``
+  linearization ``h``).  The characteristic determinant is then linear in ``h``, ``Delta(D) = Delta_0(D) + h F(D)``
   (12.71).  A generating periodic solution exists where ``Delta(i w) = 0`` for real ``h`` and ``w > 0`` (the real-axis
   crossing of the Nyquist plot of ``K = F/Delta_0``, ``h = -1/K(i w)``, or the penultimate Hurwitz determinant =
   0), and its amplitude ``A`` solves ``h A = J(A)`` with ``J(A) = (1/pi) Integral(g(A cos u) cos u, (u, -pi, pi))``
   (12.78, 12.80); the first frequency correction ``b`` vanishes (12.79).
 * §12.10 (stability of the cycles): the cycle is orbitally stable when an increase of amplitude moves the
-  linearised system into its stable side, ``Re(d lambda/dh) * dh/dA < 0`` at the crossing (``lambda`` the critical
+  linearized system into its stable side, ``Re(d lambda/dh) * dh/dA < 0`` at the crossing (``lambda`` the critical
   root, ``h(A) = J(A)/A``), and the other roots of ``Delta`` have negative real parts.  For the servo this is the
-  book's rule "stable iff ``J'(C*) > z`` for ``x > 0``, the reverse for ``x < 0``" (T16).
+  book's rule "stable iff ``J'(C*) > z`` for ``x > 0``, the reverse for ``x < 0``".
 * §12.9 servo (12.89): ``T D(UD+1) phi = v``, ``rho = -(L^2 D^2 + M D + 1) phi``, ``sigma = rho - n v``,
   ``D(VD+1) v = g(sigma)``; eliminating ``rho, v``:
   ``T D^2 (UD+1)(VD+1) phi = g(sigma)``, ``sigma = -(x D^2 + y D + 1) phi`` with ``x = L^2 + T U n``,
   ``y = M + T n`` (12.93).  With ``g(sigma) -> z sigma`` the determinant is
-  ``TUV D^4 + T(U+V) D^3 + (x z + T) D^2 + y z D + z`` (12.94–12.95), so ``z`` is the linearisation coefficient
-  (the report writes ``z = T/W``; from (12.89) with ``g = sigma/W - psi`` it is ``z = 1/W``).
+  ``TUV D^4 + T(U+V) D^3 + (x z + T) D^2 + y z D + z`` (12.94–12.95), so ``z`` is the linearization coefficient
+  (from (12.89) with ``g = sigma/W - psi`` it is ``z = 1/W``; ``z = T/W`` would be a misreading of the print).
 
 * §12.8 two nonlinearities: ``Delta`` is bilinear in ``h1, h2``; :func:`neimark_curve` gives the curve C1
   ``(h1(w), h2(w))`` (two branches) by the book's device (``h = h1 h2`` as a third unknown, then a quadratic), and
@@ -39,17 +38,20 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._deprecation import module_getattr as _module_getattr
+from .._plotting import plot_method
+from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
 from .averaging import describing_function
 
 __all__ = [
     "HarmonicCycle",
-    "HarmonicLinearisation",
-    "LinearisationBoundary",
+    "HarmonicLinearization",
+    "LinearizationBoundary",
     "TwoNonlinearityCycle",
-    "harmonic_linearisation",
-    "linearisation_boundary",
+    "harmonic_linearization",
+    "linearization_boundary",
     "neimark_curve",
     "self_oscillations",
     "servo_characteristic",
@@ -62,17 +64,23 @@ D_ = sp.Symbol("D")
 W2 = sp.Symbol("omega2", positive=True)
 
 
-def harmonic_linearisation(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None = None) -> sp.Expr:
-    """Coefficient of harmonic linearisation ``h(A) = J(A)/A`` of an odd nonlinearity ``g(sigma)`` (12.78, 12.80).
+def harmonic_linearization(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None = None) -> sp.Expr:
+    """Coefficient of harmonic linearization ``h(A) = J(A)/A`` of an odd nonlinearity ``g(sigma)`` (12.78, 12.80).
+
+    See Also
+    --------
+    describing_function
+    self_oscillations
+    linearization_boundary
 
     Examples
     --------
     >>> import sympy as sp
     >>> s = sp.Symbol("sigma")
     >>> A = sp.Symbol("A", positive=True)
-    >>> harmonic_linearisation(sp.sign(s), s, A)  # ideal relay: 4/(pi A)
+    >>> harmonic_linearization(sp.sign(s), s, A)  # ideal relay: 4/(pi A)
     4/(pi*A)
-    >>> harmonic_linearisation(4 * s**3 - s**5, s, A)
+    >>> harmonic_linearization(4 * s**3 - s**5, s, A)
     -5*A**4/8 + 3*A**2
     """
     A = amplitude if amplitude is not None else sp.Symbol("A", positive=True)
@@ -84,8 +92,8 @@ def harmonic_linearisation(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None
 
 
 @dataclass(frozen=True)
-class LinearisationBoundary:
-    """A value ``h`` of the linearisation coefficient at which ``Delta(D)`` has the roots ``±i omega`` (§12.7)."""
+class LinearizationBoundary(SymPyPrintable):
+    """A value ``h`` of the linearization coefficient at which ``Delta(D)`` has the roots ``±i omega`` (§12.7)."""
 
     h: Any
     omega2: Any
@@ -95,10 +103,10 @@ class LinearisationBoundary:
         return sp.sqrt(self.omega2) if isinstance(self.omega2, sp.Basic) else float(np.sqrt(self.omega2))
 
     def __repr__(self) -> str:
-        return f"LinearisationBoundary(h = {self.h}, omega**2 = {self.omega2})"
+        return f"LinearizationBoundary(h = {self.h}, omega**2 = {self.omega2})"
 
 
-def linearisation_boundary(delta: Any, h: sp.Symbol, D: sp.Symbol = D_) -> tuple[LinearisationBoundary, ...]:
+def linearization_boundary(delta: Any, h: sp.Symbol, D: sp.Symbol = D_) -> tuple[LinearizationBoundary, ...]:
     """Solve ``Delta(i w; h) = 0`` for real ``h`` and ``w**2`` when ``Delta`` is linear in ``h`` (12.70–12.71).
 
     Writing ``Delta(D) = E(D**2) + D O(D**2)``, both ``E(-w**2) = 0`` and ``O(-w**2) = 0`` are linear in ``h``;
@@ -111,7 +119,7 @@ def linearisation_boundary(delta: Any, h: sp.Symbol, D: sp.Symbol = D_) -> tuple
 
     >>> import sympy as sp
     >>> T, U, x, y, z = sp.symbols("T U x y z", positive=True)
-    >>> (b,) = linearisation_boundary(servo_characteristic(T, U, 0, x, y, z), z)
+    >>> (b,) = linearization_boundary(servo_characteristic(T, U, 0, x, y, z), z)
     >>> sp.simplify(b.h - T * (U - y) / (x * y)), sp.simplify(b.omega2 - (U - y) / (U * x))
     (0, 0)
     """
@@ -143,9 +151,9 @@ def linearisation_boundary(delta: Any, h: sp.Symbol, D: sp.Symbol = D_) -> tuple
         if numeric:
             if abs(hv.imag) > 1e-9 * max(1.0, abs(hv)):
                 continue
-            out.append(LinearisationBoundary(float(hv.real), float(w2)))
+            out.append(LinearizationBoundary(float(hv.real), float(w2)))
         else:
-            out.append(LinearisationBoundary(hv, sp.factor(w2)))
+            out.append(LinearizationBoundary(hv, sp.factor(w2)))
     return tuple(out)
 
 
@@ -158,7 +166,7 @@ def _real_positive_roots(poly: sp.Expr) -> list[float]:
 
 
 @dataclass(frozen=True)
-class HarmonicCycle:
+class HarmonicCycle(SymPyPrintable):
     """A generating periodic motion: ``sigma ≈ amplitude * cos(omega t)`` at the nonlinear element's input."""
 
     amplitude: float
@@ -175,7 +183,7 @@ class HarmonicCycle:
 
 
 @dataclass(frozen=True)
-class HarmonicLinearisation:
+class HarmonicLinearization(SymPyPrintable):
     """All generating cycles of ``Delta_0(D) + h F(D)`` with ``h = J(A)/A``, and the pieces used to find them."""
 
     delta: sp.Expr
@@ -187,12 +195,13 @@ class HarmonicLinearisation:
 
     def __repr__(self) -> str:
         cyc = "\n  ".join(repr(c) for c in self.cycles) or "(none)"
-        return f"HarmonicLinearisation(h(A) = {self.gain}, boundaries = {self.boundaries},\n  {cyc})"
+        return f"HarmonicLinearization(h(A) = {self.gain}, boundaries = {self.boundaries},\n  {cyc})"
 
     def _repr_latex_(self) -> str:
         return f"$h(A) = {sp.latex(self.gain)},\\quad \\Delta(D) = {sp.latex(self.delta)}$"
 
-    def plot(self, ax: Any = None, amax: float | None = None) -> Any:
+    @plot_method
+    def plot(self, *, ax: Any = None, amax: float | None = None) -> Any:
         """``h(A)`` with the boundary values ``h*`` and the cycles marked."""
         import matplotlib.pyplot as plt
 
@@ -221,7 +230,7 @@ def self_oscillations(
     D: sp.Symbol = D_,
     amplitude_max: float = 100.0,
     samples: int = 2000,
-) -> HarmonicLinearisation:
+) -> HarmonicLinearization:
     """Generating cycles of a linear system closed by one odd nonlinearity (§12.7, stability §12.10).
 
     Parameters
@@ -229,7 +238,7 @@ def self_oscillations(
     delta : Expr
         Characteristic determinant with ``g(sigma)`` replaced by ``h*sigma``, numeric apart from ``h`` and ``D``.
     h, sigma : Symbol
-        Linearisation coefficient and the nonlinear element's input.
+        Linearization coefficient and the nonlinear element's input.
     g : Expr
         The odd nonlinearity ``g(sigma)`` (polynomial, ``sign``, ``Abs``).
     amplitude_max, samples : float, int
@@ -245,8 +254,8 @@ def self_oscillations(
     [(0.6003267398, 0.5, True), (2.1070376849, 0.5, False)]
     """
     A = sp.Symbol("A", positive=True)
-    gain = harmonic_linearisation(g, sigma, A)
-    bounds = linearisation_boundary(delta, h, D)
+    gain = harmonic_linearization(g, sigma, A)
+    bounds = linearization_boundary(delta, h, D)
     hf = _compile(gain, [A], check=False)
     dhf = _compile(sp.diff(gain, A), [A], check=False)
     grid = np.geomspace(amplitude_max * 1e-6, amplitude_max, samples)
@@ -270,7 +279,7 @@ def self_oscillations(
             slope = float(dhf.raw(Ac))
             stable = bool(others_ok and dlam.real * slope < 0)
             cycles.append(HarmonicCycle(float(Ac), w, hs, slope, dlam, others_ok, stable))
-    return HarmonicLinearisation(
+    return HarmonicLinearization(
         delta=sp.sympify(delta),
         h_symbol=h,
         gain=gain,
@@ -378,7 +387,7 @@ def neimark_curve(delta: Any, h1: sp.Symbol, h2: sp.Symbol, omega: Any, D: sp.Sy
 
 
 @dataclass(frozen=True)
-class TwoNonlinearityCycle:
+class TwoNonlinearityCycle(SymPyPrintable):
     """Generating cycle with two nonlinear elements: input amplitudes ``A1``, ``A2 = k(w) A1``, frequency ``w``."""
 
     amplitude1: float
@@ -426,8 +435,8 @@ def two_nonlinearity_cycles(
 
     A = sp.Symbol("A", positive=True)
     W = sp.Symbol("w", positive=True)
-    G1 = harmonic_linearisation(g1, sigma1, A)
-    G2 = harmonic_linearisation(g2, sigma2, A)
+    G1 = harmonic_linearization(g1, sigma1, A)
+    G2 = harmonic_linearization(g2, sigma2, A)
     kw = sp.Abs(sp.sympify(ratio).subs(D, sp.I * W))
     val = sp.expand(sp.sympify(delta).subs({h1: G1, h2: G2.subs(A, kw * A)}).subs(D, sp.I * W))
     fn = _compile([sp.re(val), sp.im(val)], [W, A], check=False)
@@ -448,3 +457,12 @@ def two_nonlinearity_cycles(
             a2 = float(kf.raw(wv)) * av
             found.append(TwoNonlinearityCycle(av, a2, wv, float(h1f.raw(av)), float(h2f.raw(a2))))
     return tuple(sorted(found, key=lambda c: (c.omega, c.amplitude1)))
+
+
+_DEPRECATED_NAMES = {
+    "harmonic_linearisation": "harmonic_linearization",
+    "HarmonicLinearisation": "HarmonicLinearization",
+    "LinearisationBoundary": "LinearizationBoundary",
+    "linearisation_boundary": "linearization_boundary",
+}
+__getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())

@@ -1,0 +1,165 @@
+"""Save and load derived models and results: a pickle plus a readable JSON summary.
+
+:func:`save` writes ``<name>.pkl`` (the object, reloadable with :func:`load`) and ``<name>.json``: the class, the
+symosc version, the parameters and the equations or matrices as ``sympy.srepr`` strings, so the derivation can be
+inspected (or rebuilt with ``sympy.sympify``) without unpickling anything.  Load pickles only from sources you
+trust (a pickle can run code); :func:`load_summary` reads the JSON side, which is always safe.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import pickle
+from pathlib import Path
+from typing import Any
+
+import sympy as sp
+
+from .errors import ParameterError
+
+__all__ = ["load", "load_summary", "save", "summary"]
+
+_SUMMARY_ATTRIBUTES = (
+    "coordinates",
+    "parameters",
+    "mass_matrix",
+    "forcing",
+    "kinetic_energy",
+    "potential_energy",
+    "dissipation",
+    "M",
+    "D",
+    "K",
+    "expr",
+    "image",
+    "original",
+)
+
+
+def _paths(path: str | Path) -> tuple[Path, Path]:
+    p = Path(path)
+    if p.suffix in (".pkl", ".json"):
+        p = p.with_suffix("")
+    return p.with_name(p.name + ".pkl"), p.with_name(p.name + ".json")
+
+
+def _srepr_or_none(value: Any) -> Any:
+    if isinstance(value, sp.Basic | sp.MatrixBase):
+        return sp.srepr(value)
+    if isinstance(value, tuple | list) and value and all(isinstance(v, sp.Basic) for v in value):
+        return [sp.srepr(v) for v in value]
+    return None
+
+
+def summary(obj: Any) -> dict[str, Any]:
+    """The JSON-ready summary :func:`save` writes: class, version and the symbolic content in ``srepr``.
+
+    Examples
+    --------
+    >>> from symosc.models import n_link_pendulum
+    >>> s = summary(n_link_pendulum(1))
+    >>> s["class"], s["parameters"]
+    ('symosc.mechanics.lagrange.LagrangianSystem', ['g', 'l1', 'm1'])
+    >>> sp.sympify(s["symbolic"]["mass_matrix"])
+    Matrix([[l1**2*m1*sin(phi1)**2 + l1**2*m1*cos(phi1)**2]])
+    """
+    from . import __version__
+
+    symbolic: dict[str, Any] = {}
+    names = list(_SUMMARY_ATTRIBUTES)
+    if dataclasses.is_dataclass(obj):
+        names += [f.name for f in dataclasses.fields(obj) if not f.name.startswith("_")]
+    for name in dict.fromkeys(names):
+        try:
+            value = getattr(obj, name)
+        except Exception:
+            continue
+        text = _srepr_or_none(value)
+        if text is not None:
+            symbolic[name] = text
+    params = getattr(obj, "parameters", None)
+    return {
+        "class": f"{type(obj).__module__}.{type(obj).__qualname__}",
+        "symosc_version": __version__,
+        "repr": repr(obj),
+        "parameters": [str(s) for s in params] if isinstance(params, tuple | list) else None,
+        "symbolic": symbolic,
+    }
+
+
+def save(obj: Any, path: str | Path) -> tuple[Path, Path]:
+    """Write ``obj`` to ``<path>.pkl`` and its summary to ``<path>.json``; return both paths.
+
+    Parameters
+    ----------
+    obj : model or result
+        Any picklable symosc object (every public result and model is).
+    path : str or Path
+        File name without extension (a ``.pkl``/``.json`` suffix is replaced).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from symosc.models import n_link_pendulum
+    >>> system = n_link_pendulum(2)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     pkl, js = save(system, pathlib.Path(d) / "pendulum")
+    ...     again = load(pkl)
+    ...     info = load_summary(js)
+    >>> again.mass_matrix == system.mass_matrix, info["symbolic"]["forcing"] == system.forcing
+    (True, True)
+
+    See Also
+    --------
+    load, load_summary
+    """
+    pkl, js = _paths(path)
+    try:
+        blob = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
+    except (pickle.PicklingError, AttributeError, TypeError) as err:
+        raise ParameterError(f"cannot save a {type(obj).__name__}: it does not pickle ({err})") from err
+    pkl.write_bytes(blob)
+    js.write_text(json.dumps(summary(obj), indent=1))
+    return pkl, js
+
+
+def load(path: str | Path) -> Any:
+    """The object saved by :func:`save` (give the ``.pkl`` path or the name without extension).
+
+    Only load files from sources you trust: unpickling can run code.
+
+    See Also
+    --------
+    save, load_summary
+    """
+    pkl, _ = _paths(path)
+    if not pkl.exists():
+        raise ParameterError(f"no saved object at {pkl}; pass the path given to save()")
+    return pickle.loads(pkl.read_bytes())
+
+
+def load_summary(path: str | Path) -> dict[str, Any]:
+    """The JSON summary written by :func:`save`, with the ``srepr`` strings turned back into SymPy objects.
+
+    See Also
+    --------
+    save, load
+    """
+    _, js = _paths(path)
+    if not js.exists():
+        raise ParameterError(f"no summary at {js}; pass the path given to save()")
+    data = json.loads(js.read_text())
+    sym = {}
+    for k, v in data.get("symbolic", {}).items():
+        sym[k] = [sp.sympify(x) for x in v] if isinstance(v, list) else sp.sympify(v)
+    data["symbolic"] = sym
+    return data
+
+
+# public functions refuse invalid arguments (a missing path, ...) with ParameterError
+from ._validate import guard as _guard  # noqa: E402
+
+save = _guard(save)
+load = _guard(load)
+load_summary = _guard(load_summary)
