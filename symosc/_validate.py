@@ -139,9 +139,7 @@ def check_sympy_matrix(name: str, value: Any) -> Any:
     if isinstance(value, sympy.MatrixBase):
         return value
     if value is None or isinstance(value, str | bytes | numbers.Number | sp_Basic) or np.ndim(value) == 0:
-        raise ParameterError(
-            f"{name} must be a matrix (nested list, NumPy array or SymPy Matrix), got {_show(value)}"
-        )
+        raise ParameterError(f"{name} must be a matrix (nested list, NumPy array or SymPy Matrix), got {_show(value)}")
     try:
         return sympy.Matrix(value)
     except (TypeError, ValueError) as exc:

@@ -248,7 +248,7 @@ def _equal_diagonal(c: Any) -> tuple[sp.Matrix, sp.Expr, sp.Matrix]:
 
 
 def triangular_inverse_series(c: Any) -> sp.Matrix:
-    """``c^-1 = E/a - gamma/a^2 + gamma^2/a^3 - ... + (-1)^(n-1) gamma^(n-1)/a^n`` (Bulgakov (1.73), §1.6 Ex. 4).
+    """``c^-1 = E/a - gamma/a^2 + gamma^2/a^3 - … + (-1)^(n-1) gamma^(n-1)/a^n`` (Bulgakov (1.73), §1.6 Ex. 4).
 
     ``c = a E + gamma`` upper triangular with equal diagonal ``a != 0``; ``gamma^n = 0`` ends the series.
 
@@ -277,7 +277,7 @@ def triangular_inverse_series(c: Any) -> sp.Matrix:
 
 
 def triangular_adjugate_series(c: Any) -> sp.Matrix:
-    """``adj c = E a^(n-1) - a^(n-2) gamma + ... + (-1)^(n-1) gamma^(n-1)`` (Bulgakov (1.74)), valid also for a = 0.
+    """``adj c = E a^(n-1) - a^(n-2) gamma + … + (-1)^(n-1) gamma^(n-1)`` (Bulgakov (1.74)), valid also for a = 0.
 
     Examples
     --------

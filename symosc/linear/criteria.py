@@ -169,7 +169,7 @@ def _check_tol(tol: float) -> float:
 
 
 def hurwitz(coefficients: Any, *, tol: float = 1e-9) -> StabilityVerdict:
-    """Hurwitz criterion: all roots of ``k0 λ^s + ... + ks`` have negative real parts (Bulgakov (1954), §8.18).
+    """Hurwitz criterion: all roots of ``k0 λ^s + … + ks`` have negative real parts (Bulgakov (1954), §8.18).
 
     Conditions: ``k0 > 0``, ``Δ1 > 0, ..., Δ_(s-1) > 0`` and ``ks > 0`` (which replaces ``Δs = ks Δ_(s-1)``), with
     ``Δi`` the leading minors of :func:`hurwitz_matrix`, computed from the fraction-free Routh array.

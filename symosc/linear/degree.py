@@ -15,7 +15,7 @@ __all__ = ["StabilityDegree", "hurwitz_at_degree", "shifted_coefficients", "stab
 
 
 def shifted_coefficients(coefficients: Any, delta: Any) -> tuple:
-    """Coefficients ``K0 ... Ks`` of ``Δ(-δ + x)`` (Bulgakov (1954), eq. (8.129)), exact Taylor shift.
+    """Coefficients ``K0 … Ks`` of ``Δ(-δ + x)`` (Bulgakov (1954), eq. (8.129)), exact Taylor shift.
 
     ``K_j = Δ^(s-j)(-δ)/(s-j)!``; all roots of the original polynomial lie left of ``Re λ = -δ`` iff the shifted
     polynomial is Hurwitz.

@@ -20,7 +20,7 @@ __all__ = ["chain_transmittance", "closed_loop_characteristic", "return_differen
 
 
 def chain_transmittance(*links: Any) -> sp.Expr | sp.Matrix:
-    """Transmittance of links in cascade, ``X_n ... X_2 X_1`` (signal flows from ``X_1``) (§10.1).
+    """Transmittance of links in cascade, ``X_n … X_2 X_1`` (signal flows from ``X_1``) (§10.1).
 
     Examples
     --------

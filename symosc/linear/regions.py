@@ -89,7 +89,7 @@ class StabilityRegion:
 
 
 def stability_region(coefficients: Any, params: Any) -> StabilityRegion:
-    """Stability region of ``k0 λ^s + ... + ks`` in the space of the parameters (Bulgakov (1954), §8.19).
+    """Stability region of ``k0 λ^s + … + ks`` in the space of the parameters (Bulgakov (1954), §8.19).
 
     Examples
     --------

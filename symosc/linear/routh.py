@@ -89,7 +89,7 @@ def _trim(row: list, n: int) -> tuple:
 
 
 def routh_array(coefficients: Any) -> RouthArray:
-    """Fraction-free Routh array of ``k0 λ^s + k1 λ^(s-1) + ... + ks`` (Bulgakov (1954), §8.18).
+    """Fraction-free Routh array of ``k0 λ^s + k1 λ^(s-1) + … + ks`` (Bulgakov (1954), §8.18).
 
     Parameters
     ----------

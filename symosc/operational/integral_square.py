@@ -47,7 +47,7 @@ def hurwitz_matrix(denominator, p: sp.Symbol) -> sp.Matrix:
 
 
 def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
-    """``prod_(i<j) (z_i + z_j)`` over the roots of ``A0 p**s + ... + As`` by Orlando's formula (Bulgakov 2.165–2.167).
+    """``prod_(i<j) (z_i + z_j)`` over the roots of ``A0 p**s + … + As`` by Orlando's formula (Bulgakov 2.165–2.167).
 
     ``prod_(i<j) (z_i + z_j) = (-1)**(s(s-1)/2) Delta_(s-1) / A0**(s-1)`` with ``Delta_(s-1)`` the leading
     ``(s-1) x (s-1)`` minor of the Hurwitz matrix; it vanishes exactly when two roots are symmetric about the

@@ -104,7 +104,6 @@ def _error_map():
     return error_map([0.0, 0.2], [0.0, 0.1], noise=0.0, runs=1, n_samples=120)  # 2x2: contour plots need it
 
 
-
 def _compatibility():
     from symosc.linear import compatibility
 
