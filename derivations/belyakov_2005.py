@@ -226,7 +226,7 @@ def error_vs_noise_figure(quick: bool = False) -> None:
     dt = 0.02212
     y = data.response(np.arange(1254) * dt).T
     pipeline = functools.partial(_fig20_pipeline, era=era)
-    truth = {k: float(STAND[k]) for k in ("m", "rx", "rz", "Izz", "Ixx", "Ixz")}
+    truth = {"mass": float(STAND["m"])} | {k: float(STAND[k]) for k in ("rx", "rz", "Izz", "Ixx", "Ixz")}
     levels = [0.01, 0.06, 0.12] if quick else [0.0025, 0.01, 0.02, 0.04, 0.06, 0.08, 0.10, 0.12]
     ev = error_vs_noise(
         pipeline, y, dt, truth, levels, reference=0.00067, runs=3 if quick else 10, executor=EXECUTOR, progress=True

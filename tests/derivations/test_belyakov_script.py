@@ -33,7 +33,7 @@ def test_appendix_run_matches_the_maple_values(capsys):
     _load().appendix_run()
     section = capsys.readouterr().out.split("== Appendix (Maple)")[1].split("==")[0].splitlines()[2:]
     rows = {line.split()[0]: float(line.split()[-1]) for line in section if line.strip()}
-    assert set(rows) == {"m", "rx", "rz", "Izz", "Ixx", "Ixz"}
+    assert set(rows) == {"mass", "rx", "rz", "Izz", "Ixx", "Ixz"}
     assert max(abs(v) for v in rows.values()) < 1e-8  # relative differences to the ten-digit Maple values
 
 
