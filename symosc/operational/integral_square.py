@@ -57,8 +57,8 @@ def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
     --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
-    >>> pairwise_root_sum_product((p + 1) * (p + 2) * (p + 3), p)    # 3 * 4 * 5
-    60
+    >>> pairwise_root_sum_product((p + 1) * (p + 2) * (p + 3), p)    # roots -1, -2, -3: (-3) * (-4) * (-5)
+    -60
 
     See Also
     --------
