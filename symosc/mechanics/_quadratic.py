@@ -143,6 +143,9 @@ def complex_modes(M: Any, D: Any, K: Any) -> ComplexModes:
     --------
     symosc.mechanics.LinearModel.complex_modes : the same from a linearised model and parameter values.
     symosc.mechanics.LinearModel.modes : undamped modes of a symmetric ``M``, ``K``.
+    symosc.identification.quadratic_modes : symmetric ``M``, ``D``, ``K`` with oscillatory modes only
+        (Belyakov (2005), eq. (97)); this function also takes gyroscopic (skew) ``D``, circulatory ``K``,
+        overdamped and growing modes.
 
     Notes
     -----
