@@ -49,10 +49,12 @@ from .reconstruction import (
 from .refine import refine
 from .sensitivity import JacobianResult, jacobian, sensitivity
 from .simulator import StandRecord, simulate_stand, stand_system
+from .spin_up import CentralGyration, central_gyration, motor_spin_up_brake
 from .two_stage import SecondOrderModel, two_stage
 
 __all__ = [
     "ApplicabilityCheck",
+    "CentralGyration",
     "CramerRaoBound",
     "DampingPerturbation",
     "ErrorMap",
@@ -76,6 +78,7 @@ __all__ = [
     "algorithm22",
     "applicability",
     "assemble_tensor",
+    "central_gyration",
     "central_identity",
     "check_distinct",
     "cramer_rao_bound",
@@ -91,6 +94,7 @@ __all__ = [
     "matrix_pencil",
     "min_time_1dof",
     "monte_carlo",
+    "motor_spin_up_brake",
     "noise_sigma",
     "physical_pendulum",
     "prony",
