@@ -27,6 +27,7 @@ from .delay import (
     quasi_polynomial,
     quasi_polynomial_roots,
 )
+from .gyro_pendulum import GyroPendulumModes, gyro_pendulum_modes
 from .harmonic_linearisation import (
     HarmonicCycle,
     HarmonicLinearisation,
@@ -91,6 +92,7 @@ __all__ = [
     "FlywheelDesign",
     "Fold",
     "FrequencyResponse",
+    "GyroPendulumModes",
     "HalfSwingMap",
     "HarmonicCycle",
     "HarmonicLinearisation",
@@ -121,6 +123,7 @@ __all__ = [
     "dry_friction_ratio",
     "dry_friction_torus_average",
     "fast_averaged_system",
+    "gyro_pendulum_modes",
     "half_swing_map",
     "harmonic_linearisation",
     "limit_cycle",
