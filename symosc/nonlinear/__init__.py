@@ -61,6 +61,7 @@ from .piecewise import (
     quadratic_drag_half_swing_times,
 )
 from .poincare import LimitCycleSeries, limit_cycle
+from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
 from .special_systems import (
     ClockEscapement,
@@ -102,6 +103,8 @@ __all__ = [
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
+    "OperatorCycle",
+    "PoincareOperatorSystem",
     "QuasiPolynomial",
     "RadiusEstimate",
     "SeriesValidation",
@@ -134,6 +137,7 @@ __all__ = [
     "numeric_orbit",
     "numeric_period",
     "periodic_solution_ndof",
+    "poincare_operator_system",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",
