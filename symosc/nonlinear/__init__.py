@@ -63,6 +63,7 @@ from .piecewise import (
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
+from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
 from .special_systems import (
     ClockEscapement,
     FlywheelDesign,
@@ -107,6 +108,7 @@ __all__ = [
     "PoincareOperatorSystem",
     "QuasiPolynomial",
     "RadiusEstimate",
+    "RelayRegulatorBoundary",
     "SeriesValidation",
     "StationaryRegime",
     "SteadyState",
@@ -144,6 +146,7 @@ __all__ = [
     "quasi_polynomial",
     "quasi_polynomial_roots",
     "radinger_flywheel",
+    "relay_regulator_boundary",
     "self_oscillations",
     "servo_characteristic",
     "servo_equations",
