@@ -27,6 +27,7 @@ from .delay import (
     quasi_polynomial,
     quasi_polynomial_roots,
 )
+from .design_linearization import DesignLinearization, design_amplitude_linearization
 from .gyro_pendulum import GyroPendulumModes, gyro_pendulum_modes
 from .harmonic_linearisation import (
     HarmonicCycle,
@@ -89,6 +90,7 @@ __all__ = [
     "ClockEscapement",
     "CoulombMotion",
     "DelayRoots",
+    "DesignLinearization",
     "EpsSeries",
     "FastAveragedSystem",
     "FlywheelDesign",
@@ -125,6 +127,7 @@ __all__ = [
     "coulomb_oscillator",
     "count_roots",
     "describing_function",
+    "design_amplitude_linearization",
     "dry_friction_ratio",
     "dry_friction_torus_average",
     "fast_averaged_system",
