@@ -64,6 +64,7 @@ from .piecewise import (
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
+from .point_map import MapCycle, point_map_cycle
 from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
 from .special_systems import (
     ClockEscapement,
@@ -103,6 +104,7 @@ __all__ = [
     "LimitCycleSeries",
     "LindstedtSeries",
     "LinearisationBoundary",
+    "MapCycle",
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
@@ -143,6 +145,7 @@ __all__ = [
     "numeric_period",
     "periodic_solution_ndof",
     "poincare_operator_system",
+    "point_map_cycle",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",
