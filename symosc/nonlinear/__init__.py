@@ -28,6 +28,7 @@ from .delay import (
     quasi_polynomial_roots,
 )
 from .design_linearization import DesignLinearization, design_amplitude_linearization
+from .flywheel_series import FlywheelSpeedSeries, flywheel_speed_series
 from .gyro_pendulum import GyroPendulumModes, gyro_pendulum_modes
 from .harmonic_linearisation import (
     HarmonicCycle,
@@ -95,6 +96,7 @@ __all__ = [
     "EpsSeries",
     "FastAveragedSystem",
     "FlywheelDesign",
+    "FlywheelSpeedSeries",
     "Fold",
     "FrequencyResponse",
     "GyroPendulumModes",
@@ -133,6 +135,7 @@ __all__ = [
     "dry_friction_ratio",
     "dry_friction_torus_average",
     "fast_averaged_system",
+    "flywheel_speed_series",
     "gyro_pendulum_modes",
     "half_swing_map",
     "harmonic_linearisation",
