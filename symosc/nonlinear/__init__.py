@@ -29,6 +29,7 @@ from .delay import (
 )
 from .design_linearization import DesignLinearization, design_amplitude_linearization
 from .flywheel_series import FlywheelSpeedSeries, flywheel_speed_series
+from .forced_poincare import ForcedPeriodicSolution, forced_periodic_solution
 from .gyro_pendulum import GyroPendulumModes, gyro_pendulum_modes
 from .harmonic_linearisation import (
     HarmonicCycle,
@@ -98,6 +99,7 @@ __all__ = [
     "FlywheelDesign",
     "FlywheelSpeedSeries",
     "Fold",
+    "ForcedPeriodicSolution",
     "FrequencyResponse",
     "GyroPendulumModes",
     "HalfSwingMap",
@@ -136,6 +138,7 @@ __all__ = [
     "dry_friction_torus_average",
     "fast_averaged_system",
     "flywheel_speed_series",
+    "forced_periodic_solution",
     "gyro_pendulum_modes",
     "half_swing_map",
     "harmonic_linearisation",
