@@ -17,6 +17,7 @@ from .averaging_ndof import (
     dry_friction_ratio,
     dry_friction_torus_average,
 )
+from .backlash_servo import BacklashServoRun, simulate_backlash_servo
 from .delay import (
     DelayRoots,
     QuasiPolynomial,
@@ -89,6 +90,7 @@ from .validate import (
 
 __all__ = [
     "AveragedEquations",
+    "BacklashServoRun",
     "CharacteristicExponentSeries",
     "ClockEscapement",
     "CoulombMotion",
@@ -163,6 +165,7 @@ __all__ = [
     "servo_characteristic",
     "servo_equations",
     "servo_region",
+    "simulate_backlash_servo",
     "step_valve_generator",
     "two_nonlinearity_cycles",
     "validate_limit_cycle",
