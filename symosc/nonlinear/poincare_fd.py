@@ -102,6 +102,10 @@ class PoincareOperatorSystem:
         """First frequency correction ``b(A) = -Re Q(A) / (2 A omega**2)``."""
         return -self.Q(A).real / (2 * A * self.omega**2)
 
+    def amplitude_rate(self, A: float) -> float:
+        """Shortened amplitude equation per unit ``mu``: ``dA/dt = mu G(A) / (2 omega)`` (12.152, one active pair)."""
+        return self.G(A) / (2 * self.omega)
+
     def cycles(self, A_max: float, *, n_grid: int = 400, tol: float = 1e-12) -> list[OperatorCycle]:
         """All roots ``A*`` of ``G`` in ``(0, A_max]`` (sign changes on a grid, then Brent), with stability."""
         from scipy.optimize import brentq

@@ -69,3 +69,26 @@ def test_van_der_pol_and_its_unstable_mirror():
 def test_refuses_without_a_critical_pair():
     with pytest.raises(ModelError):
         poincare_operator_system(sp.Matrix([[D**2 + D + 1]]), [y1], [y1], [v1], D)
+
+
+def test_shortened_amplitude_equation_against_transient():
+    """dA/dt = mu G(A)/(2 omega) (12.152): the envelope of y1/|V1| during the build-up of the third-order system."""
+    mu = 0.01
+    sys = poincare_operator_system(
+        sp.Matrix([[D**2 + 1, 0], [-1, D + 2]]), [(1 - y1**2) * v1 + 0.8 * y2, -(y1**3)], [y1, y2], [v1, v2], D
+    )
+    A0, t_end = 0.1, 400.0
+    slow = solve_ivp(lambda t, a: [mu * sys.amplitude_rate(a[0])], (0, t_end), [A0], rtol=1e-10, dense_output=True)
+
+    def rhs(t, s):
+        Y1, V1, Y2 = s
+        return [V1, -Y1 + mu * ((1 - Y1**2) * V1 + 0.8 * Y2), Y1 - 2 * Y2 - mu * Y1**3]
+
+    V = sys.V
+    y0 = [A0 * V[0].real, -A0 * sys.omega * V[0].imag, A0 * V[1].real]  # y* = A Re(V e^{iu}) at u = 0
+    full = solve_ivp(rhs, (0, t_end), y0, method="DOP853", rtol=1e-10, atol=1e-12, dense_output=True)
+    for t_check in (100.0, 200.0, 300.0):
+        tt = np.linspace(t_check - np.pi, t_check + np.pi, 400)
+        env = np.max(np.abs(full.sol(tt)[0])) / abs(V[0])
+        assert env == pytest.approx(slow.sol(t_check)[0], rel=0.05)
+    assert slow.sol(300.0)[0] > 4 * A0  # a real build-up was followed
