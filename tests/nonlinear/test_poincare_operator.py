@@ -91,4 +91,4 @@ def test_shortened_amplitude_equation_against_transient():
         tt = np.linspace(t_check - np.pi, t_check + np.pi, 400)
         env = np.max(np.abs(full.sol(tt)[0])) / abs(V[0])
         assert env == pytest.approx(slow.sol(t_check)[0], rel=0.05)
-    assert slow.sol(300.0)[0] > 4 * A0  # a real build-up was followed
+    assert slow.sol(300.0)[0] > 3 * A0  # a real build-up was followed
