@@ -54,6 +54,7 @@ from .high_frequency import (
     vibrational_averaging_of,
     vibrational_stiffness,
 )
+from .implicit_point_map import ImplicitMapCycle, implicit_map_cycle
 from .lindstedt import LindstedtSeries, lindstedt
 from .piecewise import (
     CoulombMotion,
@@ -67,7 +68,6 @@ from .piecewise import (
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
-from .point_map import MapCycle, point_map_cycle
 from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
 from .special_systems import (
     ClockEscapement,
@@ -107,10 +107,10 @@ __all__ = [
     "HalfSwingMap",
     "HarmonicCycle",
     "HarmonicLinearisation",
+    "ImplicitMapCycle",
     "LimitCycleSeries",
     "LindstedtSeries",
     "LinearisationBoundary",
-    "MapCycle",
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
@@ -144,6 +144,7 @@ __all__ = [
     "gyro_pendulum_modes",
     "half_swing_map",
     "harmonic_linearisation",
+    "implicit_map_cycle",
     "limit_cycle",
     "lindstedt",
     "linearisation_boundary",
@@ -153,7 +154,6 @@ __all__ = [
     "numeric_period",
     "periodic_solution_ndof",
     "poincare_operator_system",
-    "point_map_cycle",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",

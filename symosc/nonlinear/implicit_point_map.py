@@ -1,4 +1,4 @@
-"""Stationary amplitudes of point maps and their stability (Bulgakov (1954), §5.12).
+"""Stationary amplitudes of implicit half-swing maps ``f(a, b) = 0`` and their stability (Bulgakov (1954), §5.12).
 
 A half-swing of a piecewise (or impulsive) oscillator is described by an implicit relation between successive
 amplitudes.  For a symmetric system one relation ``f(a, b) = 0`` maps every half swing; the stationary amplitude
@@ -19,11 +19,11 @@ import sympy as sp
 
 from ..errors import ConvergenceError, ModelError, ParameterError
 
-__all__ = ["MapCycle", "point_map_cycle"]
+__all__ = ["ImplicitMapCycle", "implicit_map_cycle"]
 
 
 @dataclass(frozen=True)
-class MapCycle:
+class ImplicitMapCycle:
     """A fixed point of a (composed) point map.
 
     Attributes
@@ -42,7 +42,9 @@ class MapCycle:
 
     def __repr__(self) -> str:
         amps = ", ".join(f"{a:.8g}" for a in self.amplitudes)
-        return f"MapCycle(({amps}), multiplier={self.multiplier:.6g}, {'stable' if self.stable else 'unstable'})"
+        return (
+            f"ImplicitMapCycle(({amps}), multiplier={self.multiplier:.6g}, {'stable' if self.stable else 'unstable'})"
+        )
 
 
 def _expr(e: Any, name: str) -> sp.Expr:
@@ -52,9 +54,9 @@ def _expr(e: Any, name: str) -> sp.Expr:
         raise ParameterError(f"{name} must be a SymPy expression, got {e!r}") from exc
 
 
-def point_map_cycle(
+def implicit_map_cycle(
     maps: Any, symbols: Sequence[sp.Symbol], guess: float | Sequence[float], *, tol: float = 1e-12
-) -> MapCycle:
+) -> ImplicitMapCycle:
     """Stationary amplitude(s) of a point map and their stability (Bulgakov (1954), §5.12).
 
     Parameters
@@ -71,7 +73,7 @@ def point_map_cycle(
 
     Returns
     -------
-    MapCycle
+    ImplicitMapCycle
 
     Raises
     ------
@@ -83,6 +85,7 @@ def point_map_cycle(
     See Also
     --------
     symosc.nonlinear.half_swing_map : half-swing maps of conservative systems with friction.
+    symosc.nonlinear.point_map_fixed_point : fixed point of an explicit map ``x -> P(x)``.
     symosc.nonlinear.clock_escapement : the clock with an escapement (§5.11).
 
     Examples
@@ -92,8 +95,8 @@ def point_map_cycle(
 
     >>> import sympy as sp
     >>> a, b = sp.symbols("a b")
-    >>> point_map_cycle(a**2 / 2 - b**2 / 2 - sp.Rational(1, 10) * (a + b) + sp.Rational(1, 5), (a, b), 1.0)
-    MapCycle((1), multiplier=0.818182, stable)
+    >>> implicit_map_cycle(a**2 / 2 - b**2 / 2 - sp.Rational(1, 10) * (a + b) + sp.Rational(1, 5), (a, b), 1.0)
+    ImplicitMapCycle((1), multiplier=0.818182, stable)
     """
     if isinstance(maps, list | tuple):
         if len(maps) != 2 or len(symbols) != 3:
@@ -117,7 +120,7 @@ def point_map_cycle(
         if den == 0:
             raise ModelError("f1_c * f2_b = 0 at the cycle: the half-maps do not define b(a), c(b) there")
         mult = float(sp.diff(f1, b).xreplace(at1)) * float(sp.diff(f2, a).xreplace(at2)) / den
-        return MapCycle((A, B), mult, abs(mult) < 1)
+        return ImplicitMapCycle((A, B), mult, abs(mult) < 1)
     f = _expr(maps, "maps")
     if len(symbols) != 2:
         raise ParameterError("a symmetric map needs symbols=(a, b)")
@@ -137,4 +140,4 @@ def point_map_cycle(
     if fb == 0:
         raise ModelError("f_b = 0 at the stationary amplitude: the map does not define b(a) there")
     mult = -float(sp.diff(f, a).xreplace(at)) / fb
-    return MapCycle((A,), mult, abs(mult) < 1)
+    return ImplicitMapCycle((A,), mult, abs(mult) < 1)

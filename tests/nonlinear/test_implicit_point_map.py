@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 
 from symosc import ParameterError
-from symosc.nonlinear import point_map_cycle
+from symosc.nonlinear import implicit_map_cycle
 
 a, b, c = sp.symbols("a b c")
 
@@ -20,7 +20,7 @@ a, b, c = sp.symbols("a b c")
 @pytest.mark.parametrize(("F", "H", "stable"), [(0.1, 0.2, True), (0.3, 0.05, True), (-0.1, -0.2, False)])
 def test_escapement_map_against_iteration(F, H, stable):
     """a^2/2 - b^2/2 - F(a+b) + H = 0 (5.141): b = -F + sqrt((a - F)^2 + 2H); A = H/(2F)."""
-    cyc = point_map_cycle(a**2 / 2 - b**2 / 2 - F * (a + b) + H, (a, b), 0.9 * H / (2 * F))
+    cyc = implicit_map_cycle(a**2 / 2 - b**2 / 2 - F * (a + b) + H, (a, b), 0.9 * H / (2 * F))
     assert cyc.amplitudes[0] == pytest.approx(H / (2 * F), rel=1e-12)
     assert cyc.stable == stable
     x = cyc.amplitudes[0] * 1.01
@@ -36,7 +36,7 @@ def test_escapement_map_against_iteration(F, H, stable):
 def test_step_generator_two_half_maps():
     """b = delta a (5.161), c = delta b + S(1 + delta) (5.164): A = S/(1 - delta), B = S delta/(1 - delta) (5.166)."""
     S, delta = 0.7, 0.6
-    cyc = point_map_cycle((b - delta * a, c - delta * b - S * (1 + delta)), (a, b, c), (1.0, 1.0))
+    cyc = implicit_map_cycle((b - delta * a, c - delta * b - S * (1 + delta)), (a, b, c), (1.0, 1.0))
     A, B = cyc.amplitudes
     assert A == pytest.approx(S / (1 - delta), rel=1e-12) and B == pytest.approx(S * delta / (1 - delta), rel=1e-12)
     assert cyc.multiplier == pytest.approx(delta**2, rel=1e-12) and cyc.stable
@@ -48,6 +48,6 @@ def test_step_generator_two_half_maps():
 
 def test_bad_input():
     with pytest.raises(ParameterError):
-        point_map_cycle((a - b,), (a, b), 1.0)
+        implicit_map_cycle((a - b,), (a, b), 1.0)
     with pytest.raises(ParameterError):
-        point_map_cycle(a - b / 2 - 1, (a, b), "x")
+        implicit_map_cycle(a - b / 2 - 1, (a, b), "x")
