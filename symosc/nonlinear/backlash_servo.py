@@ -103,7 +103,7 @@ def simulate_backlash_servo(
     See Also
     --------
     symosc.nonlinear.backlash_critical_gap : the critical gap ``k_c`` (5.186), (5.189).
-    point_map_cycle : stationary amplitudes of a point map and their stability (§5.12).
+    implicit_map_cycle : stationary amplitudes of a point map and their stability (§5.12).
 
     Examples
     --------
