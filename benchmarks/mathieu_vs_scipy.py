@@ -7,6 +7,10 @@ points (and in tests/periodic/test_mathieu.py on many more).  The reference is c
 
     python benchmarks/mathieu_vs_scipy.py            # 201 q values, reference on ~1100 points
     python benchmarks/mathieu_vs_scipy.py --quick    # 41 q values, reference on ~250 points
+    python benchmarks/mathieu_vs_scipy.py --speed    # only the speed table (q in [0, 100], n = 0, 5, 20)
+
+The speed table first: time per value vectorised over 10^4 q in [0, 100] and per scalar call, symosc "auto" vs
+SciPy, best of several runs (process time), in one run so that the ratios are comparable on a loaded machine.
 """
 
 from __future__ import annotations
@@ -37,12 +41,37 @@ def timed(fn, repeat=1):
     return out, best
 
 
+def speed_table(repeat: int = 5) -> None:
+    """Per-value time, q in [0, 100] (10^4 points) and scalar calls, n = 0, 5, 20; ratios to SciPy."""
+    q = np.linspace(0.0, 100.0, 10_000)
+    qs = np.linspace(0.5, 99.5, 200).tolist()
+    print("Speed, q in [0, 100]: vectorised over 10^4 q, and 200 scalar calls (best of", repeat, "runs, CPU time)\n")
+    print("| value | symosc vectorised (us/value) | SciPy vectorised | ratio | symosc scalar (us/call) | SciPy scalar "
+          "| ratio |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|")
+    for kind, n in (("a", 0), ("b", 5), ("a", 5), ("a", 20), ("b", 20)):
+        ours, theirs = (mathieu_a, sp.mathieu_a) if kind == "a" else (mathieu_b, sp.mathieu_b)
+        ours(n, q)
+        _, t_ours = timed(lambda ours=ours, n=n: ours(n, q), repeat)
+        _, t_sp = timed(lambda theirs=theirs, n=n: theirs(n, q), repeat)
+        _, s_ours = timed(lambda ours=ours, n=n: [ours(n, x) for x in qs], repeat)
+        _, s_sp = timed(lambda theirs=theirs, n=n: [theirs(n, x) for x in qs], repeat)
+        c, cs = s_ours / len(qs) * 1e6, s_sp / len(qs) * 1e6
+        v_ours, v_sp = t_ours / q.size * 1e6, t_sp / q.size * 1e6
+        print(f"| {kind}_{n} | {v_ours:.2f} | {v_sp:.2f} | {v_ours / v_sp:.1f}x | {c:.1f} | {cs:.2f} | {c / cs:.1f}x |")
+    print()
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--speed", action="store_true", help="only the speed table")
     ap.add_argument("--nq", type=int, default=None)
     ap.add_argument("--ref-step", type=int, default=None)
     args = ap.parse_args()
+    speed_table()
+    if args.speed:
+        return
     nq = args.nq or (41 if args.quick else 201)
     step = args.ref_step or 5
     nmax = 50

@@ -1,21 +1,33 @@
 """Belyakov (2005), moments of inertia of a body on springs from its oscillations: reproduction, end to end.
 
-Source: ../shared/seeds/001_b22cdb6b21550ad5.txt; digest: ../shared/research/seed-belyakov.md.
-Run ``python derivations/belyakov_2005.py [--quick]``; figures go to ``derivations/out/``.
+Run ``python derivations/belyakov_2005.py [--quick] [--out DIR] [--executor auto|serial|processes]``; figures go to
+``derivations/out/belyakov_2005/`` (``derivations/out/belyakov_2005_quick/`` with ``--quick``).  Each section prints
+its run time as it finishes; the Monte Carlo studies (Figs 20-24) run through ``symosc.sweep`` (default: a process
+pool for the full run) with a progress bar on stderr.
 
 Each section prints a table "dissertation | symosc | difference".  The product of inertia follows the
-dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23; see report §2.7).
+dissertation's numeric run (``product_of_inertia="dissertation"``, Ixz = +M23, the sign of its Appendix run).
 """
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
+import os
 
-import numpy as np
+# The identification runs do many small SVDs: BLAS threads only contend (and, with a process pool, oversubscribe the
+# cores); one thread per process is several times faster here.  Set before NumPy loads BLAS; the caller's setting wins.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
 
-from symosc.errors import IdentificationError
-from symosc.identification import (
+import argparse  # noqa: E402
+import functools  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from symosc.errors import IdentificationError  # noqa: E402
+from symosc.identification import (  # noqa: E402
     algorithm1,
     algorithm21,
     algorithm22,
@@ -25,9 +37,11 @@ from symosc.identification import (
     simulate_quasi_optimal,
     simulate_stand,
 )
-from symosc.models import body_on_springs
+from symosc.models import body_on_springs  # noqa: E402
 
-OUT = Path(__file__).resolve().parent / "out"
+OUT_ROOT = Path(__file__).resolve().parent / "out"
+OUT = OUT_ROOT / "belyakov_2005"  # set by main(): --out, or belyakov_2005_quick/ for --quick
+EXECUTOR = "auto"  # set by main(): where the Monte Carlo runs go (symosc.sweep executor)
 
 # Tables 1–2 (p. 79) and Ch. II §4.5 (transverse stiffness)
 STAND = dict(m=15000, rx=2, rz=0.87, Ixx=3000, Iyy=43000, Izz=44000, Ixz=400, Lx=4, Lz=1.74)
@@ -57,7 +71,7 @@ def table(rows: list[tuple[str, float, float]], title: str, fmt: str = "12.8g") 
 
 
 def tables_1_2() -> None:
-    """Tables 1–2: stand and body; derived static quantities (report §4.1)."""
+    """Tables 1–2: stand and body; derived static quantities."""
     model = body_on_springs(product_of_inertia="dissertation")
     xs, zs = model.vertical_stiffness_centre()
     subs = {s: STAND[s.name] for s in model.k} | {model.Lx: STAND["Lx"], model.Lz: STAND["Lz"]}
@@ -77,18 +91,18 @@ def table_3_and_modes() -> None:
     table([(f"omega{k + 1}, rad/s", TABLE3[k], data.omega[k]) for k in range(3)], "Table 3 vs linear 3-DOF model")
     rows = [(f"C'[{j + 1},{k + 1}], m", C_APPENDIX[j, k], data.observation[j, k]) for j in range(4) for k in range(3)]
     table(rows, "C' (Appendix, identified from the 6-DOF simulation) vs linear 3-DOF model", fmt="12.6e")
-    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (report: -2.027 mm)")
-    print("modal energies K'/2, J:", np.round(data.modal_energy(), 4).tolist(), "(report §3.9: 0.676, 0.720, 0.632)")
+    print(f"sensor 2 initial deflection: {data.y0[1] * 1e3:.4f} mm (recomputed: -2.027 mm)")
+    print("modal energies K'/2, J:", np.round(data.modal_energy(), 4).tolist(), "(recomputed: 0.676, 0.720, 0.632)")
 
 
 def appendix_run() -> None:
-    """Appendix 1: the Maple run of Algorithm 1 (golden case, report §4.4)."""
+    """Appendix 1: the Maple run of Algorithm 1 (the reference case)."""
     est = algorithm1(TABLE3, C_APPENDIX, FORCE, (4, 1.74), product_of_inertia="dissertation")
     table([(k, v, est.as_dict()[k]) for k, v in MAPLE.items()], "Appendix (Maple) Algorithm 1 vs symosc")
     e21 = algorithm21(TABLE3, C_APPENDIX, 15000.0, (4, 1.74), product_of_inertia="dissertation")
     ref21 = dict(rx=2.0000051, rz=0.8699994, Izz=44000.725, Ixx=3000.338, Ixz=399.974)
     rows = [("k, N/m", 739970.676, e21.spring_stiffness)] + [(k, v, e21.as_dict()[k]) for k, v in ref21.items()]
-    table(rows, "Algorithm 2.1 on the Appendix data (report §4.9 [C] values; not in the dissertation)")
+    table(rows, "Algorithm 2.1 on the Appendix data (recomputed values; not in the dissertation)")
     try:
         algorithm22(TABLE3, C_APPENDIX, 15000.0, (2.0, 0.87), (4, 1.74), product_of_inertia="dissertation")
     except IdentificationError as err:
@@ -119,7 +133,7 @@ def _plot_signals(rec) -> None:
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover
         return
-    OUT.mkdir(exist_ok=True)
+    OUT.mkdir(parents=True, exist_ok=True)
     fig, ax = plt.subplots(figsize=(8, 4))
     mask = rec.t <= 1.2
     for j, y in enumerate(rec.signals[:, mask], start=1):
@@ -179,35 +193,39 @@ def fig25_damping() -> None:
 
 
 def min_time_example() -> None:
-    """Ch. II §4.5: minimum excitation time of the stand (report §4.8)."""
+    """Ch. II §4.5: minimum excitation time of the stand (Belyakov 2005, Ch. II §4.5)."""
     lx, lz, k, am = 4.0, 1.74, 7.4e5, 2e-3
     C = np.array([[1, -lx / 2, lz / 2], [1, lx / 2, lz / 2], [1, lx / 2, -lz / 2], [1, -lx / 2, -lz / 2]])
     res = excitation_time_bound(np.diag([15000.0, 44000.0, 3000.0]), k * C.T @ C, C.T, 5.0, [am, am / lx, am / lz])
     table([(f"T{i + 1}, s (printed)", v, res.times[i]) for i, v in enumerate([33, 14, 8.5])],
-          "Ch. II §4.5 excitation times (printed rounded; the OCR lost pi)")  # fmt: skip
-    table([(f"T{i + 1}, s (report [C])", v, res.times[i]) for i, v in enumerate([33.0987, 14.1720, 8.50701])],
-          "... against the report's recomputation")  # fmt: skip
+          "Ch. II §4.5 excitation times (printed rounded, and without the factor pi)")  # fmt: skip
+    table([(f"T{i + 1}, s (recomputed)", v, res.times[i]) for i, v in enumerate([33.0987, 14.1720, 8.50701])],
+          "... against the values recomputed to 6 digits")  # fmt: skip
     print("exact 1-DOF minimum times from rest (rigorous bound):", np.round(res.exact_times, 4).tolist())
     run = simulate_quasi_optimal((0.0, 0.0), 4.0, 1.0, 1.0)
     print(f"quasi-optimal law, a = 4 u_m from rest: {run.time / (2 * np.pi):.6f} periods (eq. 76: 1)")
 
 
+def _fig20_pipeline(sig, dt, era):
+    """ERA (Kung, 60 block rows, 3 modes) + Algorithm 1: module level, so that a process pool can run it."""
+    est = era(sig, dt, 3, constant=False, rows=60)
+    return algorithm1(est.frequencies, est.mode_shapes, FORCE, (4.0, 1.74), product_of_inertia="dissertation")
+
+
 def error_vs_noise_figure(quick: bool = False) -> None:
     """Ch. III §3.2 (Fig. 20): parameter errors vs signal noise (% of 0.00067 m) for ERA + Algorithm 1 on the linear
-    3-DOF stand (report §4.9 pipeline: 1254 samples at 0.02212 s, Kung with 60 block rows, order 6)."""
+    3-DOF stand (1254 samples at 0.02212 s, Kung with 60 block rows, order 6)."""
     from symosc.identification import era, error_vs_noise
 
     data = body_on_springs(product_of_inertia="dissertation").modal(STAND, force=FORCE)
     dt = 0.02212
     y = data.response(np.arange(1254) * dt).T
-
-    def pipeline(sig, dt):
-        est = era(sig, dt, 3, constant=False, rows=60)
-        return algorithm1(est.frequencies, est.mode_shapes, FORCE, (4.0, 1.74), product_of_inertia="dissertation")
-
+    pipeline = functools.partial(_fig20_pipeline, era=era)
     truth = {k: float(STAND[k]) for k in ("m", "rx", "rz", "Izz", "Ixx", "Ixz")}
     levels = [0.01, 0.06, 0.12] if quick else [0.0025, 0.01, 0.02, 0.04, 0.06, 0.08, 0.10, 0.12]
-    ev = error_vs_noise(pipeline, y, dt, truth, levels, reference=0.00067, runs=3 if quick else 10)
+    ev = error_vs_noise(
+        pipeline, y, dt, truth, levels, reference=0.00067, runs=3 if quick else 10, executor=EXECUTOR, progress=True
+    )
     print("\n== Fig. 20 analogue: mean |error| % vs noise % (linear stand, ERA + Algorithm 1)")
     print(f"{'noise %':>8} " + " ".join(f"{n:>9}" for n in ev.names))
     for lv, row in zip(ev.levels, ev.mean, strict=True):
@@ -215,7 +233,7 @@ def error_vs_noise_figure(quick: bool = False) -> None:
     thr = ev.threshold("Izz", 0.02)
     more = ">= " if thr == ev.levels[-1] else ""  # never exceeded within the levels studied
     print(f"largest noise with mean Izz error <= 2 %: {more}{100 * thr:.1f} % (dissertation: 6 %,")
-    print("  with its nonlinear simulator; the report's linear pipeline gives 0.78 % Izz error at 6 % noise)")
+    print("  with its nonlinear simulator; this linear pipeline gives 0.78 % Izz error at 6 % noise)")
     try:
         import matplotlib
 
@@ -223,7 +241,7 @@ def error_vs_noise_figure(quick: bool = False) -> None:
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover
         return
-    OUT.mkdir(exist_ok=True)
+    OUT.mkdir(parents=True, exist_ok=True)
     fig, ax = plt.subplots(figsize=(6, 4))
     ev.plot(ax=ax)
     ax.axhline(2.0, color="k", ls=":", lw=0.8)
@@ -241,7 +259,10 @@ def error_maps_figure(quick: bool = False) -> None:
     dx = np.linspace(-0.4, 0.4, 5 if quick else 9)
     dz = np.linspace(-0.3, 0.3, 3 if quick else 7)
     runs = 3 if quick else 8
-    maps = {alg: error_map(dx, dz, noise=0.06, runs=runs, algorithm=alg) for alg in ("1", "2.2")}
+    maps = {
+        alg: error_map(dx, dz, noise=0.06, runs=runs, algorithm=alg, executor=EXECUTOR, progress=True)
+        for alg in ("1", "2.2")
+    }
     em = maps["1"]
     print("\n== Figs 21–24 analogue: mean |error| % of Izz at 6 % noise vs CM offset (ERA + Algorithm 1)")
     print(em)
@@ -249,7 +270,7 @@ def error_maps_figure(quick: bool = False) -> None:
     print(np.round(em.min_energy, 3))
     half_mean = 0.5 * float(em.energies.mean())
     table([("1/2 mean modal energy (J)", 0.08, half_mean)], "Fig. 24 threshold", "10.4g")
-    print("  (report §3.9: the dissertation's 0.08 J is figure-specific; the 2000 N release stores 2.027 J)")
+    print("  (the dissertation's 0.08 J is figure-specific; the 2000 N release stores 2.027 J)")
     a22 = maps["2.2"]
     on_line = int(a22.failures[:, :, np.isclose(dz, 0.0)].sum())
     print(f"Algorithm 2.2 at the same noise: failures {int(a22.failures.sum())} of {a22.errors[..., 0].size} runs,")
@@ -265,7 +286,7 @@ def error_maps_figure(quick: bool = False) -> None:
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover
         return
-    OUT.mkdir(exist_ok=True)
+    OUT.mkdir(parents=True, exist_ok=True)
     fig, axes = plt.subplots(1, 3, figsize=(16, 4))
     em.plot("Izz", ax=axes[0])
     em.plot("Ixx", ax=axes[1])
@@ -280,18 +301,43 @@ def error_maps_figure(quick: bool = False) -> None:
     plt.close(fig)
 
 
+def output_folder(quick: bool, out: Path | None = None) -> Path:
+    """Where the figures go: ``out`` if given, else ``derivations/out/belyakov_2005[_quick]/``."""
+    return out if out is not None else OUT_ROOT / ("belyakov_2005_quick" if quick else "belyakov_2005")
+
+
 def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else argv
-    quick = "--quick" in argv
-    tables_1_2()
-    table_3_and_modes()
-    appendix_run()
-    table_4(quick)
-    fig19_tilt(quick)
-    fig25_damping()
-    min_time_example()
-    error_vs_noise_figure(quick)
-    error_maps_figure(quick)
+    global OUT, EXECUTOR
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="smaller grids and fewer runs (under 30 s)")
+    ap.add_argument("--out", type=Path, default=None, help="figure folder (default derivations/out/belyakov_2005/)")
+    ap.add_argument(
+        "--executor",
+        default=None,
+        help="symosc.sweep executor for the Monte Carlo studies (default: 'processes', 'serial' with --quick)",
+    )
+    args = ap.parse_args(sys.argv[1:] if argv is None else argv)
+    quick = args.quick
+    OUT = output_folder(quick, args.out)
+    EXECUTOR = args.executor or ("serial" if quick else "processes")
+    start = time.perf_counter()
+    sections = [
+        ("Tables 1-2", tables_1_2),
+        ("Table 3 and C'", table_3_and_modes),
+        ("Appendix run", appendix_run),
+        ("Table 4", functools.partial(table_4, quick)),
+        ("Fig. 19", functools.partial(fig19_tilt, quick)),
+        ("Fig. 25", fig25_damping),
+        ("Ch. II §4.5 excitation times", min_time_example),
+        ("Fig. 20 (Monte Carlo)", functools.partial(error_vs_noise_figure, quick)),
+        ("Figs 21-24 (Monte Carlo)", functools.partial(error_maps_figure, quick)),
+    ]
+    for i, (name, run) in enumerate(sections, start=1):
+        t0 = time.perf_counter()
+        run()
+        now = time.perf_counter()
+        print(f"[{i}/{len(sections)} {name}: {now - t0:.1f} s, total {now - start:.1f} s]", flush=True)
+    print(f"figures in {OUT}; Monte Carlo executor: {EXECUTOR}")
     return 0
 
 

@@ -43,10 +43,12 @@ def __getattr__(name: str):
         "algebra",
         "operational",
         "nonlinear",
+        "codegen",
         "identification",
         "linear",
         "plotting",
         "cli",
+        "scene",
     }:
         return importlib.import_module(f".{name}", __name__)
     raise AttributeError(f"module 'symosc' has no attribute {name!r}")

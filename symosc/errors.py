@@ -6,7 +6,16 @@ Every error says what was wrong and what to do about it.  All derive from :class
 
 from __future__ import annotations
 
-__all__ = ["ConvergenceError", "IdentificationError", "ModelError", "ParameterError", "SymoscError"]
+__all__ = [
+    "AccuracyWarning",
+    "ConvergenceError",
+    "IdentificationError",
+    "ModelError",
+    "ParameterError",
+    "SeriesWarning",
+    "SymoscError",
+    "SymoscWarning",
+]
 
 
 class SymoscError(Exception):
@@ -37,3 +46,15 @@ class ConvergenceError(SymoscError, ArithmeticError):
 
 class IdentificationError(SymoscError, ValueError):
     """Identification is impossible or ill-conditioned (repeated frequencies, rank deficiency, ...)."""
+
+
+class SymoscWarning(UserWarning):
+    """Base class of the warnings symosc issues: the result is returned but may be inaccurate."""
+
+
+class SeriesWarning(SymoscWarning):
+    """A truncated series was evaluated where it is not reliable (beyond its estimated radius of convergence)."""
+
+
+class AccuracyWarning(SymoscWarning):
+    """A result is returned, but the problem's conditioning limits its accuracy (the message gives the estimate)."""

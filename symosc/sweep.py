@@ -5,34 +5,44 @@
 results come back in grid order whatever the executor, and a point whose call raises is recorded (with its
 parameters and traceback) in ``failures`` instead of stopping the sweep.
 
-Executors: ``"serial"``; ``"processes"`` (:class:`concurrent.futures.ProcessPoolExecutor`; the default when the grid
-has at least ``PROCESS_THRESHOLD`` points and the machine more than one core); any
+Executors: ``"serial"``; ``"processes"`` (:class:`concurrent.futures.ProcessPoolExecutor`); ``"auto"`` (the
+default: the first chunk runs serially and is timed; the rest goes to a process pool only when the measured cost
+says it pays, and the result's ``executor_note`` says what was chosen and why); any
 :class:`concurrent.futures.Executor` you created; a Dask ``distributed.Client`` or a scheduler address string
 (``"tcp://host:8786"``; dask is imported only then).  ``func`` must be picklable (a module-level function or a
-:func:`functools.partial` of one) for every executor except ``"serial"``.
+:func:`functools.partial` of one) for every executor except ``"serial"``.  Each chunk travels as one object (the
+function, the axes and a range of point indices; the points are generated where they run).
 """
 
 from __future__ import annotations
 
+import difflib
+import functools
 import itertools
 import math
 import os
 import pickle
 import sys
+import time
 import traceback
 import warnings
 from collections.abc import Callable, Mapping
-from concurrent.futures import Executor, ProcessPoolExecutor
+from concurrent.futures import Executor
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from . import _sweep_tasks as _tasks
 from .errors import ParameterError
 
 __all__ = ["PROCESS_THRESHOLD", "SweepFailure", "SweepResult", "sweep"]
 
+#: "auto" never starts processes for fewer points than this
 PROCESS_THRESHOLD = 256
+#: "auto" starts a process pool only when the serial estimate for the remaining points exceeds this (seconds)
+AUTO_PARALLEL_SECONDS = 2.0
+_EXECUTOR_NAMES = ("auto", "serial", "processes")
 
 
 @dataclass(frozen=True)
@@ -60,12 +70,19 @@ class SweepResult:
     failures : list of SweepFailure
     executor : str
         What ran the sweep.
+    executor_note : str
+        Why (for ``executor="auto"``: the measured cost of the first chunk).
+    interrupted : bool
+        True when Ctrl-C stopped the sweep; points that did not run are NaN/None and listed in ``failures`` with
+        the error ``"KeyboardInterrupt: not run"``.
     """
 
     values: np.ndarray
     grid: dict[str, np.ndarray]
     failures: list[SweepFailure]
     executor: str
+    executor_note: str = ""
+    interrupted: bool = False
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -87,43 +104,63 @@ class SweepResult:
 
     def __repr__(self) -> str:
         axes = ", ".join(f"{k}[{v.size}]" for k, v in self.grid.items())
+        extra = ", interrupted=True" if self.interrupted else ""
         return (
             f"SweepResult(grid=({axes}), values dtype={self.values.dtype}, shape={self.values.shape}, "
-            f"failures={len(self.failures)}, executor={self.executor!r})"
+            f"failures={len(self.failures)}, executor={self.executor!r}{extra})"
         )
 
+    def _value_dims(self) -> list[str]:
+        return [f"value_dim_{i}" for i in range(self.values.ndim - len(self.grid))]
 
-def _run_chunk(func: Callable[..., Any], names: tuple[str, ...], chunk: list[tuple[Any, ...]], constants: dict) -> list:
-    out = []
-    for values in chunk:
+    def to_xarray(self, name: str = "value"):
+        """The values as an ``xarray.DataArray`` with one coordinate per grid axis (named after it).
+
+        Array-valued results add trailing dimensions ``value_dim_0, ...``.  Needs xarray (``pip install xarray``).
+
+        Examples
+        --------
+        >>> res = sweep(lambda x, y: x * y, {"x": [1.0, 2.0], "y": [10.0, 20.0, 30.0]}, executor="serial")
+        >>> da = res.to_xarray()
+        >>> float(da.sel(x=2.0, y=30.0))
+        60.0
+
+        See Also
+        --------
+        to_pandas
+        """
         try:
-            out.append((True, func(**dict(zip(names, values, strict=True)), **constants)))
-        except Exception as exc:  # a failing point must not kill the sweep
-            out.append((False, (f"{type(exc).__name__}: {exc}", traceback.format_exc())))
-    return out
+            import xarray as xr
+        except ImportError:
+            raise ImportError("SweepResult.to_xarray needs xarray: pip install xarray") from None
+        dims = [*self.grid, *self._value_dims()]
+        return xr.DataArray(self.values, coords=dict(self.grid), dims=dims, name=name)
 
+    def to_pandas(self, name: str = "value"):
+        """The values as a ``pandas.Series`` indexed by a MultiIndex named after the grid axes.
 
-class _Progress:
-    def __init__(self, total: int, enabled: bool):
-        self.total, self.done, self.enabled = total, 0, enabled
-        self._last = -1
+        Array-valued results give a ``DataFrame`` with one column per entry of the flattened value.  Needs pandas.
 
-    def update(self, n: int) -> None:
-        self.done += n
-        if not self.enabled:
-            return
-        pct = int(100 * self.done / max(self.total, 1))
-        if pct != self._last:
-            self._last = pct
-            width = 30
-            filled = width * self.done // max(self.total, 1)
-            sys.stderr.write(f"\rsweep [{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.total} ({pct}%)")
-            sys.stderr.flush()
+        Examples
+        --------
+        >>> res = sweep(lambda x, y: x * y, {"x": [1.0, 2.0], "y": [10.0, 20.0]}, executor="serial")
+        >>> s = res.to_pandas()
+        >>> list(s.index.names), float(s.loc[(2.0, 20.0)])
+        (['x', 'y'], 40.0)
 
-    def close(self) -> None:
-        if self.enabled:
-            sys.stderr.write("\n")
-            sys.stderr.flush()
+        See Also
+        --------
+        to_xarray
+        """
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("SweepResult.to_pandas needs pandas: pip install pandas") from None
+        index = pd.MultiIndex.from_product(list(self.grid.values()), names=list(self.grid))
+        n = len(index)
+        if self.values.ndim == len(self.grid):
+            return pd.Series(self.values.reshape(n), index=index, name=name)
+        return pd.DataFrame(self.values.reshape(n, -1), index=index)
 
 
 def _axes(grid: Mapping[str, Any]) -> dict[str, np.ndarray]:
@@ -146,11 +183,16 @@ def _axes(grid: Mapping[str, Any]) -> dict[str, np.ndarray]:
     return axes
 
 
+_REAL_TYPES = frozenset({int, float, bool, np.float64, np.float32, np.int64, np.int32, np.bool_})
+
+
 def _pack(results: list, shape: tuple[int, ...], failed: set[int]) -> np.ndarray:
+    if not failed and set(map(type, results)) <= _REAL_TYPES:
+        return np.fromiter(results, dtype=float, count=len(results)).reshape(shape)
     good = [r for i, r in enumerate(results) if i not in failed]
 
     def is_real_scalar(v: Any) -> bool:
-        return isinstance(v, (int, float, np.integer, np.floating, np.bool_, bool))
+        return isinstance(v, int | float | np.integer | np.floating | np.bool_ | bool)
 
     if good and all(is_real_scalar(v) for v in good):
         out = np.full(len(results), np.nan)
@@ -172,15 +214,68 @@ def _pack(results: list, shape: tuple[int, ...], failed: set[int]) -> np.ndarray
     return out.reshape(shape)
 
 
+def _positional(func, names: tuple[str, ...]) -> bool:
+    """True when ``func(*values)`` means ``func(**dict(zip(names, values)))`` (leading parameters named so)."""
+    import inspect
+
+    try:
+        params = list(inspect.signature(func).parameters.values())
+    except (TypeError, ValueError):
+        return False
+    if len(params) < len(names):
+        return False
+    return all(
+        p.name == name and p.kind is inspect.Parameter.POSITIONAL_OR_KEYWORD
+        for p, name in zip(params, names, strict=False)
+    )
+
+
+def _serial_plain(func, names, points, consts, results, start, stop, nan_error, finished, bad, positional) -> None:
+    """The serial hot loop (no timeout): fill ``results[start:stop]``, append ``(i, error, traceback)`` to ``bad``.
+
+    On Ctrl-C the points already run are marked in ``finished`` before ``KeyboardInterrupt`` propagates.
+    """
+    n_bad = len(bad)
+    out: list = []
+    if positional and len(names) == 1:  # points are the values themselves
+        call = functools.partial(map, functools.partial(func, **consts) if consts else func)
+    elif positional:
+        call = functools.partial(itertools.starmap, functools.partial(func, **consts) if consts else func)
+    else:
+        call = functools.partial(map, lambda p: func(**dict(zip(names, p, strict=True)), **consts))
+    it = iter(points)
+    try:
+        while True:
+            try:
+                out.extend(call(it))  # a C loop; on an exception the points before it are already in ``out``
+                break
+            except (Exception, SystemExit) as exc:  # the failing point was consumed: record it and go on
+                bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                out.append(None)
+    except KeyboardInterrupt:
+        results[start : start + len(out)] = out
+        finished[start : start + len(out)] = True
+        raise
+    results[start:stop] = out
+    finished[start:stop] = True
+    if nan_error:
+        failed = {b[0] for b in bad[n_bad:]}
+        for j in range(start, stop):
+            if j not in failed and _tasks._nonfinite(results[j]):
+                bad.append((j, f"{_tasks.NONFINITE}: {results[j]!r}", ""))
+
+
 def sweep(
     func: Callable[..., Any],
     grid: Mapping[str, Any],
     *,
-    executor: Any = None,
+    executor: Any = "auto",
     chunksize: int | None = None,
     progress: bool | None = None,
     constants: Mapping[str, Any] | None = None,
     max_workers: int | None = None,
+    timeout: float | None = None,
+    nan: str = "keep",
 ) -> SweepResult:
     """Evaluate ``func(**point, **constants)`` on the Cartesian product of ``grid``.
 
@@ -190,22 +285,42 @@ def sweep(
         Called with keyword arguments named like the grid axes (plus ``constants``).
     grid : mapping of str -> 1-D array_like
         The axes; the result has shape ``tuple(len(axis) for axis in grid.values())``.
-    executor : None, "serial", "processes", Executor, distributed.Client or str
-        ``None`` picks ``"processes"`` for grids of at least ``PROCESS_THRESHOLD`` points (when there is more than
-        one CPU and ``func`` pickles) and ``"serial"`` otherwise.  A string other than "serial"/"processes" is a
-        Dask scheduler address; a ``distributed.Client`` is used as is (not closed).
+    executor : "auto", "serial", "processes", Executor, distributed.Client or str
+        ``"auto"`` (or ``None``) runs a first chunk serially, measures its cost per point and sends the rest to a
+        process pool only when the grid has at least ``PROCESS_THRESHOLD`` points, the serial estimate for the
+        rest exceeds ``AUTO_PARALLEL_SECONDS``, there is more than one CPU and ``func`` pickles; the choice and
+        the measurement are in ``SweepResult.executor_note``.  A string containing ``"://"`` or ``":"`` is a Dask
+        scheduler address; a ``distributed.Client`` is used as is (not closed).
     chunksize : int, optional
-        Points per task (default: about 4 chunks per worker, at least 1).
+        Points per task (default: about 4 chunks per worker; serially, chunks of ~1 % for the progress bar).
     progress : bool, optional
-        Text progress bar on stderr (default: only when stderr is a terminal).
+        Progress bar (tqdm when installed -- terminals and Jupyter -- else text on stderr); default: only when
+        stderr is a terminal.
     constants : mapping, optional
         Extra keyword arguments passed unchanged to every call.
     max_workers : int, optional
-        Size of the process pool for ``"processes"``.
+        Size of the process pool for ``"processes"`` (and ``"auto"``).
+    timeout : float, optional
+        Seconds allowed per point; a point that runs longer is reported as a failure (``TimeoutError``).  Needs a
+        POSIX timer in the process running the point: ``"serial"`` (main thread), ``"processes"`` and ``"auto"``.
+    nan : {"keep", "error"}
+        ``"keep"``: NaN/inf results are values; ``"error"``: such points are reported as failures.
 
     Returns
     -------
     SweepResult
+        A point whose call raises (or exits through ``SystemExit``) is a failure with its parameters; Ctrl-C
+        (``KeyboardInterrupt``) stops the sweep and returns the finished points with ``interrupted=True``.
+
+    Raises
+    ------
+    ParameterError
+        Bad grid, chunksize, max_workers, timeout or nan; an executor name that is not one of "auto", "serial",
+        "processes" (nor an address); an unpicklable ``func`` for a parallel executor.
+
+    See Also
+    --------
+    SweepResult.to_xarray, SweepResult.to_pandas
 
     Examples
     --------
@@ -216,86 +331,215 @@ def sweep(
     >>> res = sweep(lambda x: math.log(x), {"x": [1.0, -1.0]}, executor="serial")
     >>> res.values.tolist(), res.failures[0].params, res.failures[0].error
     ([0.0, nan], {'x': -1.0}, 'ValueError: math domain error')
+    >>> sweep(lambda x: x / 0.0 if x else math.inf, {"x": [0.0]}, nan="error").failures[0].error
+    'non-finite result: inf'
     """
     if not callable(func):
         raise ParameterError(f"func must be callable, got {func!r}")
     axes = _axes(grid)
     names = tuple(axes)
     shape = tuple(a.size for a in axes.values())
-    points = list(itertools.product(*(a.tolist() for a in axes.values())))
-    total = len(points)
+    axes_lists = tuple(a.tolist() for a in axes.values())
+    total = math.prod(shape)
     consts = dict(constants or {})
     if progress is None:
         progress = bool(getattr(sys.stderr, "isatty", lambda: False)())
-
-    if chunksize is not None and (int(chunksize) != chunksize or chunksize < 1):
+    if chunksize is not None and (isinstance(chunksize, bool) or int(chunksize) != chunksize or chunksize < 1):
         raise ParameterError(f"chunksize must be a positive integer, got {chunksize!r}")
-    if max_workers is not None and (int(max_workers) != max_workers or max_workers < 1):
+    if max_workers is not None and (
+        isinstance(max_workers, bool) or int(max_workers) != max_workers or max_workers < 1
+    ):
         raise ParameterError(f"max_workers must be a positive integer, got {max_workers!r}")
-    ncpu = os.cpu_count() or 1
-    kind, client, own_client = _resolve_executor(executor, func, total, ncpu)
-    workers = max_workers or (ncpu if kind == "processes" else 1)
+    if nan not in ("keep", "error"):
+        raise ParameterError(f"nan must be 'keep' or 'error', got {nan!r}")
+    if timeout is not None:
+        if isinstance(timeout, bool) or not isinstance(timeout, int | float) or not (0 < timeout < math.inf):
+            raise ParameterError(f"timeout must be a positive number of seconds, got {timeout!r}")
+        timeout = float(timeout)
+    kind, client, own_client = _resolve_executor(executor, func)
+    ncpu = (os.cpu_count() or 1) if kind != "serial" else 1
+    if timeout is not None and kind not in ("auto", "serial", "processes"):
+        raise ParameterError(
+            "timeout= needs executor 'serial', 'processes' or 'auto' (a per-point timer in the worker process); "
+            f"got {kind!r}: bound the run time inside func instead"
+        )
+    if timeout is not None and kind in ("auto", "serial") and not _tasks.timer_available():
+        raise ParameterError("timeout= with a serial sweep needs a POSIX system and the main thread")
+    workers = int(max_workers or (ncpu if kind in ("processes", "auto") else 1))
     if kind == "dask":
         workers = max(1, len(client.scheduler_info().get("workers", {})) or 1)
-    if chunksize is None:
-        chunksize = max(1, math.ceil(total / (4 * max(workers, 1))))
-    chunks = [points[i : i + int(chunksize)] for i in range(0, total, int(chunksize))]
+    elif kind == "executor":
+        workers = max(1, getattr(client, "_max_workers", 1) or 1)
 
-    bar = _Progress(total, progress)
-    results: list[Any] = [None] * total
-    failures: list[SweepFailure] = []
-    failed: set[int] = set()
-
-    def result(ci: int, fut: Any) -> list:
-        """A chunk whose task itself died (worker crash, unpicklable result) marks all its points as failed."""
+    state = _State(total, shape, names, axes_lists, progress)
+    note = ""
+    try:
         try:
-            return fut.result()
-        except Exception as exc:
-            msg = f"chunk failed: {type(exc).__name__}: {exc}"
-            return [(False, (msg, traceback.format_exc()))] * len(chunks[ci])
+            if kind in ("auto", "serial"):
+                first = min(total, int(chunksize) if chunksize else max(1, min(64, total)))
+                t0 = time.perf_counter()
+                state.run_serial(func, consts, 0, first, timeout, nan)
+                per_point = (time.perf_counter() - t0) / first
+                start = first
+                if kind == "auto":
+                    kind, note = _auto_choice(func, total, first, per_point, ncpu, workers)
+                    state.bar.note(kind)
+                if kind == "serial":
+                    step = int(chunksize) if chunksize else (max(1, math.ceil(total / 100)) if progress else total)
+                    while start < total:
+                        stop = min(total, start + step)
+                        state.run_serial(func, consts, start, stop, timeout, nan)
+                        start = stop
+            else:
+                start = 0
+            if kind != "serial" and start < total:
+                size = int(chunksize) if chunksize else max(1, math.ceil((total - start) / (4 * workers)))
+                tasks = [
+                    _tasks.Task(func, names, axes_lists, consts, a, min(total, a + size), timeout, nan)
+                    for a in range(start, total, size)
+                ]
+                state.run_parallel(kind, client, tasks, workers)
+        except KeyboardInterrupt:
+            state.interrupted = True
+    finally:
+        state.bar.close()
+        if own_client:
+            client.close()
+    label = type(client).__name__ if kind == "executor" else kind
+    return state.result(axes, label, note)
 
-    def collect(ci: int, out: list) -> None:
-        start = ci * int(chunksize)
+
+def _auto_choice(func, total: int, done: int, per_point: float, ncpu: int, workers: int) -> tuple[str, str]:
+    rest = (total - done) * per_point
+    measured = f"first {done} points: {per_point * 1e6:.3g} us/point, serial estimate for the rest {rest:.3g} s"
+    if total < PROCESS_THRESHOLD or ncpu < 2 or workers < 2:
+        return "serial", f"auto -> serial ({measured}; fewer than {PROCESS_THRESHOLD} points or one CPU)"
+    if rest < AUTO_PARALLEL_SECONDS:
+        return "serial", f"auto -> serial ({measured} < {AUTO_PARALLEL_SECONDS} s)"
+    if not _picklable(func):
+        warnings.warn("sweep: func cannot be pickled; running serially", RuntimeWarning, stacklevel=4)
+        return "serial", f"auto -> serial ({measured}; func cannot be pickled)"
+    return "processes", f"auto -> processes ({measured} >= {AUTO_PARALLEL_SECONDS} s)"
+
+
+class _State:
+    """Results, failures and progress of one sweep."""
+
+    def __init__(self, total, shape, names, axes_lists, progress):
+        self.total, self.shape, self.names, self.axes_lists = total, shape, names, axes_lists
+        self.results: list[Any] = [None] * total
+        self.bad: list[tuple[int, str, str]] = []
+        self.finished = np.zeros(total, dtype=bool) if total else np.zeros(0, dtype=bool)
+        self.interrupted = False
+        self.bar = _tasks.Progress(total, progress)
+        self._points = itertools.product(*axes_lists)  # serial chunks run in order and share this iterator
+        self._next = 0
+        self._call_style: dict[int, bool] = {}
+
+    def _positional(self, func) -> bool:
+        key = id(func)
+        if key not in self._call_style:
+            self._call_style[key] = _positional(func, self.names)
+        return self._call_style[key]
+
+    def run_serial(self, func, consts, start, stop, timeout, nan) -> None:
+        if timeout is not None:
+            task = _tasks.Task(func, self.names, self.axes_lists, consts, start, stop, timeout, nan)
+            self.collect(start, _tasks.run_task(task))  # (updates the bar)
+            return
+        positional = self._positional(func)
+        if len(self.names) == 1 and positional:
+            points = self.axes_lists[0][start:stop]  # the values themselves
+        else:
+            if start != self._next:  # bring the shared product iterator to ``start`` (it only moves forward)
+                for _ in itertools.islice(self._points, start - self._next):
+                    pass
+            points = itertools.islice(self._points, stop - start)
+            self._next = stop
+        _serial_plain(
+            func,
+            self.names,
+            points,
+            consts,
+            self.results,
+            start,
+            stop,
+            nan == "error",
+            self.finished,
+            self.bad,
+            positional,
+        )
+        self.bar.update(stop - start)
+
+    def collect(self, start: int, out: list) -> None:
         for j, (ok, val) in enumerate(out):
             i = start + j
             if ok:
-                results[i] = val
+                self.results[i] = val
             else:
-                failed.add(i)
-                idx = tuple(int(v) for v in np.unravel_index(i, shape))
-                failures.append(
-                    SweepFailure(
-                        index=idx, params=dict(zip(names, points[i], strict=True)), error=val[0], traceback=val[1]
-                    )
-                )
-        bar.update(len(out))
+                self.bad.append((i, val[0], val[1]))
+        self.finished[start : start + len(out)] = True
+        self.bar.update(len(out))
 
-    try:
-        if kind == "serial":
-            for ci, ch in enumerate(chunks):
-                collect(ci, _run_chunk(func, names, ch, consts))
-        elif kind == "dask":
-            futs = client.map(
-                _run_chunk, [func] * len(chunks), [names] * len(chunks), chunks, [consts] * len(chunks), pure=False
-            )
-            for ci, fut in enumerate(futs):
-                collect(ci, result(ci, fut))
-        else:
-            pool = ProcessPoolExecutor(max_workers=workers) if kind == "processes" else client
+    def chunk_failed(self, task, exc: BaseException) -> None:
+        msg = f"chunk failed: {type(exc).__name__}: {exc}"
+        tb = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__))
+        self.collect(task.start, [(False, (msg, tb))] * (task.stop - task.start))
+
+    def run_parallel(self, kind, client, tasks, workers) -> None:
+        if kind == "dask":
+            futs = client.map(_tasks.run_task, tasks, pure=False)
             try:
-                futs = [pool.submit(_run_chunk, func, names, ch, consts) for ch in chunks]
-                for ci, fut in enumerate(futs):
-                    collect(ci, result(ci, fut))
-            finally:
-                if kind == "processes":
-                    pool.shutdown()
-    finally:
-        bar.close()
-        if own_client:
-            client.close()
-    failures.sort(key=lambda f: f.index)
-    label = type(client).__name__ if kind == "executor" else kind
-    return SweepResult(values=_pack(results, shape, failed), grid=axes, failures=failures, executor=label)
+                for task, fut in zip(tasks, futs, strict=True):
+                    try:
+                        self.collect(task.start, fut.result())
+                    except Exception as exc:
+                        self.chunk_failed(task, exc)
+            except KeyboardInterrupt:
+                client.cancel(futs)
+                raise
+            return
+        if kind == "processes":
+            from concurrent.futures import ProcessPoolExecutor
+
+            pool = ProcessPoolExecutor(max_workers=workers)
+        else:
+            pool = client
+        futs = []
+        try:
+            futs = [pool.submit(_tasks.run_task, task) for task in tasks]
+            for task, fut in zip(tasks, futs, strict=True):
+                try:
+                    self.collect(task.start, fut.result())
+                except Exception as exc:
+                    self.chunk_failed(task, exc)
+        except KeyboardInterrupt:
+            for fut in futs:
+                fut.cancel()
+            if kind == "processes":
+                pool.shutdown(wait=False, cancel_futures=True)
+                kind = "done"
+            raise
+        finally:
+            if kind == "processes":
+                pool.shutdown()
+
+    def result(self, axes, label: str, note: str) -> SweepResult:
+        failed = {b[0] for b in self.bad}
+        for i in np.nonzero(~self.finished)[0].tolist() if self.interrupted else ():
+            self.results[i] = None
+        if self.interrupted:
+            for i in np.nonzero(~self.finished)[0].tolist():
+                self.bad.append((i, "KeyboardInterrupt: not run", ""))
+                failed.add(i)
+        self.bad.sort(key=lambda b: b[0])
+        failures = []
+        for i, err, tb in self.bad:
+            idx = tuple(int(v) for v in np.unravel_index(i, self.shape))
+            params = dict(zip(self.names, _tasks.point_values(self.axes_lists, i), strict=True))
+            failures.append(SweepFailure(index=idx, params=params, error=err, traceback=tb))
+        values = _pack(self.results, self.shape, failed)
+        return SweepResult(values, axes, failures, label, note, self.interrupted)
 
 
 def _picklable(obj: Any) -> bool:
@@ -306,16 +550,12 @@ def _picklable(obj: Any) -> bool:
     return True
 
 
-def _resolve_executor(executor: Any, func: Any, total: int, ncpu: int) -> tuple[str, Any, bool]:
+def _resolve_executor(executor: Any, func: Any) -> tuple[str, Any, bool]:
     if executor is None:
-        if total >= PROCESS_THRESHOLD and ncpu > 1:
-            if _picklable(func):
-                return "processes", None, False
-            warnings.warn("sweep: func cannot be pickled; running serially", RuntimeWarning, stacklevel=3)
-        return "serial", None, False
+        executor = "auto"
     if isinstance(executor, str):
-        if executor == "serial":
-            return "serial", None, False
+        if executor in ("auto", "serial"):
+            return executor, None, False
         if executor == "processes":
             if not _picklable(func):
                 raise ParameterError(
@@ -323,12 +563,19 @@ def _resolve_executor(executor: Any, func: Any, total: int, ncpu: int) -> tuple[
                     "one, not a lambda or closure); use executor='serial' otherwise"
                 )
             return "processes", None, False
+        if ":" not in executor:
+            close = difflib.get_close_matches(executor, _EXECUTOR_NAMES, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise ParameterError(
+                f"executor={executor!r} is not one of {_EXECUTOR_NAMES}{hint}; a Dask scheduler address looks like "
+                "'tcp://host:8786'"
+            )
         try:
             from distributed import Client
         except ImportError:  # pragma: no cover - depends on the environment
             raise ParameterError(
-                f"executor={executor!r} is not 'serial' or 'processes', so it must be a Dask scheduler address, "
-                "but dask.distributed is not installed (pip install 'dask[distributed]')"
+                f"executor={executor!r} is a Dask scheduler address, but dask.distributed is not installed "
+                "(pip install 'dask[distributed]')"
             ) from None
         return "dask", Client(executor), True
     if type(executor).__module__.split(".")[0] == "distributed":
@@ -336,6 +583,6 @@ def _resolve_executor(executor: Any, func: Any, total: int, ncpu: int) -> tuple[
     if isinstance(executor, Executor):
         return "executor", executor, False
     raise ParameterError(
-        f"executor must be None, 'serial', 'processes', a concurrent.futures.Executor, a distributed.Client or a "
+        f"executor must be 'auto', 'serial', 'processes', a concurrent.futures.Executor, a distributed.Client or a "
         f"scheduler address; got {executor!r}"
     )

@@ -54,3 +54,9 @@ def sort_symbols(symbols: Iterable[sp.Symbol]) -> tuple[sp.Symbol, ...]:
     (g, m2, m10)
     """
     return tuple(sorted(set(symbols), key=natural_key))
+
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from ._validate import guard_public_api as _guard_public_api  # noqa: E402
+
+_guard_public_api(__name__)

@@ -30,5 +30,8 @@ def test_quick_start_has_exactly_two_commands():
     quick = text.split("## Quick start", 1)[1].split("\n## ", 1)[0]
     commands = re.findall(r"```bash\n(.*?)```", quick, flags=re.S)
     assert len(commands) == 2
+    # the main job runs a shipped scene (tests/scene and tests/test_cli.py check what it prints)
+    assert commands[0].strip() == 'pip install ".[plot]" && symosc run examples/gribkov2015.toml'
+    assert (README.parent / "examples" / "gribkov2015.toml").is_file()
     ci = (README.parent / ".ci" / "run").read_text()
     assert "python -m pytest -n 2" in commands[1] and "python -m pytest -n 2" in ci

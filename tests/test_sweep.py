@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -100,13 +101,33 @@ def test_default_executor_small_grid_is_serial_and_progress(capsys):
     assert res.executor == "serial"
     assert res.values.tolist() == [11.0, 21.0, 31.0]
     err = capsys.readouterr().err
-    assert "3/3 (100%)" in err
+    assert "3/3" in err  # tqdm's bar (or the text bar without tqdm)
+    assert res.executor_note.startswith("auto -> serial")
 
 
-def test_default_large_grid_unpicklable_falls_back_to_serial():
-    with pytest.warns(RuntimeWarning, match="cannot be pickled"):
-        res = sweep(lambda x: x + 1, {"x": np.arange(300)})
+def _slow_square(x):
+    import time
+
+    time.sleep(0.002)
+    return x * x
+
+
+def test_auto_measures_a_first_chunk_and_decides(monkeypatch):
+    """Cheap points stay serial; points whose measured cost makes the rest long go to processes (or serial when
+    func cannot be pickled, with a warning)."""
+    sw = sys.modules["symosc.sweep"]
+
+    res = sweep(lambda x: x + 1, {"x": np.arange(300)})
     assert res.executor == "serial" and res.values[-1] == 300
+    assert "us/point" in res.executor_note
+    monkeypatch.setattr(sw, "AUTO_PARALLEL_SECONDS", 0.05)
+    monkeypatch.setattr(sw.os, "cpu_count", lambda: 2)
+    res = sweep(_slow_square, {"x": np.arange(300.0)}, max_workers=2)
+    assert res.executor == "processes" and "auto -> processes" in res.executor_note
+    assert res.values.tolist() == [v * v for v in range(300)]
+    with pytest.warns(RuntimeWarning, match="cannot be pickled"):
+        res = sweep(lambda x: _slow_square(x) + 1, {"x": np.arange(300.0)})
+    assert res.executor == "serial" and res.values[-1] == 299.0**2 + 1
 
 
 def test_bad_input():
@@ -126,6 +147,14 @@ def test_bad_input():
         sweep(_vector, {"x": [1]}, executor="processes", max_workers=0)
     with pytest.raises(ParameterError, match="executor must be"):
         sweep(_vector, {"x": [1]}, executor=42)
+    with pytest.raises(ParameterError, match=r"'auto', 'serial', 'processes'\) \(did you mean 'processes'"):
+        sweep(_vector, {"x": [1]}, executor="proceses")
+    with pytest.raises(ParameterError, match="nan must be"):
+        sweep(_vector, {"x": [1]}, nan="drop")
+    with pytest.raises(ParameterError, match="timeout must be"):
+        sweep(_vector, {"x": [1]}, timeout=-1)
+    with ThreadPoolExecutor(1) as pool, pytest.raises(ParameterError, match="timeout= needs"):
+        sweep(_vector, {"x": [1]}, executor=pool, timeout=1.0)
 
 
 def _unpicklable_result(x):
@@ -136,3 +165,67 @@ def test_chunk_that_cannot_return_is_reported():
     res = sweep(_unpicklable_result, {"x": [1, 2]}, executor="processes", chunksize=1, max_workers=1)
     assert len(res.failures) == 2 and "chunk failed" in res.failures[0].error
     assert res.values.tolist() == [None, None]
+
+
+def _exits(x):
+    if x == 2:
+        raise SystemExit(3)
+    return x
+
+
+def _nan_at(x):
+    return math.nan if x == 1 else (math.inf if x == 2 else float(x))
+
+
+def _sleepy(x):
+    import time
+
+    time.sleep(5.0 if x == 1 else 0.0)
+    return x
+
+
+@pytest.mark.parametrize("executor", ["serial", "processes"])
+def test_system_exit_nan_and_timeout_are_failures_of_their_point(executor):
+    kw = {"executor": executor, "max_workers": 2} if executor == "processes" else {"executor": executor}
+    res = sweep(_exits, {"x": [1, 2, 3]}, **kw)
+    assert res.values[0] == 1.0 and res.values[2] == 3.0 and np.isnan(res.values[1])
+    assert [(f.params, f.error) for f in res.failures] == [({"x": 2}, "SystemExit: 3")]
+    kept = sweep(_nan_at, {"x": [0, 1, 2]}, **kw)
+    assert kept.failures == [] and np.isnan(kept.values[1]) and np.isinf(kept.values[2])
+    err = sweep(_nan_at, {"x": [0, 1, 2]}, nan="error", **kw)
+    assert [f.index for f in err.failures] == [(1,), (2,)]
+    assert err.failures[0].error.startswith("non-finite result")
+    timed = sweep(_sleepy, {"x": [0, 1, 2]}, timeout=0.2, **kw)
+    assert [(f.params, f.error.split(":")[0]) for f in timed.failures] == [({"x": 1}, "TimeoutError")]
+    assert timed.values[0] == 0 and timed.values[2] == 2
+
+
+def _interrupt_at_5(x):
+    if x == 5:
+        raise KeyboardInterrupt
+    return x
+
+
+def test_ctrl_c_stops_cleanly_keeping_finished_points():
+    res = sweep(_interrupt_at_5, {"x": np.arange(10)}, executor="serial", chunksize=3)
+    assert res.interrupted
+    assert res.values[:5].tolist() == [0.0, 1.0, 2.0, 3.0, 4.0]
+    assert np.isnan(res.values[5:]).all()
+    assert [f.index[0] for f in res.failures] == [5, 6, 7, 8, 9]
+    assert res.failures[0].error == "KeyboardInterrupt: not run"
+
+
+def test_labelled_results_and_pickle():
+    import pickle
+
+    res = sweep(_fragile, {"a": [1, 2, 3], "b": [-1, 1]}, executor="serial")
+    da = res.to_xarray()
+    assert da.dims == ("a", "b")
+    assert float(da.sel(a=3, b=-1)) == 29.0 and np.isnan(float(da.sel(a=2, b=-1)))
+    series = res.to_pandas()
+    assert list(series.index.names) == ["a", "b"] and series.loc[(3, 1)] == 31.0
+    vec = sweep(_vector, {"x": [1.0, 2.0]}, executor="serial").to_xarray()
+    assert vec.dims == ("x", "value_dim_0") and vec.sel(x=2.0).values.tolist() == [0.0, 2.0, 4.0]
+    back = pickle.loads(pickle.dumps(res))
+    assert np.array_equal(back.values, res.values, equal_nan=True)
+    assert back.failures == res.failures and back.grid.keys() == res.grid.keys()

@@ -7,10 +7,21 @@
   :func:`smith_form`, :func:`minimal_polynomial`, :func:`polymatrix_divmod`, :func:`pencil_divisors`.
 * Characteristic polynomials — :func:`leverrier`, :func:`krylov`, :func:`danilevsky`, :func:`adjugate_poly`.
 * The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`.
+* Block matrices (§1.5–1.7) — :func:`block_inverse`, :func:`block_determinant`, :func:`bordering_inverse`,
+  :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
   :func:`luzin_form`.
 """
 
+from .block import (
+    BorderingInverse,
+    block_determinant,
+    block_inverse,
+    bordering_inverse,
+    cyclic_block_determinant,
+    triangular_adjugate_series,
+    triangular_inverse_series,
+)
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
@@ -30,6 +41,7 @@ from .polynomial_matrices import (
 from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
 
 __all__ = [
+    "BorderingInverse",
     "MatrixFunction",
     "Matrizant",
     "ModalMatrix",
@@ -39,7 +51,11 @@ __all__ = [
     "SpectralDecomposition",
     "TriangularForm",
     "adjugate_poly",
+    "block_determinant",
+    "block_inverse",
+    "bordering_inverse",
     "charpoly",
+    "cyclic_block_determinant",
     "danilevsky",
     "determinantal_divisors",
     "elementary_divisors",
@@ -61,4 +77,11 @@ __all__ = [
     "series_converges",
     "smith_form",
     "spectral_decomposition",
+    "triangular_adjugate_series",
+    "triangular_inverse_series",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

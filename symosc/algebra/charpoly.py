@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..errors import ModelError, ParameterError
-from ._util import as_square_matrix
+from ._util import as_square_matrix, is_float_matrix
 
 __all__ = ["adjugate_poly", "charpoly", "danilevsky", "krylov", "leverrier"]
 
@@ -138,7 +138,18 @@ def _danilevsky_factors(A: sp.Matrix, lam: sp.Symbol) -> list[sp.Expr]:
     factors: list[sp.Expr] = []
     end = n  # rows/cols end..n-1 are already split off
     r = n - 1
+    floating = is_float_matrix(A)
+    # floating point: partial pivoting (largest entry left of the diagonal), entries below the rounding level
+    # of ||A|| count as zero -- a 1e-17 pivot would otherwise put 1e17-sized numbers into the polynomial
+    small = 1e-13 * max((abs(complex(v)) for v in A), default=0.0) if floating else 0.0
     while r >= 1:
+        if floating:
+            j = max(range(r), key=lambda c: abs(complex(A[r, c])))
+            if abs(complex(A[r, j])) <= small:
+                A[r, :r] = sp.zeros(1, r)
+            elif j != r - 1:
+                A.row_swap(j, r - 1)
+                A.col_swap(j, r - 1)
         if _is_zero(A[r, r - 1]):
             j = next((j for j in range(r - 1) if not _is_zero(A[r, j])), None)
             if j is None:
@@ -169,7 +180,8 @@ def danilevsky(A: sp.Matrix, lam: sp.Symbol) -> sp.Poly:
     Row by row from the bottom, a similarity ``A -> M^-1 A M`` turns row r into the unit row ``e_(r-1)``.  A zero
     pivot is cured by a permutation similarity with an earlier column; when there is none the matrix is block
     upper-triangular and the characteristic polynomial is the product of the blocks' polynomials (the
-    degenerate case).
+    degenerate case).  Float matrices use partial pivoting (the largest entry of the row left of the diagonal)
+    and treat entries below ``1e-13 max|a_ij|`` as zero.
 
     Examples
     --------

@@ -2,13 +2,16 @@
 
 ``f(A) = Σ_σ [f(λ_σ) ε_σ + Σ_(p=1)^(e_σ-1) f^(p)(λ_σ)/p! η_σ^p]`` (1.287): simple roots give the plain Sylvester
 formula with projectors ``ε_σ = Π_(τ≠σ) (A - λ_τE)/(λ_σ - λ_τ)`` (1.278); multiple roots (non-linear elementary
-divisors) the confluent form.  For floating-point matrices nearly equal roots are grouped into clusters and f is
-interpolated in Newton form with divided differences computed from the Taylor series of f about each cluster
-centre, so no ``1/(λ_σ - λ_τ)`` with a small difference is ever formed.
+divisors) the confluent form.  For floating-point matrices the blocked Schur–Parlett algorithm (Davies & Higham,
+2003) is used: eigenvalues close relative to their own size form clusters, f on a cluster is the Newton
+interpolation polynomial with divided differences computed from the Taylor series of f about the cluster centre
+(so no ``1/(λ_σ - λ_τ)`` with a small difference is ever formed), and the clusters are coupled through triangular
+Sylvester equations, which keeps the accuracy on spectra spanning many decades.
 """
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -18,14 +21,9 @@ import sympy as sp
 
 from ..errors import ModelError, ParameterError
 from . import _taylor
+from ._schur_parlett import float_matrix_function
 from ._util import as_scalar_function, as_square_matrix, is_float_matrix
-from .spectral import (
-    SpectralDecomposition,
-    _float_decomposition,
-    float_spectrum,
-    newton_matrix,
-    spectral_decomposition,
-)
+from .spectral import SpectralDecomposition, _float_decomposition, spectral_decomposition
 
 __all__ = ["MatrixFunction", "matrix_function", "series_converges"]
 
@@ -81,7 +79,8 @@ def matrix_function(
     tol : float
         Floating point: relative size of the last Taylor terms kept in a cluster's divided differences.
     cluster_tol : float
-        Floating point: eigenvalues closer than ``cluster_tol * max(1, max|λ|)`` form a cluster.
+        Floating point: eigenvalues with ``|λ_i - λ_j| <= cluster_tol * max(|λ_i|, |λ_j|)`` (relative to their
+        own size, so a spectrum spanning many decades is not lumped together) are linked into a cluster.
 
     Returns
     -------
@@ -132,10 +131,8 @@ def matrix_function(
                 f"f has free parameters {names} but A has float entries; substitute numbers for them, or pass an "
                 "exact matrix (e.g. sympy.nsimplify(A)) for a symbolic result"
             )
-        value, decomp = _float_function(M, expr, x, method, tol, cluster_tol, spectral)
-        if as_numpy:
-            out = np.array(value.tolist(), dtype=complex)
-            value = out.real.copy() if not np.any(out.imag) else out
+        arr, decomp = _float_function(M, expr, x, method, tol, cluster_tol, spectral)
+        value = arr if as_numpy else _to_sympy(arr)
     else:
         decomp = spectral_decomposition(M)
         if method == "sylvester" and any(c.multiplicity > 1 for c in decomp.components):
@@ -157,8 +154,10 @@ def _is_real_function(expr: sp.Expr, x: sp.Symbol) -> bool:
 
 def _float_function(
     M: sp.Matrix, expr: sp.Expr, x: sp.Symbol, method: str, tol: float, cluster_tol: float, want_spectral: bool
-) -> tuple[sp.Matrix, SpectralDecomposition | None]:
+) -> tuple[np.ndarray, SpectralDecomposition | None]:
     An = np.array(M.evalf(), dtype=complex)
+    if not np.all(np.isfinite(An)):
+        raise ParameterError("A has non-finite entries (nan or inf); a matrix function needs finite entries")
     n = An.shape[0]
     source = _taylor.TaylorSource(expr, x)
     if method == "sylvester":
@@ -174,17 +173,34 @@ def _float_function(
                     P = P @ (An - lt * E) / (ls - lt)
             val += complex(source.coefficient(0, mpmath.mpmathify(complex(ls)))) * P
     else:
-        nodes, ranges = float_spectrum(An, cluster_tol)
-        coeffs = _taylor.divided_differences(nodes, ranges, source, tol=tol)
-        val = newton_matrix(An, nodes, coeffs)
+        val = float_matrix_function(An, source, tol, cluster_tol)
+    bad = ~np.isfinite(val)
+    if np.any(bad):
+        where = [(int(i), int(j)) for i, j in zip(*np.nonzero(bad), strict=False)]
+        warnings.warn(
+            f"f(A) overflows: entries {where[:10]}{' ...' if len(where) > 10 else ''} are not finite in double "
+            "precision (the other entries are accurate); pass an exact matrix for a symbolic result",
+            RuntimeWarning,
+            stacklevel=3,
+        )
     real_in = not np.any(An.imag)
-    scale = max(float(np.max(np.abs(val))), np.finfo(float).tiny)
-    if real_in and (_is_real_function(expr, x) or float(np.max(np.abs(val.imag))) <= 1e-13 * scale):
-        value = sp.Matrix(n, n, lambda i, j: sp.Float(val[i, j].real))
-    else:
-        value = sp.Matrix(n, n, lambda i, j: sp.Float(val[i, j].real) + sp.I * sp.Float(val[i, j].imag))
+    finite = val[~bad]
+    scale = max(float(np.max(np.abs(finite))) if finite.size else 0.0, np.finfo(float).tiny)
+    with np.errstate(invalid="ignore"):
+        small_imag = float(np.max(np.abs(np.where(bad, 0, val.imag)))) <= 1e-13 * scale
+    if real_in and (_is_real_function(expr, x) or small_imag):
+        val = val.real.copy()
+    elif not np.any(np.where(bad, 0, val.imag)):
+        val = val.real.copy()
     decomp = _float_decomposition(M, cluster_tol) if want_spectral else None
-    return value, decomp
+    return val, decomp
+
+
+def _to_sympy(val: np.ndarray) -> sp.Matrix:
+    n = val.shape[0]
+    if not np.iscomplexobj(val):
+        return sp.Matrix(n, n, lambda i, j: sp.Float(val[i, j]))
+    return sp.Matrix(n, n, lambda i, j: sp.Float(val[i, j].real) + sp.I * sp.Float(val[i, j].imag))
 
 
 def series_converges(A: Any, radius: Any, *, center: Any = 0, inner_radius: Any = 0) -> bool | None:

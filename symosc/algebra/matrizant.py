@@ -16,6 +16,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._validate import check_finite, check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import bind
 from ..numeric import compile as _compile
@@ -200,16 +201,26 @@ def matrizant_numeric(
     """
     from scipy.integrate import solve_ivp
 
+    t0, t1 = check_finite("t0", t0), check_finite("t1", t1)
+    rtol, atol = check_positive("rtol", rtol), check_positive("atol", atol)
     A = as_square_matrix(A)
     Ab = bind(A, values or {})
     free = Ab.free_symbols - {t}
     if free:
         raise ParameterError("missing values for: " + ", ".join(sorted(map(str, free))))
+    if Ab.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise ParameterError("A(t) has non-finite entries after substituting values (nan or inf parameter?)")
     n = A.rows
     f = _compile(Ab, [t]).raw
 
     def rhs(tt: float, y: np.ndarray) -> np.ndarray:
-        return (np.asarray(f(tt), dtype=float) @ y.reshape(n, n)).ravel()
+        At = np.asarray(f(tt), dtype=float)
+        if not np.all(np.isfinite(At)):
+            raise ParameterError(f"A(t) is not finite at t = {tt:.6g}; check the parameter values")
+        return (At @ y.reshape(n, n)).ravel()
+
+    if not np.all(np.isfinite(np.asarray(f(t0), dtype=float))):
+        raise ParameterError(f"A(t) is not finite at t0 = {t0:.6g}; check the parameter values")
 
     sol = solve_ivp(rhs, (float(t0), float(t1)), np.eye(n).ravel(), method="DOP853", rtol=rtol, atol=atol)
     if not sol.success:

@@ -21,8 +21,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
-from ..errors import ModelError
-from . import _taylor
+from ..errors import ModelError, ParameterError
+from ._schur_parlett import indicator_projectors, relative_clusters
 from ._util import as_square_matrix, is_float_matrix
 from .charpoly import adjugate_poly
 
@@ -211,6 +211,13 @@ def _exact_roots(A: sp.Matrix) -> list[tuple[sp.Expr, int]]:
     _, factors = sp.factor_list(poly.as_expr(), poly.gen)
     for fac, mult in factors:
         pf = sp.Poly(fac, poly.gen)
+        if pf.degree() >= 3 and pf.free_symbols - {poly.gen}:
+            raise ModelError(
+                f"det(λE - A) has an irreducible factor of degree {pf.degree()} with symbolic coefficients; its roots "
+                "are Cardano/Ferrari radicals and the projectors built from them grow beyond a practical size (a "
+                "generic symbolic 3x3 runs for minutes). Substitute numbers for some parameters (exact numbers "
+                "give exact CRootOf roots), or use sympy's eigenvals for the roots alone"
+            )
         if pf.degree() >= 3 and not A.free_symbols and pf.get_domain().is_Exact:
             rts = {}
             for r in pf.all_roots():
@@ -338,25 +345,10 @@ def _rational_decomposition(A: sp.Matrix, F: sp.Matrix, delta: sp.Poly, lam: sp.
 
 
 def _cluster(eigs: np.ndarray, cluster_tol: float) -> list[list[int]]:
-    """Single-linkage clusters of eigenvalues closer than ``cluster_tol * max(1, max|λ|)``."""
+    """Clusters of eigenvalues close relative to their own size, in Leja order of the centres."""
     n = len(eigs)
-    scale = max(1.0, float(np.max(np.abs(eigs)))) if n else 1.0
-    parent = list(range(n))
-
-    def find(i: int) -> int:
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    for i in range(n):
-        for j in range(i + 1, n):
-            if abs(eigs[i] - eigs[j]) <= cluster_tol * scale:
-                parent[find(i)] = find(j)
-    groups: dict[int, list[int]] = {}
-    for i in range(n):
-        groups.setdefault(find(i), []).append(i)
-    clusters = list(groups.values())
+    scale = float(np.max(np.abs(eigs))) if n else 1.0
+    clusters = relative_clusters(eigs, cluster_tol, scale)
     # Leja order of the centres: start with the largest, then maximise the product of distances.
     centres = [np.mean(eigs[g]) for g in clusters]
     order = [int(np.argmax(np.abs(centres)))]
@@ -394,13 +386,13 @@ def newton_matrix(A: np.ndarray, nodes: np.ndarray, coeffs) -> np.ndarray:
 
 def _float_decomposition(A: sp.Matrix, cluster_tol: float) -> SpectralDecomposition:
     An = np.array(A.evalf(), dtype=complex)
+    if not np.all(np.isfinite(An)):
+        raise ParameterError("A has non-finite entries (nan or inf); the spectral decomposition needs finite entries")
     real = not np.any(np.iscomplex(An))
-    nodes, ranges = float_spectrum(An, cluster_tol)
+    projectors, groups = indicator_projectors(An, cluster_tol)
     comps = []
-    for ci, members in enumerate(ranges):
-        coeffs = _taylor.divided_differences(nodes, ranges, _taylor.IndicatorSource(ci))
-        P = newton_matrix(An, nodes, coeffs)
-        mu = complex(np.mean(nodes[members]))
+    for P, members in zip(projectors, groups, strict=False):
+        mu = complex(np.mean(members))
         N = (An - mu * np.eye(An.shape[0])) @ P
         pw, nil = N, []
         for _ in range(1, len(members)):
@@ -415,7 +407,7 @@ def _float_decomposition(A: sp.Matrix, cluster_tol: float) -> SpectralDecomposit
                 index=len(members),
                 projector=conv(P),
                 nilpotents=tuple(conv(M) for M in nil),
-                nodes=tuple(complex(v) for v in nodes[members]),
+                nodes=tuple(complex(v) for v in members),
             )
         )
     return SpectralDecomposition(matrix=A, components=tuple(comps), exact=False)
@@ -437,7 +429,8 @@ def spectral_decomposition(A: sp.Matrix, *, cluster_tol: float = 1e-2) -> Spectr
     A : Matrix
         Square matrix: exact/symbolic entries give exact components; float entries give cluster components.
     cluster_tol : float
-        Floating point only: eigenvalues closer than ``cluster_tol * max(1, max|λ|)`` form one cluster.
+        Floating point only: eigenvalues with ``|λ_i - λ_j| <= cluster_tol * max(|λ_i|, |λ_j|)`` are linked into
+        one cluster (relative to their own size).
 
     Returns
     -------

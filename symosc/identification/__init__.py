@@ -113,3 +113,8 @@ __all__ = [
     "switching_curves",
     "two_stage",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

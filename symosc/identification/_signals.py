@@ -376,6 +376,11 @@ def _modal_estimate(
         raise IdentificationError(
             f"{method}: the identified poles are degenerate (zero or non-finite); lower the order"
         )
+    # a real negative pole (z < 0) is an alternating sequence: on an oversampled noisy record the spare pole of an
+    # odd order lands there to fit noise; it is not an aliased mode, so it is neither a Nyquist alarm nor a mode
+    alternating = (np.abs(z.imag) <= 1e-9 * np.abs(z)) & (z.real < 0)
+    if z.size >= 3 and z.size % 2 == 1 and alternating.sum() == 1:
+        z = z[~alternating]
     ang = np.abs(np.angle(z))
     near = ang > nyquist_margin * np.pi
     if near.any():

@@ -15,7 +15,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import scipy.linalg as sla
 
 from ..errors import ModelError, ParameterError
 
@@ -81,6 +80,8 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
     z = np.zeros((n, n))
     a = np.block([[-k, z], [z, m]])
     b = np.block([[d, m], [m, z]])
+    import scipy.linalg as sla
+
     lam, w = sla.eig(a, b)
     if not np.all(np.isfinite(lam)):
         raise ModelError("the damped system has infinite eigenvalues (singular mass matrix?)")
@@ -142,6 +143,8 @@ def damping_perturbation(mass: Any, damping: Any, stiffness: Any) -> DampingPert
     ([-0.005, -0.005], np.float64(0.0))
     """
     m, d, k = _mats(mass, damping, stiffness)
+    import scipy.linalg as sla
+
     w2, u0 = sla.eigh(k, m)
     if np.any(w2 <= 0):
         raise ModelError("the stiffness matrix must be positive definite for oscillatory modes")

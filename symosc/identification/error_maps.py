@@ -7,12 +7,14 @@ reconstruction algorithm returns the inertia parameters.  The Monte Carlo mean o
 offsets is the error map (Figs 21–22); the smallest modal energy of the release over the same grid is the
 applicability map (Figs 23–24: "a low-energy mode drowns in noise"; criterion min energy > half the mean).
 
-The loop is serial (the identification layer does not import :mod:`symosc.sweep`); the grids of the figures take a
-few seconds with the default, decimated record.
+The noise runs go through :func:`symosc.sweep` (``executor=`` chooses serial, a process pool or a Dask cluster; the
+default ``"auto"`` measures the first runs and decides); every run has its own seed, so the map does not depend on
+the executor.
 """
 
 from __future__ import annotations
 
+import functools
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -22,6 +24,7 @@ import numpy as np
 
 from ..errors import ParameterError, SymoscError
 from ..numeric import bind
+from ._sweeping import raise_first_failure
 from .era import era
 from .noise import add_noise
 from .reconstruction import algorithm1, algorithm21, algorithm22
@@ -135,6 +138,49 @@ def _reconstruct(algorithm: str, omega, modes, truth, force, positions, poi):
         return algorithm22(omega, modes, truth["m"], (truth["rx"], truth["rz"]), positions, product_of_inertia=poi)
 
 
+def _default_estimator(y: np.ndarray, step: float, rows: int) -> Any:
+    return era(y, step, 3, constant=False, rows=rows)
+
+
+@dataclass(frozen=True, eq=False)
+class _MapRuns:
+    """Everything one noise run of :func:`error_map` needs (picklable: sent once per chunk to a worker)."""
+
+    levels: np.ndarray
+    clean: np.ndarray  # (dx, dz, channels, samples)
+    points: list  # [a][b] -> parameter dict
+    names: tuple[str, ...]
+    algorithm: str
+    force: tuple
+    positions: tuple
+    poi: str
+    reference: float
+    dt: float
+    seed: int
+    estimator: Callable[[np.ndarray, float], Any]
+
+
+def _error_map_run(level_index: int, a: int, b: int, run: int, *, ctx: _MapRuns) -> np.ndarray:
+    """Relative errors of one noise run, then a failure flag (1.0 when the pipeline failed, errors NaN)."""
+    level = ctx.levels[level_index]
+    clean = ctx.clean[a, b]
+    point = ctx.points[a][b]
+    rng = np.random.default_rng([ctx.seed, level_index, a, b, run])
+    y = add_noise(clean, level=level, reference=ctx.reference, rng=rng) if level > 0 else clean
+    out = np.full(len(ctx.names) + 1, np.nan)
+    try:
+        est = ctx.estimator(y, ctx.dt)
+        omega, modes = est.undamped_frequencies, est.mode_shapes
+        res = _reconstruct(ctx.algorithm, omega, modes, point, ctx.force, ctx.positions, ctx.poi).as_dict()
+    except (SymoscError, np.linalg.LinAlgError):
+        out[-1] = 1.0
+        return out
+    truth = np.array([point[n] for n in ctx.names])
+    out[:-1] = np.abs(np.array([res[n] for n in ctx.names]) - truth) / np.abs(truth)
+    out[-1] = 0.0
+    return out
+
+
 def error_map(
     dx: Any,
     dz: Any,
@@ -151,6 +197,8 @@ def error_map(
     names: Sequence[str] = ("Izz", "Ixx"),
     product_of_inertia: str = "dissertation",
     seed: int = 0,
+    executor: Any = "auto",
+    progress: bool | None = None,
 ) -> ErrorMap:
     """Monte Carlo error map of an identification pipeline over centre-of-mass offsets (Belyakov Figs 21–24).
 
@@ -182,10 +230,18 @@ def error_map(
         Sign convention of Ixz (see ``body_on_springs``).
     seed : int
         Base seed.
+    executor : "auto", "serial", "processes", Executor or distributed.Client
+        Where the noise runs go (see :func:`symosc.sweep`); the result does not depend on it.
+    progress : bool, optional
+        Progress bar (default: when stderr is a terminal).
 
     Returns
     -------
     ErrorMap
+
+    See Also
+    --------
+    symosc.sweep, error_vs_noise
 
     Examples
     --------
@@ -215,39 +271,52 @@ def error_map(
     xs, zs = (float(bind(e, vals)) for e in model.vertical_stiffness_centre())
     positions = (vals["Lx"], vals["Lz"])
     if estimator is None:
-        rows = max(10, min(40, int(n_samples) // 10))
-
-        def estimator(y: np.ndarray, step: float) -> Any:
-            return era(y, step, 3, constant=False, rows=rows)
-
+        estimator = functools.partial(_default_estimator, rows=max(10, min(40, int(n_samples) // 10)))
     t = np.arange(int(n_samples)) * float(dt)
-    errs = np.full((lv.size, gx.size, gz.size, int(runs), len(names)), np.nan)
-    fails = np.zeros((lv.size, gx.size, gz.size), dtype=int)
     energies = np.empty((gx.size, gz.size, 3))
     cond = np.ones((gx.size, gz.size))
+    points = [[None] * gz.size for _ in range(gx.size)]
+    clean = None
     for a, ox in enumerate(gx):
         for b, oz in enumerate(gz):
             point = dict(vals, rx=xs + ox, rz=zs + oz)
+            points[a][b] = point
             data = model.modal(point, force=force)
             energies[a, b] = data.modal_energy()
-            truth = np.array([point[n] for n in names])
             if algorithm == "2.2":
                 try:
                     exact = _reconstruct("2.2", data.omega, data.observation, point, force, positions, poi)
                     cond[a, b] = exact.condition
                 except SymoscError:
                     cond[a, b] = np.inf
-            clean = data.response(t).T
-            for li, level in enumerate(lv):
-                for i in range(int(runs)):
-                    rng = np.random.default_rng([seed, li, a, b, i])
-                    y = add_noise(clean, level=level, reference=reference, rng=rng) if level > 0 else clean
-                    try:
-                        est = estimator(y, float(dt))
-                        omega, modes = est.undamped_frequencies, est.mode_shapes
-                        res = _reconstruct(algorithm, omega, modes, point, force, positions, poi).as_dict()
-                    except (SymoscError, np.linalg.LinAlgError):
-                        fails[li, a, b] += 1
-                        continue
-                    errs[li, a, b, i] = np.abs(np.array([res[n] for n in names]) - truth) / np.abs(truth)
+            response = data.response(t).T
+            if clean is None:
+                clean = np.empty((gx.size, gz.size, *response.shape))
+            clean[a, b] = response
+    from ..sweep import sweep
+
+    ctx = _MapRuns(
+        lv,
+        clean,
+        points,
+        tuple(names),
+        algorithm,
+        tuple(force),
+        positions,
+        poi,
+        float(reference),
+        float(dt),
+        int(seed),
+        estimator,
+    )
+    grid = {
+        "level_index": np.arange(lv.size),
+        "a": np.arange(gx.size),
+        "b": np.arange(gz.size),
+        "run": np.arange(int(runs)),
+    }
+    res = sweep(_error_map_run, grid, executor=executor, constants={"ctx": ctx}, progress=progress)
+    raise_first_failure(res, "error_map")
+    errs = res.values[..., :-1]
+    fails = res.values[..., -1].sum(axis=-1).astype(int)
     return ErrorMap(gx, gz, lv, tuple(names), errs, fails, energies, cond, algorithm)

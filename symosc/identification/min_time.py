@@ -22,8 +22,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-import scipy.linalg
-import scipy.optimize
 
 from ..errors import ConvergenceError, ModelError, ParameterError
 
@@ -94,6 +92,8 @@ def _extreme(T: float, x0: np.ndarray, u_m: float, omega: float, sign: float) ->
     grid = np.linspace(0, 2 * np.pi, 721)
     vals = sign * _support(grid, T, x0, u_m, omega)
     i = int(np.argmax(vals))
+    import scipy.optimize
+
     res = scipy.optimize.minimize_scalar(
         lambda a: -sign * float(_support(np.array(a), T, x0, u_m, omega)),
         bounds=(grid[max(i - 1, 0)], grid[min(i + 1, 720)]),
@@ -177,6 +177,8 @@ def min_time_1dof(
         lo, T_hi = T_hi, T_hi + half / 8
     else:  # pragma: no cover - defensive
         raise ConvergenceError("min_time_1dof: target not reached; check a and u_m", achieved=T_hi)
+    import scipy.optimize
+
     T = scipy.optimize.brentq(gap, lo, T_hi, xtol=tol) if lo > 0 or gap(lo) < 0 else 0.0
     _, alpha = _extreme(T, x0, u_m, omega, sign)
     # switches where sin(omega (T - t) + alpha) changes sign
@@ -399,6 +401,8 @@ def excitation_time_bound(
     if amp.shape != (n,) or np.any(amp <= 0):
         raise ParameterError(f"amplitudes must be {n} positive numbers, got {amplitudes!r}")
     try:
+        import scipy.linalg
+
         lam, phi = scipy.linalg.eigh(K, M)
     except np.linalg.LinAlgError as exc:
         raise ModelError("M must be symmetric positive definite") from exc

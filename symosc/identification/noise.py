@@ -1,13 +1,13 @@
 """Noise studies: white-noise injection, the Cramér–Rao bound for damped sinusoids, Monte Carlo runs, and
 Belyakov's applicability criterion (Ch. III §3.2).
 
-The Monte Carlo loop here is serial on purpose (the identification layer does not import :mod:`symosc.sweep`);
-to spread runs over cores or a cluster, sweep a module-level trial function over a grid of seeds with
-``symosc.sweep`` (see ``benchmarks/identification_crlb.py`` and docs/sweep.md).
+The Monte Carlo runs go through :func:`symosc.sweep` (``executor=``: serial, a process pool or a Dask cluster);
+each run has its own seed, so results do not depend on the executor.
 """
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -195,6 +195,18 @@ class MonteCarloResult:
         )
 
 
+def _monte_carlo_run(run: int, *, estimator, y, dt, noise, seed, kwargs) -> Any:
+    """One noisy copy through ``estimator``; None when it fails with an identification error (counted)."""
+    from ..errors import SymoscError
+
+    snr_db, level, reference = noise
+    noisy = add_noise(y, snr_db=snr_db, level=level, reference=reference, rng=np.random.default_rng([seed, run]))
+    try:
+        return estimator(noisy if y.shape[0] > 1 else noisy[0], dt, **kwargs)
+    except (SymoscError, np.linalg.LinAlgError):
+        return None
+
+
 def monte_carlo(
     estimator: Callable[..., ModalEstimate],
     signals: Any,
@@ -205,12 +217,20 @@ def monte_carlo(
     reference: float | None = None,
     runs: int = 200,
     seed: int = 0,
+    executor: Any = "auto",
+    progress: bool | None = None,
     **kwargs: Any,
 ) -> MonteCarloResult:
     """Run ``estimator(noisy, dt, **kwargs)`` on ``runs`` noisy copies of clean ``signals``.
 
     Runs whose estimator raises an identification/parameter/convergence error are counted in ``failures`` and
-    stored as NaN.  Run ``i`` uses seed ``(seed, i)``, so results are reproducible and independent of order.
+    stored as NaN.  Run ``i`` uses seed ``(seed, i)``, so results are reproducible and independent of order and
+    of ``executor`` (``"auto"``, ``"serial"``, ``"processes"``, an Executor or a ``distributed.Client``; see
+    :func:`symosc.sweep`; parallel executors need a picklable ``estimator``).  ``progress`` shows a bar.
+
+    See Also
+    --------
+    symosc.sweep, error_vs_noise, cramer_rao_bound
 
     Examples
     --------
@@ -221,24 +241,27 @@ def monte_carlo(
     >>> mc.failures, bool(abs(mc.frequency_mean[0] - 2.0) < 1e-2)
     (0, True)
     """
-    from ..errors import SymoscError
+
+    from ..sweep import sweep
+    from ._sweeping import raise_first_failure
 
     y, dt = _as_signals(signals, dt)
-    rows_w, rows_d, rows_a = [], [], []
-    fails = 0
-    for i in range(int(runs)):
-        noisy = add_noise(y, snr_db=snr_db, level=level, reference=reference, rng=np.random.default_rng([seed, i]))
-        try:
-            est = estimator(noisy if y.shape[0] > 1 else noisy[0], dt, **kwargs)
-        except (SymoscError, np.linalg.LinAlgError):
-            fails += 1
-            rows_w.append(None)
-            rows_d.append(None)
-            rows_a.append(None)
-            continue
-        rows_w.append(est.frequencies)
-        rows_d.append(est.damping)
-        rows_a.append(est.amplitudes)
+    trial = functools.partial(
+        _monte_carlo_run,
+        estimator=estimator,
+        y=y,
+        dt=dt,
+        noise=(snr_db, level, reference),
+        seed=seed,
+        kwargs=kwargs,
+    )
+    res = sweep(trial, {"run": np.arange(int(runs))}, executor=executor, progress=progress)
+    raise_first_failure(res, "monte_carlo")
+    ests = list(res.values.reshape(-1)) if res.values.dtype == object else [None] * int(runs)
+    fails = sum(e is None for e in ests)
+    rows_w = [None if e is None else e.frequencies for e in ests]
+    rows_d = [None if e is None else e.damping for e in ests]
+    rows_a = [None if e is None else e.amplitudes for e in ests]
     k = next((r.size for r in rows_w if r is not None), 0)
 
     def stack(rows, shape):
@@ -348,6 +371,27 @@ class ErrorVsNoise:
         return "\n".join([f"ErrorVsNoise(runs={self.errors.shape[1]})", head, *rows])
 
 
+def _error_vs_noise_run(level_index: int, run: int, *, pipeline, y, dt, levels, reference, seed, truth) -> np.ndarray:
+    """Relative errors of one run, then a failure flag (1.0 when the pipeline failed, errors NaN)."""
+    from ..errors import SymoscError
+
+    names, true = truth
+    out = np.full(len(names) + 1, np.nan)
+    rng = np.random.default_rng([seed, level_index, run])
+    noisy = add_noise(y, level=levels[level_index], reference=reference, rng=rng)
+    try:
+        res = pipeline(noisy if y.shape[0] > 1 else noisy[0], dt)
+    except (SymoscError, np.linalg.LinAlgError):
+        out[-1] = 1.0
+        return out
+    if hasattr(res, "as_dict"):
+        res = res.as_dict()
+    est = np.array([float(res[n]) for n in names])
+    out[:-1] = np.abs(est - true) / np.abs(true)
+    out[-1] = 0.0
+    return out
+
+
 def error_vs_noise(
     pipeline: Callable[[np.ndarray, float], Any],
     signals: Any,
@@ -358,12 +402,20 @@ def error_vs_noise(
     reference: float | None = None,
     runs: int = 10,
     seed: int = 0,
+    executor: Any = "auto",
+    progress: bool | None = None,
 ) -> ErrorVsNoise:
     """Monte Carlo of ``pipeline(noisy_signals, dt)`` at each noise ``level`` (fraction of ``reference``).
 
     ``pipeline`` returns the identified parameters as a mapping (or a dataclass with ``as_dict()``) whose keys
     include those of ``truth`` (a mapping name -> true value).  Run i at level index l uses seed (seed, l, i).
-    Errors raised by the pipeline (symosc errors, LinAlgError) count as failures.
+    Errors raised by the pipeline (symosc errors, LinAlgError) count as failures.  The runs go through
+    :func:`symosc.sweep` with ``executor`` (parallel executors need a picklable ``pipeline``); results do not
+    depend on it.
+
+    See Also
+    --------
+    symosc.sweep, monte_carlo
 
     Examples
     --------
@@ -376,24 +428,28 @@ def error_vs_noise(
     >>> bool(ev.mean[0, 0] < ev.mean[1, 0] < 1e-2)
     True
     """
-    from ..errors import SymoscError
 
     y, dt = _as_signals(signals, dt)
     names = tuple(truth)
     true = np.array([float(truth[n]) for n in names])
     lv = np.atleast_1d(np.asarray(levels, dtype=float))
-    errs = np.full((lv.size, int(runs), len(names)), np.nan)
-    fails = np.zeros(lv.size, dtype=int)
-    for li, level in enumerate(lv):
-        for i in range(int(runs)):
-            noisy = add_noise(y, level=level, reference=reference, rng=np.random.default_rng([seed, li, i]))
-            try:
-                out = pipeline(noisy if y.shape[0] > 1 else noisy[0], dt)
-            except (SymoscError, np.linalg.LinAlgError):
-                fails[li] += 1
-                continue
-            if hasattr(out, "as_dict"):
-                out = out.as_dict()
-            est = np.array([float(out[n]) for n in names])
-            errs[li, i] = np.abs(est - true) / np.abs(true)
+    from ..sweep import sweep
+    from ._sweeping import raise_first_failure
+
+    trial = functools.partial(
+        _error_vs_noise_run,
+        pipeline=pipeline,
+        y=y,
+        dt=dt,
+        levels=lv,
+        reference=reference,
+        seed=seed,
+        truth=(names, true),
+    )
+    res = sweep(
+        trial, {"level_index": np.arange(lv.size), "run": np.arange(int(runs))}, executor=executor, progress=progress
+    )
+    raise_first_failure(res, "error_vs_noise")
+    errs = res.values[..., :-1]
+    fails = res.values[..., -1].sum(axis=-1).astype(int)
     return ErrorVsNoise(levels=lv, names=names, errors=errs, failures=fails)

@@ -112,6 +112,37 @@ def sampling_advice(dt: float, n_samples: int, omega_max: float) -> SamplingAdvi
     )
 
 
+def _fastest_frequency(y: np.ndarray, dt: float) -> float | None:
+    """Highest angular frequency carrying signal power in the record (periodogram over the noise floor)."""
+    n = y.shape[1]
+    if n < 16:
+        return None
+    win = np.hanning(n)
+    power = np.zeros(n // 2 + 1)
+    for ch in y:
+        power += np.abs(np.fft.rfft((ch - ch.mean()) * win)) ** 2
+    if not np.any(power[1:] > 0):
+        return None
+    floor = float(np.median(power[len(power) // 2 :]))
+    threshold = max(100.0 * floor, 1e-6 * float(power[1:].max()))
+    above = np.nonzero(power[1:] > threshold)[0]
+    if above.size == 0:
+        return None
+    return 2 * np.pi * (above[-1] + 1) / (n * dt)
+
+
+def _auto_decimation(y: np.ndarray, dt: float, order: int | None) -> int:
+    """Decimation factor from rule (45) when the record is oversampled (rule 43), else 1."""
+    w = _fastest_frequency(y, dt)
+    if w is None or w <= 0:
+        return 1
+    adv = sampling_advice(dt, y.shape[1], w)
+    if adv.ratio < 10:
+        return 1
+    keep = 4 * (order or 10) + 20
+    return max(1, min(adv.safe_decimation, y.shape[1] // keep))
+
+
 def prony(
     signals: Any,
     dt: float,
@@ -119,7 +150,7 @@ def prony(
     *,
     order: int | None = None,
     constant: bool = True,
-    decimate: int = 1,
+    decimate: int | str = "auto",
     dps: int | None = None,
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
@@ -138,9 +169,13 @@ def prony(
         Total number of exponentials, ``2 n_modes + 1`` with a constant term (``2 n_modes`` without).
     constant : bool
         Include the constant offset (Belyakov's A0, root z = 1).
-    decimate : int
+    decimate : int or "auto"
         Use every ``decimate``-th sample to find the poles (rule 45; see :func:`sampling_advice`); amplitudes and
-        phases are still fitted on the full record.
+        phases are still fitted on the full record.  ``"auto"`` (default) estimates the fastest mode from the
+        record's periodogram and, when the record is oversampled (``omega_d/omega_max >= 10``, rule 43), decimates
+        by the safe factor of :func:`sampling_advice` (limited so that at least ``4*order + 20`` samples remain);
+        on an oversampled noisy record the prediction otherwise fits the noise.  ``details["decimate"]`` tells
+        the factor used.
     dps : int, optional
         Root the prediction polynomial with mpmath at this many digits (for ill-conditioned high orders).
     nyquist_margin : float
@@ -170,9 +205,19 @@ def prony(
     ([[1.0, 0.5]], 0.3)
     """
     y, dt = _as_signals(signals, dt)
-    m = int(decimate)
-    if m != decimate or m < 1:
-        raise ParameterError(f"decimate must be a positive integer, got {decimate!r}")
+    if isinstance(decimate, str) and decimate == "auto":
+        guess = _resolve_order(n_modes, order, constant)
+        m = _auto_decimation(y, dt, guess)
+    else:
+        if (
+            isinstance(decimate, bool | str)
+            or not isinstance(decimate, int | np.integer | float)
+            or decimate != int(decimate)
+        ):
+            raise ParameterError(f"decimate must be a positive integer or 'auto', got {decimate!r}")
+        m = int(decimate)
+        if m < 1:
+            raise ParameterError(f"decimate must be a positive integer or 'auto', got {decimate!r}")
     yd = y[:, ::m]
     dtd = dt * m
     nch, n = yd.shape

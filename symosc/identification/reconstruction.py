@@ -151,6 +151,9 @@ def central_identity(C: Any, modes: Any, omega: Any, modal_stiffness: Any) -> An
     >>> central_identity(C, C @ phi, np.array([1.0, 2.0]), np.array([2.0, 12.0])).round(12).tolist()
     [[2.0, 0.0], [0.0, 3.0]]
     """
+    for name, v in (("C", C), ("modes", modes)):
+        if not isinstance(v, sp.MatrixBase) and np.ndim(v) != 2:
+            raise ParameterError(f"{name} must be a 2-D array or Matrix, got {type(v).__name__} with ndim {np.ndim(v)}")
     if isinstance(C, sp.MatrixBase) or isinstance(modes, sp.MatrixBase):
         C, Cp = sp.Matrix(C), sp.Matrix(modes)
         Kp = sp.Matrix(modal_stiffness)

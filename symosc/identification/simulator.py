@@ -29,7 +29,6 @@ from functools import cache, cached_property
 from typing import Any
 
 import numpy as np
-import scipy.integrate
 import sympy as sp
 
 from ..errors import ConvergenceError, ModelError, ParameterError
@@ -391,6 +390,8 @@ def simulate_stand(
     # 100 rad/s reference rate and the largest principal inertia (else a decayed, damped record stalls on roundoff)
     jmax = float(np.max(np.linalg.eigvalsh(np.linalg.inv(stand.Jinv))))
     scale = np.concatenate([np.full(3, 100.0 * jmax), np.ones(3), np.full(3, 100.0), np.ones(3)])
+    import scipy.integrate
+
     sol = scipy.integrate.solve_ivp(rhs, (0.0, t[-1]), y0, method="DOP853", t_eval=t, rtol=rtol, atol=atol * scale)
     if not sol.success:
         raise ConvergenceError(f"integration failed: {sol.message}")

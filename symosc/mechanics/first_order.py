@@ -9,8 +9,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from ..errors import ModelError
+from ..errors import ParameterError
 from ..numeric import compile, resolve
+from ..numeric._checks import check_all
 from ..symbols import t
 
 if TYPE_CHECKING:
@@ -24,8 +25,9 @@ class FirstOrderSystem:
 
     Symbolically the system is kept in descriptor form ``E(x, t) x' = G(x, t)`` with
     ``E = diag(I, M)`` and ``G = (q', F)`` (inverting M symbolically is rarely wise);
-    :meth:`solved` gives the explicit form for small systems and :meth:`rhs` a fast numeric f(t, x)
-    that solves ``M q'' = F`` with LAPACK at every call.
+    :meth:`solved` gives the explicit form for small systems, :meth:`rhs` a fast numeric f(t, x)
+    that solves ``M q'' = F`` at every call (NumPy/LAPACK or generated C) and :meth:`jacobian` its analytic
+    Jacobian.
 
     Examples
     --------
@@ -41,6 +43,7 @@ class FirstOrderSystem:
 
     def __init__(self, system: LagrangianSystem):
         self.system = system
+        self._parts: dict[tuple[str, bool], Any] = {}  # generated code per (backend, jacobian)
 
     @property
     def state(self) -> tuple[sp.Symbol, ...]:
@@ -64,36 +67,103 @@ class FirstOrderSystem:
 
     @cached_property
     def _compiled(self):
+        """``[M | F]`` compiled with NumPy (arguments t, q, q', parameters)."""
         s = self.system
         both = s.mass_matrix.row_join(s.forcing)
         return compile(both, [t, *s.coordinates, *s.velocities, *s.parameters], name="mass_and_forcing")
 
-    def rhs(self, values: Mapping[Any, Any]) -> Callable[[float, np.ndarray], np.ndarray]:
-        """Numeric f(t, x) for ``scipy.integrate.solve_ivp``, with the parameters fixed to ``values``.
+    def rhs(self, values: Mapping[Any, Any], backend: str = "numpy") -> Callable[[float, np.ndarray], np.ndarray]:
+        """Numeric f(t, y) for ``scipy.integrate.solve_ivp``, with the parameters fixed to ``values``.
 
-        Parameters are checked once (missing, non-finite or wrongly signed values raise
-        :class:`~symosc.errors.ParameterError`); a singular mass matrix met during integration raises
-        :class:`~symosc.errors.ModelError`.
+        Parameters
+        ----------
+        values : mapping
+            Parameter values keyed by Symbol or name.  Checked once (missing, non-finite or wrongly
+            signed values raise :class:`~symosc.errors.ParameterError`).
+        backend : {"numpy", "c", "auto"}
+            ``"numpy"``: compiled M and F, solved with LAPACK.  ``"c"``: one call into generated C that
+            evaluates M and F and solves ``M q'' = F`` by Gaussian elimination with partial pivoting (see
+            :func:`symosc.numeric.compile` for the compiler and the disk cache).  ``"auto"``: ``"c"`` when a
+            C compiler is available, else ``"numpy"``.
+
+        Returns
+        -------
+        callable
+            ``f(t, y)`` for a state of shape ``(2n,)`` or a batch of shape ``(2n, k)`` (one state per
+            column, as ``solve_ivp(..., vectorized=True)`` passes); the result has the same shape.  A
+            singular mass matrix met during integration raises :class:`~symosc.errors.ModelError`.
+
+        See Also
+        --------
+        jacobian, symosc.numeric.compile, symosc.codegen.export
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from symosc.models import n_link_pendulum
+        >>> fo = n_link_pendulum(1).first_order()
+        >>> f = fo.rhs({"m1": 1.0, "l1": 1.0, "g": 9.81})
+        >>> f(0.0, np.array([[0.1, 0.2], [0.0, 0.0]])).round(4).tolist()
+        [[0.0, 0.0], [-0.9794, -1.9489]]
         """
+        return _OdeFunction(self._evaluator(values, backend, jacobian=False), "rhs", 2 * len(self.system.coordinates))
+
+    def jacobian(self, values: Mapping[Any, Any], backend: str = "numpy") -> Callable[[float, np.ndarray], np.ndarray]:
+        """Analytic Jacobian ``df/dy(t, y)`` of :meth:`rhs`, for stiff solvers (``solve_ivp(..., jac=...)``).
+
+        With ``u = q'`` and ``f = (u, M^{-1} F)`` the lower block is
+        ``M^{-1} (dF/dy - (dM/dy) M^{-1} F)``; the derivatives are symbolic, the solves numeric (LAPACK for
+        ``backend="numpy"``, generated C for ``"c"``).
+
+        Returns
+        -------
+        callable
+            ``jac(t, y)`` for a state of shape ``(2n,)``, giving a ``(2n, 2n)`` array.
+
+        See Also
+        --------
+        rhs
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> jac = n_link_pendulum(1).first_order().jacobian({"m1": 1.0, "l1": 2.0, "g": 9.81})
+        >>> jac(0.0, [0.0, 0.0]).tolist()
+        [[0.0, 1.0], [-4.905, 0.0]]
+        """
+        return _OdeFunction(
+            self._evaluator(values, backend, jacobian=True), "jacobian", 2 * len(self.system.coordinates)
+        )
+
+    def _evaluator(self, values: Mapping[Any, Any], backend: str, jacobian: bool) -> Any:
+        from ..numeric import _ode, available_backends
+
+        if backend not in ("numpy", "c", "auto"):
+            raise ParameterError(f"backend must be 'numpy', 'c' or 'auto', got {backend!r}")
+        if backend == "auto":
+            backend = "c" if "c" in available_backends() else "numpy"
         s = self.system
+        params = check_all(s.parameters, tuple(resolve(s.parameters, values)), "numpy")
+        if any(np.ndim(v) for v in params):
+            raise ParameterError("rhs()/jacobian() take one scalar value per parameter")
+        values = [float(v) for v in params]
+        key = (backend, jacobian)
+        parts = self._parts.get(key)
+        if parts is None:
+            symbolic = (s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters)
+            if backend == "c":
+                from ..numeric import _build
+
+                items = [*s.mass_matrix, *s.forcing, t, *s.coordinates, *s.velocities, *s.parameters]
+                tag = _build.expression_digest(items, "first_order", str(jacobian), str(len(s.coordinates)))
+                parts = _build.memoized_source(tag, lambda: _ode.c_first_order_source(*symbolic, jacobian=jacobian))
+            else:
+                parts = _ode.numpy_parts(*symbolic, jacobian=jacobian)
+            self._parts[key] = parts
         n = len(s.coordinates)
-        fn = self._compiled
-        params = resolve(s.parameters, values)
-        # Validate parameter values through the checked path once.
-        fn(0.0, *([0.0] * (2 * n)), *params)
-        params = [float(v) for v in params]
-        raw = fn.raw
-
-        def f(time: float, x: np.ndarray) -> np.ndarray:
-            x = np.asarray(x, dtype=float)
-            mf = raw(time, *x, *params)
-            try:
-                qdd = np.linalg.solve(mf[:, :n], mf[:, n])
-            except np.linalg.LinAlgError as exc:
-                raise ModelError(f"mass matrix is singular at t={time}, state={x.tolist()}") from exc
-            return np.concatenate([x[n:], qdd])
-
-        return f
+        if backend == "c":
+            return _ode.CFirstOrder(parts, n, values, jacobian=jacobian)
+        return _ode.NumpyFirstOrder(parts, n, values)
 
     def energy_function(self, values: Mapping[Any, Any]) -> Callable[[float, np.ndarray], float]:
         """Numeric E(t, x) = T + V with the parameters fixed (useful to check conservation)."""
@@ -104,3 +174,23 @@ class FirstOrderSystem:
         fn(0.0, *([0.0] * (2 * n)), *params)  # checks the parameter values once
         params = [float(v) for v in params]
         return lambda time, x: float(fn.raw(time, *np.asarray(x, dtype=float), *params))
+
+
+class _OdeFunction:
+    """``f(t, y)`` (or ``jac(t, y)``) with the shape of ``y`` checked; picklable-free of closures."""
+
+    def __init__(self, evaluator: Any, kind: str, size: int) -> None:
+        self._ev, self._kind, self._size = evaluator, kind, size
+        self._call = evaluator.rhs if kind == "rhs" else evaluator.jacobian
+
+    @property
+    def source(self) -> str | None:
+        """The generated C source (backend "c"), else None."""
+        return getattr(self._ev, "source", None)
+
+    def __call__(self, time: float, y: Any) -> np.ndarray:
+        y = np.asarray(y, dtype=float)
+        if y.shape[:1] != (self._size,) or y.ndim > (2 if self._kind == "rhs" else 1):
+            want = f"({self._size},) or ({self._size}, k)" if self._kind == "rhs" else f"({self._size},)"
+            raise ParameterError(f"state y must have shape {want}, got {y.shape}")
+        return self._call(time, y)

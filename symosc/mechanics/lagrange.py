@@ -22,7 +22,7 @@ from sympy.core.function import AppliedUndef
 
 from ..errors import ModelError
 from ..symbols import ddot, dot, sort_symbols, t
-from . import _terms
+from . import _constraints, _terms
 
 __all__ = ["LagrangianSystem"]
 
@@ -74,6 +74,11 @@ class LagrangianSystem:
         Rayleigh dissipation function R(q, q', t); adds -dR/dq' to the forces.
     forces : sequence or mapping, optional
         Generalised forces Q_i (one per coordinate, or a mapping coordinate -> Q).
+    constraints : sequence of Expr, optional
+        Holonomic constraints ``phi(q, t) = 0`` (give the expressions ``phi``).  The equations of motion
+        then carry multipliers: see :attr:`constrained` (Bulgakov (1954), §3.3-3.5).
+    nonholonomic : sequence of Expr, optional
+        Non-holonomic constraints linear in the velocities, ``E(q, t) q' + e(q, t) = 0`` (eq. (3.28)).
 
     Examples
     --------
@@ -105,6 +110,8 @@ class LagrangianSystem:
         *,
         dissipation: Any = 0,
         forces: Sequence[Any] | Mapping[Any, Any] | None = None,
+        constraints: Sequence[Any] = (),
+        nonholonomic: Sequence[Any] = (),
     ) -> None:
         q, replace = _plain_coordinates(coordinates)
         self._q = q
@@ -138,6 +145,7 @@ class LagrangianSystem:
         if not (self._T.free_symbols & set(self._qd)):
             raise ModelError("T does not depend on any velocity: no mass matrix can be formed")
         self._parts  # noqa: B018 - split T now, so that a T that is not quadratic is reported at once
+        self._holonomic, self._nonholonomic = _constraints.check_constraints(self, constraints, nonholonomic, convert)
 
     def _convert_forces(self, forces: Any, convert: Any, replace: dict) -> tuple[sp.Expr, ...]:
         n = len(self._q)
@@ -199,7 +207,7 @@ class LagrangianSystem:
     def parameters(self) -> tuple[sp.Symbol, ...]:
         """Free parameter symbols (everything but coordinates, velocities and time), in natural order."""
         syms = set().union(self._T.free_symbols, self._V.free_symbols, self._R.free_symbols)
-        for f in self._Q:
+        for f in (*self._Q, *self._holonomic, *self._nonholonomic):
             syms |= f.free_symbols
         return sort_symbols(syms - set(self._q) - set(self._qd) - {t})
 
@@ -207,14 +215,32 @@ class LagrangianSystem:
     def is_rheonomic(self) -> bool:
         """True when T, V, R or Q depend explicitly on time."""
         return t in (self._T.free_symbols | self._V.free_symbols | self._R.free_symbols) or any(
-            t in f.free_symbols for f in self._Q
+            t in f.free_symbols for f in (*self._Q, *self._holonomic, *self._nonholonomic)
         )
+
+    @property
+    def holonomic_constraints(self) -> tuple[sp.Expr, ...]:
+        """Holonomic constraints ``phi(q, t)`` (each equal to zero)."""
+        return self._holonomic
+
+    @property
+    def nonholonomic_constraints(self) -> tuple[sp.Expr, ...]:
+        """Non-holonomic constraints ``E(q, t) q' + e(q, t)`` (each equal to zero)."""
+        return self._nonholonomic
+
+    @property
+    def is_constrained(self) -> bool:
+        """True when the system has holonomic or non-holonomic constraints."""
+        return bool(self._holonomic or self._nonholonomic)
 
     def __repr__(self) -> str:
         kind = "rheonomic" if self.is_rheonomic else "scleronomic"
         q = ", ".join(s.name for s in self._q)
         p = ", ".join(s.name for s in self.parameters)
-        return f"LagrangianSystem({kind}; coordinates: {q}; parameters: {p})"
+        c = ""
+        if self.is_constrained:
+            c = f"; {len(self._holonomic)} holonomic, {len(self._nonholonomic)} non-holonomic constraints"
+        return f"LagrangianSystem({kind}; coordinates: {q}; parameters: {p}{c})"
 
     def _repr_latex_(self) -> str:
         """The equations ``M q'' = F`` in notebooks (a summary for more than four coordinates)."""
@@ -311,6 +337,12 @@ class LagrangianSystem:
         """The solved first-order form x' = f(t, x) with x = (q, q'); see :class:`FirstOrderSystem`."""
         from .first_order import FirstOrderSystem
 
+        if self.is_constrained:
+            raise ModelError(
+                "the system has constraints: use .constrained.rhs(values) (multiplier form) or "
+                ".constrained.minimal_form() / .reduce_coordinates(...) (minimal form)"
+            )
+
         return FirstOrderSystem(self)
 
     def linearize(self, point: Mapping[Any, Any] | None = None, *, check_equilibrium: bool = True):
@@ -329,4 +361,82 @@ class LagrangianSystem:
         """
         from .linear_model import linearize_system
 
+        if self.is_constrained:
+            raise ModelError("linearize() needs an unconstrained system: call reduce_coordinates(...) first")
         return linearize_system(self, point, check_equilibrium=check_equilibrium)
+
+    # ------------------------------------------------------------------ analytic dynamics (Bulgakov ch. 3)
+    @cached_property
+    def constrained(self):
+        """Lagrange equations with multipliers (:class:`~symosc.mechanics.ConstrainedForm`).
+
+        Raises :class:`ModelError` when the system has no constraints.
+        """
+        from .constraints import ConstrainedForm
+
+        if not self.is_constrained:
+            raise ModelError("the system has no constraints; pass constraints= or nonholonomic=")
+        return ConstrainedForm(self)
+
+    @cached_property
+    def kinetic_energy_parts(self) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        """``(T2, T1, T0)``: the parts of T of degree 2, 1 and 0 in the velocities (Bulgakov (1954), eq. (3.42))."""
+        out = [sp.S.Zero, sp.S.Zero, sp.S.Zero]
+        qd = self._qd
+        for key, groups in self._parts.items():
+            mono = sp.Mul(*(qd[i] for i in key))
+            out[2 - len(key)] += self._sum(groups) * mono
+        return out[0], out[1], out[2]
+
+    @cached_property
+    def energy_function(self) -> sp.Expr:
+        """``h = sum q' dL/dq' - L = T2 - T0 + V`` (Bulgakov (1954), eqs. (3.98), (3.101)-(3.103))."""
+        T2, _, T0 = self.kinetic_energy_parts
+        return T2 - T0 + self._V
+
+    @cached_property
+    def jacobi_integral(self) -> sp.Expr:
+        """The Jacobi integral ``T2 + V - T0`` (eq. (3.107)).
+
+        Raises :class:`ModelError` when it is not conserved: L depends on time explicitly, there are
+        generalized forces or dissipation, or the constraints are rheonomic.
+        """
+        reasons = []
+        L = self._T - self._V
+        if t in L.free_symbols and sp.simplify(L.diff(t)) != 0:
+            reasons.append("L depends on time explicitly")
+        if self._R != 0 or any(f != 0 for f in self._Q):
+            reasons.append("there are generalized forces or dissipation")
+        if self.is_constrained and any(e != 0 for e in self.constrained.velocity_bias):
+            reasons.append("the constraints are rheonomic")
+        if reasons:
+            raise ModelError("no Jacobi integral: " + "; ".join(reasons) + "; use energy_function and its balance")
+        return self.energy_function
+
+    def christoffel_symbols(self, kind: int = 2) -> sp.Array:
+        """Christoffel symbols of the metric ``g = M`` (Bulgakov (1954), §3.7, eqs. (3.83), (3.86)).
+
+        ``kind=1``: ``Gamma[m, k, l] = (dg_mk/dq_l + dg_ml/dq_k - dg_kl/dq_m) / 2``;
+        ``kind=2``: ``Gamma[j, k, l] = g^jm Gamma_m,kl`` so that for a natural scleronomic system
+        ``q''^j + Gamma^j_kl q'^k q'^l = g^jm (-dV/dq^m)`` (eq. (3.88)).
+        """
+        from ._analytic import christoffel
+
+        return christoffel(self, kind)
+
+    def reduce_coordinates(self, parametrization: Mapping[Any, Any], coordinates: Sequence[Any]):
+        """Minimal coordinates: substitute ``q = q(s, t)`` that satisfies the holonomic constraints.
+
+        Returns a new :class:`LagrangianSystem` in ``coordinates`` ``s``; generalized forces are carried over as
+        ``Q_s = (dq/ds)^T Q``.  Constraints that vanish identically are dropped (the rest are kept); raises
+        :class:`ModelError` if a coordinate is missing from the parametrization.
+        """
+        from ._analytic import reduce_coordinates
+
+        return reduce_coordinates(self, parametrization, coordinates)
+
+    def hamiltonian(self):
+        """The Legendre transform: a :class:`~symosc.mechanics.HamiltonianSystem` (Bulgakov (1954), §3.11)."""
+        from .hamiltonian import HamiltonianSystem
+
+        return HamiltonianSystem.from_lagrangian(self)

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from ..errors import ModelError
+from .._validate import check_complete_names
+from ..errors import ModelError, ParameterError
 from ..numeric import compile
 from ..symbols import sort_symbols, t
 from . import _terms
@@ -124,6 +125,12 @@ class LinearModel:
 
     def matrices(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Numeric ``(M, D, K0)``; array-valued parameters give stacks of shape ``(..., n, n)``."""
+        if not isinstance(values, Mapping):
+            raise ParameterError(
+                f"values must be a mapping of parameter names to numbers, got {type(values).__name__}; "
+                f"parameters: {[s.name for s in self.parameters]}"
+            )
+        check_complete_names("parameter value(s)", values, sort_symbols(self._compiled[1].args))
         n, fn = self._compiled
         out = fn.call(values)
         return out[..., :, :n], out[..., :, n : 2 * n], out[..., :, 2 * n :]
@@ -138,6 +145,19 @@ class LinearModel:
             L = np.linalg.cholesky(M)
         except np.linalg.LinAlgError as exc:
             raise ModelError("mass matrix is singular or not positive definite at these parameter values") from exc
+        cond = float(np.max(np.linalg.cond(M)))
+        if cond * np.finfo(float).eps > 1e-8:
+            import warnings
+
+            from ..errors import AccuracyWarning
+
+            warnings.warn(
+                f"the mass matrix is ill-conditioned (cond = {cond:.3g}, e.g. a very short or light link): the "
+                f"frequencies may carry relative errors up to about {min(1.0, cond * np.finfo(float).eps):.1g} (worst "
+                "case; the low modes suffer most)",
+                AccuracyWarning,
+                stacklevel=3,
+            )
         Linv = np.linalg.inv(L)
         A = Linv @ K @ np.swapaxes(Linv, -1, -2)
         return 0.5 * (A + np.swapaxes(A, -1, -2)), Linv

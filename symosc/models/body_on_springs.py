@@ -34,7 +34,6 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
-import scipy.linalg
 import sympy as sp
 
 from ..errors import ModelError, ParameterError
@@ -361,6 +360,8 @@ class BodyOnSprings:
             np.linalg.cholesky(M)
         except np.linalg.LinAlgError as exc:
             raise ModelError(f"inertia matrix is not positive definite: {M.tolist()}; check Izz, Ixx, Ixz") from exc
+        import scipy.linalg
+
         lam, phi = scipy.linalg.eigh(K, M)
         if lam.min() <= 0:
             raise ModelError(f"stiffness matrix is not positive definite (eigenvalues {lam}); check springs/sensors")

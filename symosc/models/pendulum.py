@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .._validate import check_bool
 from ..errors import ModelError
 from ..mechanics import LagrangianSystem
 from ..symbols import dot, t
@@ -72,6 +73,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
         raise ModelError(f"links must be 'point' or 'rigid', got {links!r}")
     if pivot not in ("fixed", "vertical"):
         raise ModelError(f"pivot must be 'fixed' or 'vertical', got {pivot!r}")
+    inverted = check_bool("inverted", inverted)
     s = pendulum_symbols(n)
     phi, m, l, lc, inertia, g = s["phi"], s["m"], s["l"], s["lc"], s["I"], s["g"]
     up = 1 if inverted else -1

@@ -18,6 +18,7 @@ from .averaging_ndof import (
     dry_friction_torus_average,
 )
 from .backlash_servo import BacklashServoRun, simulate_backlash_servo
+from .conservative import Equilibrium, classify_equilibrium, libration_period, rotation_period
 from .delay import (
     DelayRoots,
     QuasiPolynomial,
@@ -68,6 +69,7 @@ from .piecewise import (
 from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
+from .point_map import PointMapFixedPoint, point_map_fixed_point
 from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
 from .special_systems import (
     ClockEscapement,
@@ -97,6 +99,7 @@ __all__ = [
     "DelayRoots",
     "DesignLinearization",
     "EpsSeries",
+    "Equilibrium",
     "FastAveragedSystem",
     "FlywheelDesign",
     "FlywheelSpeedSeries",
@@ -116,6 +119,7 @@ __all__ = [
     "NumericCycle",
     "OperatorCycle",
     "PoincareOperatorSystem",
+    "PointMapFixedPoint",
     "QuasiPolynomial",
     "RadiusEstimate",
     "RelayRegulatorBoundary",
@@ -131,6 +135,7 @@ __all__ = [
     "backlash_critical_gap",
     "callender_hartree_porter_optimum",
     "characteristic_quasipolynomial",
+    "classify_equilibrium",
     "clock_escapement",
     "coulomb_oscillator",
     "count_roots",
@@ -145,6 +150,7 @@ __all__ = [
     "half_swing_map",
     "harmonic_linearisation",
     "implicit_map_cycle",
+    "libration_period",
     "limit_cycle",
     "lindstedt",
     "linearisation_boundary",
@@ -154,6 +160,7 @@ __all__ = [
     "numeric_period",
     "periodic_solution_ndof",
     "poincare_operator_system",
+    "point_map_fixed_point",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
     "quadratic_drag_half_swing_times",
@@ -161,6 +168,7 @@ __all__ = [
     "quasi_polynomial_roots",
     "radinger_flywheel",
     "relay_regulator_boundary",
+    "rotation_period",
     "self_oscillations",
     "servo_characteristic",
     "servo_equations",
@@ -174,3 +182,8 @@ __all__ = [
     "vibrational_averaging_of",
     "vibrational_stiffness",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

@@ -8,7 +8,9 @@ simplification is never used.
 Arithmetic modes (:class:`_Arith` subclasses):
 
 ``exact``  numerators are Python ``int`` with one common ``int`` denominator per series (about 50x faster than
-           :class:`fractions.Fraction` entries);
+           :class:`fractions.Fraction` entries); the products of integer numerators run on FLINT's ``fmpz_poly``
+           multiplication when python-flint is installed (``pip install symosc[exact]``), else on
+           :func:`numpy.convolve` -- the same integers either way;
 ``fixed``  numerators are Python ``int`` with the implicit denominator ``2**prec`` (the mpmath option: binary
            fixed point, converted to ``mpmath.mpf`` on output);
 ``float``  float64 arrays;
@@ -18,7 +20,7 @@ Arithmetic modes (:class:`_Arith` subclasses):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
@@ -33,10 +35,94 @@ class Trig:
     cos: np.ndarray
     sin: np.ndarray
     den: int = 1
+    #: FLINT forms of the numerators (exact arithmetic only; set on first use, never mutated afterwards)
+    polys: Any = field(default=None, repr=False, compare=False)
 
     @property
     def n(self) -> int:
         return len(self.cos) - 1
+
+
+_FMPZ_POLY: Any = None
+
+
+def _fmpz_poly() -> Any:
+    """``flint.fmpz_poly`` when python-flint is installed, else False (checked once)."""
+    global _FMPZ_POLY
+    if _FMPZ_POLY is None:
+        try:
+            from flint import fmpz_poly
+        except ImportError:
+            fmpz_poly = False
+        _FMPZ_POLY = fmpz_poly
+    return _FMPZ_POLY
+
+
+def _object_array(values: list) -> np.ndarray:
+    """Python ints in an object array (never converted to a fixed-width integer type)."""
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out
+
+
+def _int_list(p: Any, n: int) -> list:
+    out = [int(c) for c in p.coeffs()]
+    return out + [0] * (n - len(out))
+
+
+def _int_products_flint(P: Any, ac, as_, bc, bs, na: int, nb: int) -> tuple[list, list, list, list]:
+    """The n + m and n - m convolutions of integer numerators by FLINT (6 products, Karatsuba-style).
+
+    Returns (cc - ss, sc + cs, dcc + dss, dsc - dcs) as int lists of length na + nb + 1, the same integers as the
+    eight :func:`numpy.convolve` calls of :meth:`_Arith._products`.
+    """
+    a_c, a_s = P(ac.tolist()), P(as_.tolist())
+    b_c, b_s = P(bc.tolist()), P(bs.tolist())
+    r_c, r_s = P(bc[::-1].tolist()), P(bs[::-1].tolist())
+    a_sum = a_c + a_s
+    p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * (b_c + b_s)
+    p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * (r_c - r_s)
+    n = na + nb + 1
+    return (
+        _int_list(p1 - p2, n),
+        _int_list(p3 - p1 - p2, n),
+        _int_list(p4 + p5, n),
+        _int_list(p6 - p4 + p5, n),
+    )
+
+
+def _forward_polys(P: Any, t: Trig) -> tuple:
+    """(cos, sin, cos + sin) numerators of ``t`` as ``fmpz_poly`` (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "f" not in cache:
+        c, s = P(t.cos.tolist()), P(t.sin.tolist())
+        cache["f"] = (c, s, c + s)
+        t.polys = cache
+    return cache["f"]
+
+
+def _reversed_polys(P: Any, t: Trig, n: int) -> tuple:
+    """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms."""
+    cache = t.polys if t.polys is not None else {}
+    key = ("r", n)
+    if key not in cache:
+        shift = n - (len(t.cos) - 1)
+        pad = [0] * shift
+        rc, rs = P(pad + t.cos[::-1].tolist()), P(pad + t.sin[::-1].tolist())
+        c, s, _ = _forward_polys(P, t)
+        cache[key] = (rc, rs, rc - rs, c, s, c + s)
+        t.polys = cache
+    return cache[key]
+
+
+def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
+    """Add the n - m terms (``dc``/``ds`` index j + nb holds n - m = j) into the n + m sums, in place."""
+    out_c[: na + 1] = out_c[: na + 1] + dc[nb : nb + na + 1]
+    out_s[: na + 1] = out_s[: na + 1] + ds[nb : nb + na + 1]
+    if nb > 0:
+        out_c[1 : nb + 1] = out_c[1 : nb + 1] + dc[:nb][::-1]
+        out_s[1 : nb + 1] = out_s[1 : nb + 1] - ds[:nb][::-1]
+    out_s[0] = 0
 
 
 def _pad(a: np.ndarray, n: int, zero: Any) -> np.ndarray:
@@ -54,6 +140,8 @@ class _Arith:
     dtype: Any = object
     zero: Any = 0
     name = "abstract"
+    #: numerators are Python ints (products may use FLINT's integer polynomial multiplication)
+    integer_numerators = False
 
     # --- scalars -------------------------------------------------------------------------------------------
     def scalar(self, q: Fraction | int) -> Any:  # rational -> scalar
@@ -121,20 +209,25 @@ class _Arith:
         ac, as_, bc, bs = a.cos, a.sin, b.cos, b.sin
         na, nb = len(ac) - 1, len(bc) - 1
         n = na + nb
-        # n + m terms
-        cc = np.convolve(ac, bc)
-        ss = np.convolve(as_, bs)
-        sc = np.convolve(as_, bc)
-        cs = np.convolve(ac, bs)
-        out_c = cc - ss
-        out_s = sc + cs
-        # n - m terms: index j + nb holds sum over n - m = j
-        dcc = np.convolve(ac, bc[::-1])
-        dss = np.convolve(as_, bs[::-1])
-        dsc = np.convolve(as_, bc[::-1])
-        dcs = np.convolve(ac, bs[::-1])
-        dc = dcc + dss  # cos(n - m)
-        ds = dsc - dcs  # sin(n - m)
+        poly = _fmpz_poly() if self.integer_numerators else False
+        if poly:
+            lists = _int_products_flint(poly, ac, as_, bc, bs, na, nb)
+            out_c, out_s, dc, ds = (_object_array(v) for v in lists)
+        else:
+            # n + m terms
+            cc = np.convolve(ac, bc)
+            ss = np.convolve(as_, bs)
+            sc = np.convolve(as_, bc)
+            cs = np.convolve(ac, bs)
+            out_c = cc - ss
+            out_s = sc + cs
+            # n - m terms: index j + nb holds sum over n - m = j
+            dcc = np.convolve(ac, bc[::-1])
+            dss = np.convolve(as_, bs[::-1])
+            dsc = np.convolve(as_, bc[::-1])
+            dcs = np.convolve(ac, bs[::-1])
+            dc = dcc + dss  # cos(n - m)
+            ds = dsc - dcs  # sin(n - m)
         # fold j >= 0
         out_c[: na + 1] = out_c[: na + 1] + dc[nb:]
         out_s[: na + 1] = out_s[: na + 1] + ds[nb:]
@@ -150,6 +243,13 @@ class _Arith:
 
     def mul(self, a: Trig, b: Trig) -> Trig:
         raise NotImplementedError
+
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` over the pairs (the Cauchy products of the series recurrences)."""
+        acc = self.mul(*pairs[0])
+        for a, b in pairs[1:]:
+            acc = self.add(acc, self.mul(a, b))
+        return acc
 
     def solve_forced(self, r: Trig) -> Trig:
         """Periodic solution of ``x'' + x = r`` with the n = 1 harmonics of ``r`` ignored (and set to 0)."""
@@ -184,6 +284,7 @@ class ExactArith(_Arith):
     """Rational arithmetic: integer numerators with one common denominator per series."""
 
     name = "exact"
+    integer_numerators = True
 
     def scalar(self, q: Fraction | int) -> Fraction:
         return Fraction(q)
@@ -239,6 +340,46 @@ class ExactArith(_Arith):
         c, s = self._products(a, b)
         return self._norm(Trig(c, s, 2 * a.den * b.den))
 
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` on one common denominator, reduced once (the same reduced fraction as adding products)."""
+        P = _fmpz_poly()
+        if not P:
+            return self._dot_numpy(pairs)
+        dens = [2 * a.den * b.den for a, b in pairs]
+        den = math.lcm(*dens)
+        na = max(len(a.cos) for a, _ in pairs) - 1
+        nb = max(len(b.cos) for _, b in pairs) - 1
+        zero = P(0)
+        acc = [zero, zero, zero, zero]
+        for (a, b), d in zip(pairs, dens, strict=True):
+            a_c, a_s, a_sum = _forward_polys(P, a)
+            r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb)
+            f = den // d
+            p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
+            p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
+            acc[0] += (p1 - p2) * f
+            acc[1] += (p3 - p1 - p2) * f
+            acc[2] += (p4 + p5) * f
+            acc[3] += (p6 - p4 + p5) * f
+        n = na + nb
+        out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
+        _fold_differences(out_c, out_s, dc, ds, na, nb)
+        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
+        return self._norm(Trig(out_c[:top].copy(), out_s[:top].copy(), den))
+
+    def _dot_numpy(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        dens = [2 * a.den * b.den for a, b in pairs]
+        den = math.lcm(*dens)
+        prods = [self._products(a, b) for a, b in pairs]
+        n = max(len(c) for c, _ in prods)
+        out_c = np.zeros(n, dtype=object)
+        out_s = np.zeros(n, dtype=object)
+        for (c, s_), d in zip(prods, dens, strict=True):
+            f = den // d
+            out_c[: len(c)] += c * f
+            out_s[: len(s_)] += s_ * f
+        return self._norm(Trig(out_c, out_s, den))
+
     def solve_forced(self, r: Trig) -> Trig:
         n = len(r.cos)
         divs = [1 - k * k for k in range(n)]
@@ -255,6 +396,7 @@ class ExactArith(_Arith):
 
     def _set(self, t: Trig, kind: str, n: int, value: Fraction) -> None:
         value = Fraction(value)
+        t.polys = None
         t.cos *= value.denominator
         t.sin *= value.denominator
         t.den *= value.denominator
@@ -265,6 +407,7 @@ class FixedArith(_Arith):
     """Binary fixed point: integer numerators over ``2**prec`` (the ``mpmath`` arithmetic)."""
 
     name = "fixed"
+    integer_numerators = True
 
     def __init__(self, prec: int):
         self.prec = int(prec)

@@ -156,11 +156,7 @@ class _Tables:
         self.one = ar.monomial("c", 0, ar.scalar(1))
 
     def _conv(self, a: list[Trig], b: list[Trig], m: int) -> Trig:
-        ar = self.ar
-        acc = ar.mul(a[0], b[m])
-        for i in range(1, m + 1):
-            acc = ar.add(acc, ar.mul(a[i], b[m - i]))
-        return acc
+        return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
 
     def push(self, xm: Trig, vm: Trig) -> None:
         """Append the coefficients of order m = len(X[1]) given x_m and v_m."""

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+import warnings
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -9,6 +11,8 @@ from typing import Any
 import mpmath
 import numpy as np
 import sympy as sp
+
+from ..errors import SeriesWarning
 
 __all__ = ["EpsSeries", "RadiusEstimate"]
 
@@ -103,6 +107,7 @@ class EpsSeries:
         (or a float array when ``value`` is an array).
         """
         n = self.order if order is None else min(int(order), self.order)
+        _warn_beyond_radius(self, value)
         if dps is not None:
             with mpmath.workdps(dps):
                 x = mpmath.mpf(value) if not isinstance(value, mpmath.mpf) else value
@@ -210,3 +215,30 @@ class EpsSeries:
 
     def _repr_latex_(self) -> str:
         return f"${sp.latex(self.expr)} + O\\left({sp.latex(self.symbol ** (self.order + 1))}\\right)$"
+
+
+@functools.lru_cache(maxsize=256)
+def _radius(coefficients: tuple) -> float | None:
+    series = EpsSeries(coefficients, sp.Symbol("eps"), len(coefficients) - 1)
+    try:
+        return float(series.radius_of_convergence().radius)
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return None
+
+
+def _warn_beyond_radius(series: EpsSeries, value: Any) -> None:
+    """SeriesWarning when ``|value|`` exceeds the estimated radius of convergence of ``series``."""
+    try:
+        size = float(np.max(np.abs(np.asarray(value, dtype=complex))))
+    except (TypeError, ValueError):
+        return
+    if not np.isfinite(size) or size == 0:
+        return
+    radius = _radius(tuple(series.coefficients))
+    if radius is not None and np.isfinite(radius) and size > radius:
+        warnings.warn(
+            f"{series.name} evaluated at |{series.symbol}| = {size:.4g}, beyond its estimated radius of convergence "
+            f"{radius:.4g}: the truncated sum is not meaningful there (use evaluate_pade, or a numeric method)",
+            SeriesWarning,
+            stacklevel=3,
+        )

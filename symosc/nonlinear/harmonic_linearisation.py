@@ -38,7 +38,6 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
-from scipy.optimize import brentq
 
 from ..errors import ModelError, ParameterError
 from ..numeric import compile as _compile
@@ -264,6 +263,8 @@ def self_oscillations(
         others = [r for r in roots if abs(r - lam) > 1e-6 * max(1, w) and abs(r + lam) > 1e-6 * max(1, w)]
         others_ok = all(r.real < 0 for r in others)
         f = hv - hs
+        from scipy.optimize import brentq
+
         for i in np.nonzero(np.sign(f[:-1]) * np.sign(f[1:]) < 0)[0]:
             Ac = brentq(lambda x, hs=hs: float(hf.raw(x)) - hs, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-14)
             slope = float(dhf.raw(Ac))

@@ -23,7 +23,6 @@ from typing import Any
 import mpmath
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile as _compile
@@ -587,6 +586,8 @@ def _validate_ndof(sol: NDofPeriodicSolution, e: float, rtol: float, exponent_or
     phase_row = np.concatenate([np.zeros(n), sol.mode_shapes[:, sol.mode] @ np.array(M.tolist(), dtype=float)])
     for _ in range(30):
         z0 = np.concatenate([y0, np.eye(2 * n).ravel()])
+        from scipy.integrate import solve_ivp
+
         r = solve_ivp(rhs, (0, T), z0, method="DOP853", rtol=rtol, atol=rtol * 1e-2)
         yT = r.y[: 2 * n, -1]
         Mono = r.y[2 * n :, -1].reshape(2 * n, 2 * n)

@@ -12,15 +12,16 @@ Floquet multiplier comes from integrating the divergence ``eps*f_v`` along the o
 from __future__ import annotations
 
 import time
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
 import mpmath
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
-from ..errors import ConvergenceError, ParameterError
+from .._validate import check_finite, check_positive
+from ..errors import ConvergenceError, ParameterError, SeriesWarning
 from ..numeric import compile as _compile
 
 __all__ = [
@@ -109,6 +110,8 @@ def _half_swings(rhs: Any, jac: Any, eps: float, x0: float, method: str, rtol: f
 
     ev_down.terminal = True  # type: ignore[attr-defined]
     ev_down.direction = -1  # type: ignore[attr-defined]
+    from scipy.integrate import solve_ivp
+
     s1 = solve_ivp(fun, (0.0, tmax), [x0, 0.0, 0.0], events=ev_up, **kwargs)
     if s1.status != 1:
         raise ConvergenceError(
@@ -248,6 +251,8 @@ def numeric_orbit(
     if cyc.stiff:
         kw["jac"] = lambda t, y: np.pad(np.asarray(jac.raw(y[0], y[1], float(eps)), dtype=float), ((0, 1), (0, 1)))
     ts = np.linspace(0.0, cyc.period, samples)
+    from scipy.integrate import solve_ivp
+
     sol = solve_ivp(
         lambda t, y: np.asarray(rhs.raw(y[0], y[1], float(eps)), dtype=float),
         (0.0, cyc.period),
@@ -270,6 +275,7 @@ def numeric_period(
     >>> round(numeric_period(sp.Integer(0) * sp.Symbol("x"), 0.3, 1.0), 10)
     6.2831853072
     """
+    eps, A, rtol = check_finite("eps", eps), check_finite("A", A), check_positive("rtol", rtol)
     rhs, jac = _rhs_functions(sp.sympify(f), x, sp.Symbol("_v_unused"), eps_symbol, "numpy")
     T, _, _ = _half_swings(rhs, jac, float(eps), float(A), "DOP853", rtol, 1e3)
     return float(T)
@@ -364,31 +370,40 @@ def validate_limit_cycle(
             f_num, e, x=lc.x, v=lc.v, eps_symbol=lc.eps, guess=float(lc.generating_amplitude), rtol=rtol, dps=dps
         )
         tnum = time.perf_counter() - t0
-        for n in orders:
-            amp = lc.amplitude.evaluate(e, n)
-            om = lc.frequency.evaluate(e, n)
-            last = abs(float(lc.frequency.coefficients[n]) * e**n) if n > 0 else float("nan")
-            rows.append(
-                {
-                    "eps": e,
-                    "order": n,
-                    "amplitude_series": amp,
-                    "amplitude_numeric": float(cyc.amplitude),
-                    "amplitude_error": abs(amp - float(cyc.amplitude)),
-                    "frequency_series": om,
-                    "frequency_numeric": float(cyc.frequency),
-                    "frequency_error": abs(om - float(cyc.frequency)),
-                    "frequency_pade_error": _pade_error(lc.frequency, e, n, float(cyc.frequency)),
-                    "last_term": last,
-                    "multiplier_numeric": cyc.multiplier,
-                    "multiplier_series": float(np.exp(lc.floquet_exponent.evaluate(e, n + 1) * 2 * np.pi / om)),
-                    "in_validity": radius is None or abs(e) < radius,
-                    "method": cyc.method,
-                    "stiff": cyc.stiff,
-                    "numeric_time": tnum,
-                }
-            )
+        # the table reports the validity itself (in_validity), so the SeriesWarning of each evaluation is not repeated
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SeriesWarning)
+            rows.extend(_limit_cycle_rows(lc, e, orders, cyc, radius, tnum))
     return SeriesValidation(tuple(rows), radius)
+
+
+def _limit_cycle_rows(lc: Any, e: float, orders: list, cyc: Any, radius: float | None, tnum: float) -> list:
+    rows = []
+    for n in orders:
+        amp = lc.amplitude.evaluate(e, n)
+        om = lc.frequency.evaluate(e, n)
+        last = abs(float(lc.frequency.coefficients[n]) * e**n) if n > 0 else float("nan")
+        rows.append(
+            {
+                "eps": e,
+                "order": n,
+                "amplitude_series": amp,
+                "amplitude_numeric": float(cyc.amplitude),
+                "amplitude_error": abs(amp - float(cyc.amplitude)),
+                "frequency_series": om,
+                "frequency_numeric": float(cyc.frequency),
+                "frequency_error": abs(om - float(cyc.frequency)),
+                "frequency_pade_error": _pade_error(lc.frequency, e, n, float(cyc.frequency)),
+                "last_term": last,
+                "multiplier_numeric": cyc.multiplier,
+                "multiplier_series": float(np.exp(lc.floquet_exponent.evaluate(e, n + 1) * 2 * np.pi / om)),
+                "in_validity": radius is None or abs(e) < radius,
+                "method": cyc.method,
+                "stiff": cyc.stiff,
+                "numeric_time": tnum,
+            }
+        )
+    return rows
 
 
 def _pade_error(series: Any, e: float, n: int, ref: float) -> float:
@@ -414,6 +429,7 @@ def validate_lindstedt(ls: Any, eps: float, A: float, *, orders: Any = None, rto
     >>> val.rows[0]["frequency_error"] < 1e-9
     True
     """
+    eps, A = check_finite("eps", eps), check_finite("A", A)
     T = numeric_period(ls.f, eps, A, x=ls.x, eps_symbol=ls.eps, rtol=rtol)
     om_num = 2 * np.pi / T
     orders = [ls.order] if orders is None else [int(o) for o in orders]

@@ -21,7 +21,7 @@ from .difference import (
     step_image,
 )
 from .heaviside import first_expansion, heaviside_expand, residue_inverse
-from .integral_square import cross_integral, hurwitz_matrix, integral_square, is_hurwitz
+from .integral_square import cross_integral, hurwitz_matrix, integral_square, is_hurwitz, pairwise_root_sum_product
 from .systems import OperationalSolution, solve_operational
 from .table import CARSON_TABLE, TableEntry, carson_by_table, carson_matrix_exp, table_entry
 from .theorems import (
@@ -83,6 +83,7 @@ __all__ = [
     "invert_numeric",
     "is_hurwitz",
     "multiple_advance",
+    "pairwise_root_sum_product",
     "product_of_originals",
     "residue_inverse",
     "shift",
@@ -92,3 +93,8 @@ __all__ = [
     "step_image",
     "table_entry",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

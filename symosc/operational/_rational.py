@@ -207,3 +207,18 @@ def check_symbol(var, name: str) -> sp.Symbol:
     if not isinstance(var, sp.Symbol):
         raise ParameterError(f"{name} must be a sympy Symbol, got {var!r}")
     return var
+
+
+def check_expression(value, name: str) -> sp.Expr:
+    """``value`` sympified, refusing None, non-expressions and infinite/undefined values (``p/0`` is ``zoo*p``)."""
+    if value is None:
+        raise ParameterError(f"{name} must be a SymPy expression, got None")
+    try:
+        expr = sp.sympify(value, strict=not isinstance(value, str))
+    except (sp.SympifyError, TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a SymPy expression, got {value!r}") from exc
+    if not isinstance(expr, sp.Expr):
+        raise ParameterError(f"{name} must be a SymPy expression, got {type(value).__name__}")
+    if expr.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
+        raise ParameterError(f"{name} is infinite or undefined ({expr}); check for a division by zero")
+    return expr

@@ -6,6 +6,7 @@ Convention: images are **Carson** images, ``X(p) = p * Laplace[x](p)``; original
 
 from __future__ import annotations
 
+import mpmath
 import sympy as sp
 
 from ..errors import ConvergenceError, ModelError
@@ -73,10 +74,86 @@ def heaviside_expand(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = Tru
     lap_num, lap_den = _cancel_polys(lap_num, lap_den)
     found = distinct_roots(lap_den, numeric=roots == "numeric") if lap_den.degree() > 0 else []
     terms = residue_terms(lap_num, lap_den, p, t, found)
+    if has_floats(lap_num, lap_den) or roots == "numeric":
+        terms = _merge_near_multiple(terms, lap_num, lap_den, t)
     expr = sp.Add(*[term for _, _, term in terms])
     if real:
         expr = real_form(expr, t)
     return expr
+
+
+def _merge_near_multiple(terms: list, num: sp.Poly, den: sp.Poly, t: sp.Symbol) -> list:
+    """Replace the terms of numerically near-multiple simple poles by their confluent (Taylor) form.
+
+    For a cluster of simple roots ``λ_i = μ + d_i`` (``|d_i| <= 1e-6 |μ|``) with residues ``r_i`` the sum
+    ``Σ r_i exp(λ_i t)`` equals ``exp(μ t) Σ_k t^k/k! Σ_i r_i d_i^k``; the inner sums are formed in 30-digit
+    arithmetic, so the ±1/δ residues that cancel in double precision never appear in the result.  Only damped
+    clusters (``Re μ < 0``) are rewritten: there the truncated series is uniformly accurate for all ``t >= 0``.
+    """
+    if num.free_symbols - {num.gen} or den.free_symbols - {den.gen}:
+        return terms
+    simple = [(i, complex(sp.N(r, 17))) for i, (r, q, _) in enumerate(terms) if q == 1 and r.is_number]
+    if len(simple) < 2:
+        return terms
+    parent = {i: i for i, _ in simple}
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for a, (i, li) in enumerate(simple):
+        for j, lj in simple[a + 1 :]:
+            if abs(li - lj) <= 1e-6 * max(abs(li), abs(lj)):
+                parent[find(i)] = find(j)
+    groups: dict[int, list[int]] = {}
+    for i, _ in simple:
+        groups.setdefault(find(i), []).append(i)
+    drop, extra = set(), []
+    dnum, dden = num.as_expr(), den.diff(den.gen).as_expr()
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        with mpmath.workdps(40):
+            lams = [_to_mp(terms[i][0]) for i in members]
+            mu = mpmath.fsum(lams) / len(lams)
+            if mpmath.re(mu) >= 0:
+                continue
+            res = [_to_mp(dnum.subs(den.gen, terms[i][0]) / dden.subs(den.gen, terms[i][0])) for i in members]
+            d = [lam - mu for lam in lams]
+            rho = max(abs(v) for v in d)
+            a = -mpmath.re(mu)
+            coeffs, k, size = [], 0, mpmath.mpf(0)
+            while True:
+                ck = mpmath.fsum(r * dk**k for r, dk in zip(res, d, strict=True)) / mpmath.factorial(k)
+                coeffs.append(ck)
+                size = max(size, abs(ck) * (k / (a * mpmath.e)) ** k if k else abs(ck))
+                bound = mpmath.fsum(abs(r) for r in res) * rho**k * (max(k, 1) / (a * mpmath.e)) ** k
+                bound /= mpmath.factorial(k)
+                if k >= len(members) and bound <= 1e-20 * max(size, mpmath.mpf("1e-300")):
+                    break
+                k += 1
+                if k > 60:
+                    break
+            if k > 60:
+                continue
+        poly = sp.Add(*[_mp_to_sympy(c) * t**j for j, c in enumerate(coeffs) if c != 0])
+        drop.update(members)
+        extra.append((_mp_to_sympy(mu), len(members), poly * sp.exp(_mp_to_sympy(mu) * t)))
+    if not drop:
+        return terms
+    return [term for i, term in enumerate(terms) if i not in drop] + extra
+
+
+def _to_mp(value: sp.Expr) -> mpmath.mpc:
+    re, im = sp.N(value, 40).as_real_imag()
+    return mpmath.mpc(mpmath.mpf(str(sp.N(re, 40))), mpmath.mpf(str(sp.N(im, 40))))
+
+
+def _mp_to_sympy(z) -> sp.Expr:
+    z = mpmath.mpc(z)
+    re, im = sp.Float(mpmath.nstr(z.real, 30), 30), sp.Float(mpmath.nstr(z.imag, 30), 30)
+    return re if im == 0 else re + sp.I * im
 
 
 def _cancel_polys(num: sp.Poly, den: sp.Poly) -> tuple[sp.Poly, sp.Poly]:

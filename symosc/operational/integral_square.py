@@ -21,7 +21,7 @@ import sympy as sp
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots, exactify, has_floats
 
-__all__ = ["cross_integral", "hurwitz_matrix", "integral_square", "is_hurwitz"]
+__all__ = ["cross_integral", "hurwitz_matrix", "integral_square", "is_hurwitz", "pairwise_root_sum_product"]
 
 _METHODS = ("auto", "hurwitz", "closed", "residues")
 
@@ -44,6 +44,34 @@ def hurwitz_matrix(denominator, p: sp.Symbol) -> sp.Matrix:
         return k[m] if 0 <= m <= s else 0
 
     return sp.Matrix(s, s, lambda i, j: coef(2 * (j + 1) - (i + 1)))
+
+
+def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
+    """``prod_(i<j) (z_i + z_j)`` over the roots of ``A0 p**s + ... + As`` by Orlando's formula (Bulgakov 2.165–2.167).
+
+    ``prod_(i<j) (z_i + z_j) = (-1)**(s(s-1)/2) Delta_(s-1) / A0**(s-1)`` with ``Delta_(s-1)`` the leading
+    ``(s-1) x (s-1)`` minor of the Hurwitz matrix; it vanishes exactly when two roots are symmetric about the
+    imaginary axis (a stability boundary), which is why it is the denominator of the integral square estimates.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> p = sp.Symbol("p")
+    >>> pairwise_root_sum_product((p + 1) * (p + 2) * (p + 3), p)    # 3 * 4 * 5
+    60
+
+    See Also
+    --------
+    hurwitz_matrix, integral_square
+    """
+    poly = sp.Poly(polynomial, p)
+    s = poly.degree()
+    if s < 1:
+        raise ModelError(f"the polynomial must have degree >= 1 in {p}, got {polynomial}")
+    if s == 1:
+        return sp.Integer(1)
+    delta = hurwitz_matrix(polynomial, p)[: s - 1, : s - 1].det()
+    return sp.factor(sp.Integer(-1) ** (s * (s - 1) // 2) * delta / poly.LC() ** (s - 1))
 
 
 def is_hurwitz(denominator, p: sp.Symbol) -> bool | None:

@@ -13,9 +13,10 @@ import numpy as np
 import sympy as sp
 
 from .. import numeric
+from .._validate import check_finite_array, check_int, check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
-from ._rational import check_symbol
+from ._rational import check_expression, check_symbol
 from .heaviside import heaviside_expand
 from .table import _Unsupported, carson_by_table
 
@@ -60,7 +61,7 @@ def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "a
         raise ParameterError(f"unknown method {method!r}; choose one of {_METHODS}")
     if isinstance(x, sp.MatrixBase):
         return x.applyfunc(lambda e: carson(e, t, p, method=method))
-    x = sp.sympify(x)
+    x = check_expression(x, "x")
     if method in ("auto", "table"):
         try:
             return carson_by_table(x, t, p)
@@ -110,7 +111,7 @@ def inverse_carson(
         raise ParameterError(f"unknown method {method!r}; choose one of {_INV_METHODS}")
     if isinstance(image, sp.MatrixBase):
         return image.applyfunc(lambda e: inverse_carson(e, p, t, method=method, real=real, roots=roots))
-    image = sp.sympify(image)
+    image = check_expression(image, "image")
     if method in ("auto", "heaviside"):
         if image.is_rational_function(p):
             return heaviside_expand(image, p, t, real=real, roots=roots)
@@ -127,6 +128,71 @@ def inverse_carson(
     if res.has(sp.InverseLaplaceTransform):
         raise ModelError(f"no closed-form original found for {image}; use invert_numeric for numbers")
     return res.subs(sp.Heaviside(t), 1)
+
+
+_MAX_DPS = 250
+
+
+def _needed_dps(omega: float, t: float, method: str) -> int:
+    """Working digits the Bromwich methods need for an oscillation rate ``omega`` up to time ``t``.
+
+    Measured on ``cos(omega t)``: de Hoog is exact to 1e-15 while ``dps >= 0.5 omega t + 15``, Talbot needs about
+    ``omega t + 15``, Stehfest cannot follow oscillations at all past a few periods.
+    """
+    factor = {"dehoog": 0.6, "talbot": 1.1, "stehfest": 3.0}[method]
+    return int(np.ceil(factor * omega * t)) + 15
+
+
+def _oscillation_rate(expr: sp.Expr, p: sp.Symbol) -> float:
+    """Largest |Im s| over the singularities s of the image that are not strongly damped (Re s > -1).
+
+    Singularities are the zeros of polynomial denominators and of the polynomial bases of non-integer powers (e.g.
+    ``sqrt(p**2 + 1)``: branch points at ±i).  Unknown kinds contribute nothing.
+    """
+    candidates = set()
+    _num, den = sp.fraction(sp.together(expr))
+    candidates.add(den)
+    for node in sp.preorder_traversal(expr):
+        if isinstance(node, sp.Pow) and not (node.exp.is_Integer and node.exp > 0):
+            candidates.add(node.base)
+        elif isinstance(node, sp.Function) and node.args:
+            candidates.add(node.args[0])
+    rate = 0.0
+    for c in candidates:
+        for factor in sp.Mul.make_args(sp.factor_terms(c)):
+            base = factor.base if isinstance(factor, sp.Pow) else factor
+            if not base.has(p) or not base.is_polynomial(p):
+                continue
+            try:
+                poly = sp.Poly(base, p)
+                if poly.degree() < 1 or poly.free_symbols - {p}:
+                    continue
+                roots = [complex(r) for r in poly.nroots(n=15, maxsteps=200)]
+            except (sp.PolynomialError, sp.polys.polyerrors.NoConvergence, TypeError, ValueError):
+                continue
+            for r in roots:
+                if r.real > -1.0:
+                    rate = max(rate, abs(r.imag))
+    return rate
+
+
+def _invert_rational(expr: sp.Expr, p: sp.Symbol, ts: np.ndarray, dps: int) -> NumericInversion:
+    """Values of a rational image's original by partial fractions with 30-digit poles (no Bromwich integral)."""
+
+    tt = sp.Dummy("t", positive=True)
+    orig = heaviside_expand(expr, p, tt, roots="numeric", real=False)
+    terms = sp.Add.make_args(sp.expand(orig))
+    vals, errs = [], []
+    for tv in ts:
+        parts = [complex(sp.N(term.subs(tt, sp.Float(float(tv), 40)), 30)) for term in terms]
+        total = sum(parts)
+        vals.append(total)
+        # 30-digit poles: relative error ~1e-25 of the largest term (cancellation between terms included)
+        errs.append(1e-25 * max(1.0, max(abs(v) for v in parts)) * (1 + float(tv)))
+    arr = np.array(vals)
+    if np.all(np.abs(arr.imag) <= 1e-14 * (1 + np.abs(arr.real))):
+        arr = arr.real
+    return NumericInversion(t=ts, values=arr, error_estimate=np.array(errs), method="residues", converged=True)
 
 
 def _split_delays(image, p) -> dict | None:
@@ -163,7 +229,9 @@ class NumericInversion:
         ``x(t)`` (real part; complex images give complex values).
     error_estimate : ndarray
         ``|x_method - x_check|``: the difference to a second, independent method (de Hoog, Talbot or Stehfest;
-        the third is consulted only when the second disagrees).
+        the third is consulted only when the second disagrees); at long times for oscillating originals
+        (``t max|Im s| > 10`` over the singularities s) the difference to the same method with 20 more digits
+        instead, since the methods share a blind spot there.
     method : str
     converged : bool
     """
@@ -216,7 +284,11 @@ def invert_numeric(
         Numbers for the other free symbols (keyed by Symbol or name).
     method : {"talbot", "dehoog", "stehfest"}
     dps : int
-        Working precision of mpmath.
+        Working precision of mpmath.  It is raised automatically where the image has singularities near the
+        imaginary axis and ``t`` is long (the methods otherwise return ~0 for an undamped original, and agree on
+        it, e.g. ``cos(100)``).  A rational image that would need more digits is inverted exactly by partial
+        fractions (``method == "residues"`` in the result); another image that would need more than 250 digits
+        is refused with the reason.
     tol : float
         Largest accepted ``|difference| / (1 + |x|)``.
 
@@ -234,7 +306,7 @@ def invert_numeric(
     [0.7651976866, 0.2238907791]
     """
     check_symbol(p, "p")
-    expr = sp.sympify(image)
+    expr = check_expression(image, "image")
     if values:
         expr = numeric.bind(expr, values)
     extra = sorted(expr.free_symbols - {p}, key=lambda s: s.name)
@@ -244,18 +316,39 @@ def invert_numeric(
         raise ParameterError(f"unknown method {method!r}; choose talbot, dehoog or stehfest")
     checks = [m for m in ("dehoog", "talbot", "stehfest") if m != method]
     func = numeric.compile(expr / p, [p], backend="mpmath", dps=dps, check=False).raw
-    ts = np.atleast_1d(np.asarray(times, dtype=float))
+    ts = np.atleast_1d(check_finite_array("times", times))
     if np.any(ts <= 0):
         raise ParameterError("invert_numeric needs times t > 0")
+    dps = check_int("dps", dps, minimum=5)
+    tol = check_positive("tol", tol)
+    omega = _oscillation_rate(expr, p)
+    need = [_needed_dps(omega, tv, method) for tv in ts]
+    if max(need) > dps:
+        if expr.is_rational_function(p):
+            return _invert_rational(expr, p, ts, dps)
+        if max(need) > _MAX_DPS:
+            i = int(np.argmax(need))
+            raise ConvergenceError(
+                f"the image has singularities near the imaginary axis (|Im p| up to {omega:.4g}); at t={ts[i]:.4g} the "
+                f"Bromwich methods would need about {need[i]} digits (they return ~0 with a false agreement at long "
+                f"times for undamped originals); use shorter times or a closed form (inverse_carson)"
+            )
     vals, errs = [], []
-    with mpmath.workdps(dps):
-        for tv in ts:
+    for tv, nd in zip(ts, need, strict=True):
+        work = max(dps, nd)
+        with mpmath.workdps(work):
             a = mpmath.invertlaplace(func, tv, method=method)
             err = mpmath.inf
-            for check in checks:  # a second opinion; the third only if the second disagrees
-                err = min(err, abs(a - mpmath.invertlaplace(func, tv, method=check)))
-                if err <= tol * (1 + abs(a)):
-                    break
+            if omega * tv > 10:
+                # oscillating original at long times: the methods share a blind spot (they agree on ~0), so the
+                # second opinion is the same method with 20 more digits (more terms, a different approximation)
+                with mpmath.workdps(work + 20):
+                    err = abs(a - mpmath.invertlaplace(func, tv, method=method))
+            else:
+                for check in checks:  # a second opinion; the third only if the second disagrees
+                    err = min(err, abs(a - mpmath.invertlaplace(func, tv, method=check)))
+                    if err <= tol * (1 + abs(a)):
+                        break
             vals.append(complex(a))
             errs.append(float(err))
     arr = np.array(vals)

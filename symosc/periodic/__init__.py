@@ -44,3 +44,8 @@ __all__ = [
     "series_boundary",
     "stability_region",
 ]
+
+# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
+from .._validate import guard_public_api as _guard_public_api
+
+_guard_public_api(__name__)

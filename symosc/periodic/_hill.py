@@ -39,7 +39,6 @@ from dataclasses import dataclass
 
 import mpmath
 import numpy as np
-from scipy.linalg import lapack
 
 from ..errors import ConvergenceError
 
@@ -82,6 +81,8 @@ def default_size(k: int, q: float) -> int:
 
 def _eigvalue(d: np.ndarray, e: np.ndarray, k: int) -> float:
     """k-th smallest eigenvalue (0-based) by LAPACK bisection (``dstebz``, what ``eigvalsh_tridiagonal`` calls)."""
+    from scipy.linalg import lapack
+
     m, w, _iblock, _isplit, info = lapack.dstebz(d, e, 2, 0.0, 0.0, k + 1, k + 1, _ABSTOL, "E")
     if info != 0 or m != 1:  # pragma: no cover - LAPACK failure on finite input
         raise ConvergenceError(f"LAPACK dstebz failed (info={info})")
@@ -90,6 +91,8 @@ def _eigvalue(d: np.ndarray, e: np.ndarray, k: int) -> float:
 
 def _eigpair(d: np.ndarray, e: np.ndarray, k: int) -> tuple[float, np.ndarray]:
     """k-th smallest eigenpair: ``dstebz`` + inverse iteration ``dstein`` (as ``eigh_tridiagonal``, less overhead)."""
+    from scipy.linalg import lapack
+
     m, w, iblock, isplit, info = lapack.dstebz(d, e, 2, 0.0, 0.0, k + 1, k + 1, _ABSTOL, "B")
     if info != 0 or m != 1:  # pragma: no cover
         raise ConvergenceError(f"LAPACK dstebz failed (info={info})")

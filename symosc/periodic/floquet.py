@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._validate import check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
 from ..symbols import sort_symbols, t
@@ -327,6 +328,8 @@ def monodromy(
         raise ParameterError(f"period must be a positive number, got {period!r}") from exc
     if not np.isfinite(T) or T <= 0:
         raise ParameterError(f"period must be a positive finite number, got {period!r}")
+    rtol, atol = check_positive("rtol", rtol), check_positive("atol", atol)
+    unit_tol = check_positive("unit_tol", unit_tol)
     f, n, A_sym = _as_matrix_function(A, T, args, values)
     if check_periodic:
         _check_periodic(f, T)

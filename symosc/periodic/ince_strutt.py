@@ -120,7 +120,22 @@ def series_boundary(kind: str, n: int, terms: int) -> Callable[[Any], np.ndarray
     raw = fn.raw
 
     def f(q: Any) -> np.ndarray:
-        return raw(np.asarray(q, dtype=float))
+        qa = np.asarray(q, dtype=float)
+        size = float(np.nanmax(np.abs(qa))) if qa.size else 0.0
+        if size > 0:
+            radius = mathieu_series.mathieu_series_radius(kind, n)
+            if size > radius:
+                import warnings
+
+                from ..errors import SeriesWarning
+
+                warnings.warn(
+                    f"series of {kind}_{n}(q) evaluated at |q| = {size:.4g}, beyond its radius of convergence "
+                    f"~{radius:.4g}: the truncated sum is not meaningful there (use mathieu_characteristic)",
+                    SeriesWarning,
+                    stacklevel=2,
+                )
+        return raw(qa)
 
     f.expr = expr  # type: ignore[attr-defined]
     return f

@@ -73,7 +73,11 @@ def test_heavily_oversampled_record():
     for method in (matrix_pencil, esprit):
         np.testing.assert_allclose(method(y, dt, 3, pencil=150).frequencies, w, rtol=1e-6)
     with pytest.raises(IdentificationError, match="decimate"):
-        prony(y, dt, 3)
+        prony(y, dt, 3, decimate=1)
+    # decimate="auto" (the default) applies rule (45) from the periodogram's fastest mode
+    auto = prony(y, dt, 3)
+    assert auto.details["decimate"] > 1
+    np.testing.assert_allclose(auto.frequencies, w, rtol=1e-9)
     adv = sampling_advice(dt, t.size, w.max())
     assert adv.safe_decimation == 227 and adv.ratio / 50 == pytest.approx(10.0)
     np.testing.assert_allclose(prony(y, dt, 3, decimate=50).frequencies, w, rtol=1e-9)

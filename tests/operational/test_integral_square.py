@@ -169,3 +169,26 @@ def test_polarization_identity(ux, uy):
     lhs = integral_square(sp.cancel(nx * hy + ny * hx), hx * hy, p)
     rhs = integral_square(nx, hx, p) + 2 * cross_integral(nx, hx, ny, hy, p) + integral_square(ny, hy, p)
     assert lhs.is_Rational and rhs.is_Rational and lhs == rhs
+
+
+def test_pairwise_root_sum_product_orlando_2_165():
+    """Bulgakov (2.165)-(2.167), Orlando's formula: against the product over 30-digit numeric roots for degrees 2..6,
+    and zero on a stability boundary (a root pair ±i)."""
+    import itertools
+    import random
+
+    import mpmath
+
+    from symosc.operational import pairwise_root_sum_product
+
+    p = sp.Symbol("p")
+    rng = random.Random(3)
+    for s in range(2, 7):
+        coeffs = [rng.randint(1, 5) for _ in range(s + 1)]
+        poly = sum(c * p ** (s - k) for k, c in enumerate(coeffs))
+        with mpmath.workdps(30):
+            roots = mpmath.polyroots(coeffs, maxsteps=200, extraprec=60)
+            ref = mpmath.fprod(a + b for a, b in itertools.combinations(roots, 2))
+        got = pairwise_root_sum_product(poly, p)
+        assert abs(complex(got) - complex(ref)) <= 1e-20 * max(1.0, abs(complex(ref)))
+    assert pairwise_root_sum_product((p**2 + 1) * (p + 3), p) == 0

@@ -1,0 +1,300 @@
+"""Argument checks shared by the public functions (private).
+
+Each helper raises :class:`~symosc.errors.ParameterError` naming the argument, what was given and what is
+expected, so bad input never surfaces as a NumPy/SymPy exception from deep inside.
+"""
+
+from __future__ import annotations
+
+import difflib
+import numbers
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+from sympy import Basic as sp_Basic
+from sympy.polys.polyerrors import BasePolynomialError
+
+from .errors import ParameterError
+from .errors import SymoscError as SymoscError_
+
+__all__ = [
+    "check_bool",
+    "check_choice",
+    "check_complete_names",
+    "check_finite",
+    "check_finite_array",
+    "check_int",
+    "check_known_names",
+    "check_positive",
+    "check_sympy_matrix",
+]
+
+
+def _show(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def check_finite(name: str, value: Any) -> float:
+    """``value`` as a finite float (bool, None, strings and nan/inf are refused)."""
+    if isinstance(value, bool) or value is None or isinstance(value, str | bytes):
+        raise ParameterError(f"{name} must be a finite real number, got {_show(value)}")
+    try:
+        out = float(value)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a finite real number, got {_show(value)}") from exc
+    if not np.isfinite(out):
+        raise ParameterError(f"{name} must be finite, got {out}")
+    return out
+
+
+def check_positive(name: str, value: Any, *, allow_zero: bool = False) -> float:
+    """``value`` as a finite float that is > 0 (or >= 0 with ``allow_zero``)."""
+    out = check_finite(name, value)
+    if out < 0 or (out == 0 and not allow_zero):
+        raise ParameterError(f"{name} must be {'>= 0' if allow_zero else 'positive'}, got {out}")
+    return out
+
+
+def check_int(name: str, value: Any, *, minimum: int | None = None, maximum: int | None = None) -> int:
+    """``value`` as an int (integral floats such as ``3.0`` pass; ``1.5``, nan, strings, bools do not)."""
+    if isinstance(value, bool) or value is None or isinstance(value, str | bytes):
+        raise ParameterError(f"{name} must be an integer, got {_show(value)}")
+    if isinstance(value, numbers.Integral):
+        out = int(value)
+    else:
+        try:
+            f = float(value)
+        except (TypeError, ValueError) as exc:
+            raise ParameterError(f"{name} must be an integer, got {_show(value)}") from exc
+        if not np.isfinite(f) or f != int(f):
+            raise ParameterError(f"{name} must be an integer, got {_show(value)}")
+        out = int(f)
+    if minimum is not None and out < minimum:
+        raise ParameterError(f"{name} must be >= {minimum}, got {out}")
+    if maximum is not None and out > maximum:
+        raise ParameterError(f"{name} must be <= {maximum}, got {out}")
+    return out
+
+
+def check_bool(name: str, value: Any) -> bool:
+    """``value`` as a bool; only True/False (and NumPy bools) are accepted, not strings such as ``"yes"``."""
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    raise ParameterError(f"{name} must be True or False, got {_show(value)}")
+
+
+def _suggest(value: Any, choices: Iterable[Any]) -> str:
+    names = [str(c) for c in choices]
+    close = difflib.get_close_matches(str(value), names, n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def check_choice(name: str, value: Any, choices: Iterable[Any]) -> Any:
+    """``value`` if it is one of ``choices``; otherwise an error listing them with the closest match."""
+    choices = tuple(choices)
+    try:
+        ok = value in choices
+    except TypeError:
+        ok = False
+    if not ok:
+        raise ParameterError(
+            f"unknown {name} {_show(value)}{_suggest(value, choices)}; choose one of {', '.join(map(repr, choices))}"
+        )
+    return value
+
+
+def check_known_names(what: str, given: Iterable[Any], valid: Iterable[Any]) -> None:
+    """Raise when ``given`` holds names that are not in ``valid`` (misspelt parameters go unnoticed otherwise)."""
+    valid_names = {str(v): v for v in valid}
+    unknown = [g for g in given if str(g) not in valid_names]
+    if unknown:
+        hints = "".join(_suggest(u, valid_names) for u in unknown[:1])
+        raise ParameterError(f"unknown {what} {sorted(map(str, unknown))}{hints}; valid names: {sorted(valid_names)}")
+
+
+def check_complete_names(what: str, given: Iterable[Any], needed: Iterable[Any]) -> None:
+    """Raise when a needed name is missing, listing the unknown names given (with the closest match).
+
+    Extra names are harmless when every needed name is present (a shared dict of values); when one is missing, an
+    unknown name given instead is most likely a misspelling, and the error says so.
+    """
+    given_names = [str(getattr(g, "name", g)) for g in given]
+    needed_names = [str(getattr(v, "name", v)) for v in needed]
+    missing = sorted(set(needed_names) - set(given_names))
+    if not missing:
+        return
+    unknown = [g for g in given_names if g not in needed_names]
+    hints = [f"{u!r} -> {close[0]!r}" for u in unknown if (close := difflib.get_close_matches(u, missing, n=1))]
+    extra = f"; unknown {what} given: {', '.join(sorted(unknown))}" if unknown else ""
+    hint = f" (misspelt? {', '.join(hints)})" if hints else ""
+    raise ParameterError(f"missing values for: {', '.join(missing)}{extra}{hint}; valid names: {sorted(needed_names)}")
+
+
+def check_sympy_matrix(name: str, value: Any) -> Any:
+    """``value`` as a SymPy Matrix (a scalar, None or a ragged nesting is refused, naming the argument)."""
+    import sympy
+
+    if isinstance(value, sympy.MatrixBase):
+        return value
+    if value is None or isinstance(value, str | bytes | numbers.Number | sp_Basic) or np.ndim(value) == 0:
+        raise ParameterError(
+            f"{name} must be a matrix (nested list, NumPy array or SymPy Matrix), got {_show(value)}"
+        )
+    try:
+        return sympy.Matrix(value)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a rectangular matrix: {exc}") from exc
+
+
+def check_finite_array(name: str, value: Any, *, ndim: int | None = None, complex_ok: bool = False) -> np.ndarray:
+    """``value`` as a finite float (or complex) ndarray, optionally of a given number of dimensions."""
+    if value is None or isinstance(value, str | bytes):
+        raise ParameterError(f"{name} must be an array of numbers, got {_show(value)}")
+    try:
+        arr = np.asarray(value, dtype=complex if complex_ok else float)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(
+            f"{name} must be an array of {'complex' if complex_ok else 'real'} numbers: {exc}"
+        ) from exc
+    if ndim is not None and arr.ndim != ndim:
+        raise ParameterError(f"{name} must have {ndim} dimension(s), got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ParameterError(f"{name} must contain only finite numbers (found nan or inf)")
+    return arr
+
+
+# ------------------------------------------------------------------------------------------ boundary guard
+#: exceptions that must not leave the public API when an argument is invalid
+_GENERIC = (TypeError, ValueError, AttributeError, ZeroDivisionError, IndexError, KeyError, OverflowError,
+            ArithmeticError, LookupError, NotImplementedError, MemoryError, RecursionError,
+            BasePolynomialError)  # fmt: skip
+_NUMERIC_WORDS = ("float", "int", "Any", "complex", "Number", "Real", "Expr", "ArrayLike", "ndarray", "Basic")
+
+
+def _suspicious(value: Any, annotation: str) -> str | None:
+    """Why ``value`` looks invalid for a parameter annotated ``annotation`` (None when it looks fine)."""
+    ann = str(annotation)
+    if value is None:
+        return "None"
+    if isinstance(value, str | bytes):
+        return f"the string {_show(value)}"
+    if isinstance(value, bool | np.bool_):
+        return None
+    if isinstance(value, numbers.Number):
+        try:
+            f = complex(value)
+        except (TypeError, ValueError):
+            return None
+        if not (np.isfinite(f.real) and np.isfinite(f.imag)):
+            return f"the non-finite number {value}"
+        if f == 0:
+            return "zero"
+        if f.imag == 0 and f.real < 0:
+            return f"the negative number {value}"
+        if "int" in ann and "float" not in ann and f.real != int(f.real):
+            return f"the non-integer {value}"
+        if callable_expected(ann):
+            return f"the number {value} (a callable is expected)"
+        if not any(w in ann for w in _NUMERIC_WORDS):
+            return f"the number {value} (expected {ann})"
+        return None
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
+            return "an array with nan/inf"
+        return f"an array of shape {value.shape}"
+    return None
+
+
+def callable_expected(annotation: str) -> bool:
+    return "Callable" in annotation and "Expr" not in annotation and "Any" not in annotation
+
+
+_MIXED: dict[type, type] = {}
+
+
+def _parameter_error_like(exc: BaseException) -> type:
+    """ParameterError that is also an instance of the original exception's class (``except KeyError`` keeps
+    working for callers that relied on it), when Python allows the mix; plain ParameterError otherwise."""
+    kind = type(exc)
+    if kind not in _MIXED:
+        try:
+            _MIXED[kind] = type("ParameterError", (ParameterError, kind), {"__module__": "symosc.errors"})
+        except TypeError:  # incompatible instance layouts
+            _MIXED[kind] = ParameterError
+    return _MIXED[kind]
+
+
+def guard(fn):
+    """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
+    raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
+    of the wrong shape) becomes a :class:`ParameterError` naming those arguments (the original is chained)."""
+    import functools
+    import inspect
+
+    if getattr(fn, "__symosc_guarded__", False):
+        return fn
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        return fn
+    params = sig.parameters
+    name = fn.__name__
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        try:
+            bound = sig.bind(*args, **kwargs)
+        except TypeError as exc:
+            raise ParameterError(f"{name}(): {exc}") from None
+        for pname, value in bound.arguments.items():
+            p = params[pname]
+            if value is None and p.default is not None and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                ann = str(p.annotation)
+                typed = p.annotation is not inspect.Parameter.empty
+                if typed and not any(k in ann for k in ("None", "Any", "Optional")):
+                    raise ParameterError(f"{name}(): {pname} must not be None (expected {ann})")
+        try:
+            return fn(*args, **kwargs)
+        except SymoscError_:
+            raise
+        except _GENERIC as exc:
+            bad = []
+            for pname, value in bound.arguments.items():
+                p = params[pname]
+                if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                    continue
+                why = _suspicious(value, str(p.annotation))
+                tname = type(value).__name__
+                named = f"'{tname}' object" in str(exc) or f"type '{tname}'" in str(exc)
+                if why is None and not isinstance(value, sp_Basic) and named:
+                    why = f"a {type(value).__name__} ({_show(value)})"  # the error is about this argument's type
+                if why is not None:
+                    bad.append(f"{pname} = {why}")
+            if not bad:
+                raise
+            raise _parameter_error_like(exc)(
+                f"{name}(): invalid argument(s): {'; '.join(bad)} ({type(exc).__name__}: {str(exc)[:200]}); "
+                f"see help({name}) for the expected values"
+            ) from exc
+
+    wrapper.__symosc_guarded__ = True  # type: ignore[attr-defined]
+    return wrapper
+
+
+def guard_public_api(package: str) -> None:
+    """Wrap every function of ``package.__all__`` with :func:`guard`, in the package and its defining module."""
+    import inspect
+    import sys
+
+    pkg = sys.modules[package]
+    for attr in getattr(pkg, "__all__", []):
+        obj = getattr(pkg, attr, None)
+        if not inspect.isfunction(obj) or getattr(obj, "__symosc_guarded__", False):
+            continue
+        wrapped = guard(obj)
+        setattr(pkg, attr, wrapped)
+        home = sys.modules.get(obj.__module__)
+        if home is not None and getattr(home, obj.__name__, None) is obj:
+            setattr(home, obj.__name__, wrapped)

@@ -1,0 +1,107 @@
+"""The steam engine with a centrifugal governor (Bulgakov (1954), §7.5-7.7; Vyshnegradsky (1876)).
+
+- :func:`stodola_time_constant`: ``T = -J / K'(omega*)`` of ``J omega' = K(omega) - L`` (eq. (7.39)).
+- :func:`governor_statics`: the characteristic ``omega^2 = E(z) / A(z)`` and the stability index
+  ``E'(z) - A'(z) omega^2 = A(z) d(omega^2)/dz`` (eqs. (7.44)-(7.45)).
+- :func:`vyshnegradsky_cubic`: with the governor's inertia, ``U V^2 l^3 + U W l^2 + (U delta + N) l + 1``
+  (eqs. (7.55)-(7.57)) and its Hurwitz condition ``U W (U delta + N) > U V^2``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ModelError
+
+__all__ = ["GovernorStatics", "governor_statics", "stodola_time_constant", "vyshnegradsky_cubic"]
+
+
+def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None = None) -> sp.Expr:
+    """Stodola's time constant ``T = -J / K'(omega)`` at the steady speed (Bulgakov (1954), eq. (7.39)).
+
+    Raises :class:`ModelError` when ``K'(omega*) = 0`` (no restoring torque).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> J, K0, c, w = sp.symbols("J K0 c omega", positive=True)
+    >>> stodola_time_constant(J, K0 - c * w, w)
+    J/c
+
+    See Also
+    --------
+    governor_statics, vyshnegradsky_cubic
+    """
+    dK = sp.sympify(K).diff(omega)
+    if steady is not None:
+        dK = dK.xreplace({omega: sp.sympify(steady)})
+    if sp.simplify(dK) == 0:
+        raise ModelError("K'(omega) = 0 at the steady speed: the engine has no self-regulation (T is infinite)")
+    return sp.simplify(-sp.sympify(J) / dK)
+
+
+@dataclass(frozen=True)
+class GovernorStatics:
+    """``omega^2(z) = E(z)/A(z)`` and the stability index ``E' - A' omega^2`` (positive: stable).
+
+    See Also
+    --------
+    governor_statics"""
+
+    speed_squared: sp.Expr
+    stability_index: sp.Expr
+    coordinate: sp.Symbol
+
+    def __repr__(self) -> str:
+        return f"GovernorStatics(omega^2 = {self.speed_squared})"
+
+
+def governor_statics(E: Any, A: Any, z: sp.Symbol) -> GovernorStatics:
+    """Static characteristic of a centrifugal governor with generalized force ``Q = -E(z) + A(z) omega^2``
+    (Bulgakov (1954), §7.6, eqs. (7.40)-(7.45)).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> z, e0, e1, a0 = sp.symbols("z e0 e1 a0", positive=True)
+    >>> st = governor_statics(e0 + e1 * z, a0, z)
+    >>> st.speed_squared, st.stability_index
+    ((e0 + e1*z)/a0, e1)
+
+    See Also
+    --------
+    stodola_time_constant, vyshnegradsky_cubic
+    """
+    E, A = sp.sympify(E), sp.sympify(A)
+    if sp.simplify(A) == 0:
+        raise ModelError("A(z) = 0: the flyballs exert no centrifugal force")
+    w2 = sp.simplify(E / A)
+    return GovernorStatics(speed_squared=w2, stability_index=sp.simplify(E.diff(z) - A.diff(z) * w2), coordinate=z)
+
+
+def vyshnegradsky_cubic(U: Any, V2: Any, W: Any, delta: Any, N: Any = 0, symbol: sp.Symbol | None = None):
+    """Vyshnegradsky's characteristic polynomial and its Hurwitz stability condition (Bulgakov (1954), §7.7).
+
+    Returns ``(polynomial, condition)``: ``U V^2 l^3 + U W l^2 + (U delta + N) l + 1`` and
+    ``U W (U delta + N) - U V^2 > 0`` (with positive coefficients, the cubic's Hurwitz condition).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> U, V2, W, d = sp.symbols("U V2 W delta", positive=True)
+    >>> poly, cond = vyshnegradsky_cubic(U, V2, W, d)
+    >>> cond
+    U**2*W*delta - U*V2 > 0
+
+    See Also
+    --------
+    variational_equations, governor_statics
+    """
+    lam = symbol if symbol is not None else sp.Symbol("lambda")
+    U, V2, W, delta, N = (sp.sympify(x) for x in (U, V2, W, delta, N))
+    poly = U * V2 * lam**3 + U * W * lam**2 + (U * delta + N) * lam + 1
+    cond = sp.expand(U * W * (U * delta + N) - U * V2) > 0
+    return poly, cond

@@ -1,0 +1,211 @@
+"""C99 source for the "c" backend, and the ctypes caller of the built library."""
+
+from __future__ import annotations
+
+import ctypes
+import keyword
+from typing import Any
+
+import numpy as np
+import sympy as sp
+from sympy.printing.c import C99CodePrinter
+
+from ..errors import ParameterError
+from . import _build
+from ._checks import c_condition
+
+_C_KEYWORDS = set(
+    "auto break case char const continue default do double else enum extern float for goto if inline int long "
+    "register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while "
+    "_Bool _Complex _Imaginary".split()
+)
+_C_RESERVED = set(
+    "a out count k i INFINITY NAN HUGE_VAL isfinite isnan isinf fabs sqrt cbrt pow exp exp2 "
+    "expm1 log log2 log10 log1p sin cos tan asin acos atan atan2 sinh cosh tanh asinh acosh atanh hypot floor ceil "
+    "fmin fmax fmod tgamma lgamma erf erfc j0 j1 jn y0 y1 yn round trunc copysign main".split()
+)
+
+MATH_MACROS = {
+    "M_E": "2.718281828459045235360287471352662498",
+    "M_LOG2E": "1.442695040888963407359924681001892137",
+    "M_LOG10E": "0.434294481903251827651128918916605082",
+    "M_LN2": "0.693147180559945309417232121458176568",
+    "M_LN10": "2.302585092994045684017991454684364208",
+    "M_PI": "3.141592653589793238462643383279502884",
+    "M_PI_2": "1.570796326794896619231321691639751442",
+    "M_PI_4": "0.785398163397448309615660845819875721",
+    "M_1_PI": "0.318309886183790671537767526745028724",
+    "M_2_PI": "0.636619772367581343075535053490057448",
+    "M_2_SQRTPI": "1.128379167095512573896158903121545172",
+    "M_SQRT2": "1.414213562373095048801688724209698079",
+    "M_SQRT1_2": "0.707106781186547524400844362104849039",
+}
+
+
+def c_names(python_names: list[str], reserved: frozenset[str] = frozenset()) -> list[str]:
+    """C identifiers for the arguments: the Python name unless it collides with C or ``math.h``."""
+    out: list[str] = []
+    for i, n in enumerate(python_names):
+        ok = n.isidentifier() and n.isascii() and not keyword.iskeyword(n)
+        ok = (
+            ok
+            and n not in _C_KEYWORDS
+            and n not in _C_RESERVED
+            and n not in reserved
+            and n not in out
+            and not n.startswith("M_")
+        )
+        out.append(n if ok else f"_a{i}")
+    return out
+
+
+def printed(printer: C99CodePrinter, expr: sp.Expr) -> str:
+    """C code of ``expr``, or :class:`ParameterError` naming what the C printer cannot print."""
+    if expr.has(sp.I) or any(a.is_real is False for a in expr.atoms(sp.Number)):
+        raise ParameterError(
+            f"the C backend evaluates real-valued expressions only; {expr} is complex (use backend='numpy')"
+        )
+    try:
+        return printer.doprint(expr)
+    except NotImplementedError as exc:  # sympy's PrintMethodNotImplementedError
+        funcs = sorted({type(f).__name__ for f in expr.atoms(sp.Function)} - _PRINTABLE)
+        what = ", ".join(funcs) if funcs else str(expr)
+        raise ParameterError(
+            f"the C backend cannot print {what}; use backend='numpy' (SciPy special functions) or 'mpmath'"
+        ) from exc
+
+
+_PRINTABLE = {
+    "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh",
+    "exp", "log", "Abs", "sign", "floor", "ceiling", "gamma", "loggamma", "erf", "erfc", "Min", "Max", "Piecewise",
+}  # fmt: skip
+
+
+def header_lines(used: str) -> list[str]:
+    lines = ["#include <math.h>", ""]
+    for name, value in MATH_MACROS.items():
+        if name in used:
+            lines.append(f"#ifndef {name}\n#define {name} {value}\n#endif")
+    return lines
+
+
+def function_source(
+    fname: str, arg_syms: list[sp.Symbol], arg_names: list[str], replacements, reduced, shape
+) -> tuple[str, list[str]]:
+    """Complete C99 source of ``fname`` (scalar, checked scalar and batched entry points)."""
+    printer = C99CodePrinter()
+    names = c_names(arg_names)
+    rename = {
+        sp.Symbol(a, **s.assumptions0): sp.Symbol(c, **s.assumptions0)
+        for s, a, c in zip(arg_syms, arg_names, names, strict=True)
+        if a != c
+    }
+    nargs, nout = len(names), len(reduced)
+    body = []
+    for i, c in enumerate(names):
+        body.append(f"    const double {c} = a[{i}];")
+    for sym, sub in replacements:
+        body.append(f"    const double {sym} = {printed(printer, sub.xreplace(rename))};")
+    for i, e in enumerate(reduced):
+        body.append(f"    out[{i}] = {printed(printer, e.xreplace(rename))};")
+    if not names:
+        body.insert(0, "    (void)a;")
+    text = "\n".join(body)
+    what = "a scalar" if shape is None else f"an array of shape {shape}, flattened in row-major (C) order"
+    argument_list = ", ".join(f"a[{i}] = {s.name}" for i, s in enumerate(arg_syms)) or "none"
+    checks = [f"    if (!{c_condition(s, f'a[{i}]')}) return {i + 1};" for i, s in enumerate(arg_syms)]
+    lines = [
+        "/* Generated by symosc.numeric.compile (backend 'c').",
+        f"   Arguments: {argument_list}.",
+        f"   Result: {what} ({nout} double(s)).",
+        f"   {fname}(a, out)            evaluates one point; returns 0.",
+        f"   {fname}_checked(a, out)    also checks the arguments (finite, declared signs): returns i+1 for a bad",
+        "                              argument a[i], -1 when a result is not finite, 0 otherwise.",
+        f"   {fname}_batch(count, a, out)  evaluates count points: a is count x {nargs}, out is count x {nout}.",
+        f"   Build: cc -O2 -std=c99 -fPIC -shared -o {fname}.so {fname}.c -lm */",
+        *header_lines(text),
+        "",
+        f"static void {fname}_body(const double *restrict a, double *restrict out)",
+        "{",
+        text,
+        "}",
+        "",
+        f"int {fname}(const double *a, double *out)",
+        "{",
+        f"    {fname}_body(a, out);",
+        "    return 0;",
+        "}",
+        "",
+        f"int {fname}_checked(const double *a, double *out)",
+        "{",
+        *checks,
+        f"    {fname}_body(a, out);",
+        f"    for (int i = 0; i < {nout}; i++)",
+        "        if (!isfinite(out[i])) return -1;",
+        "    return 0;",
+        "}",
+        "",
+        f"void {fname}_batch(long count, const double *a, double *out)",
+        "{",
+        "    for (long k = 0; k < count; k++)",
+        f"        {fname}_body(a + k * {nargs}, out + k * {nout});",
+        "}",
+        "",
+    ]
+    return "\n".join(lines), names
+
+
+class CCaller:
+    """Calls the entry points of a built library; holds nothing that cannot be rebuilt from the source."""
+
+    def __init__(self, source: str, fname: str, nargs: int, nout: int, shape) -> None:
+        lib = _build.load(source)
+        self.lib = lib
+        self.nargs, self.nout, self.shape = nargs, nout, shape
+        self.scalar = getattr(lib, fname)
+        self.checked = getattr(lib, f"{fname}_checked")
+        self.batch = getattr(lib, f"{fname}_batch")
+        for f in (self.scalar, self.checked):
+            f.restype = ctypes.c_int
+        self.batch.restype = None
+        self.args_type = ctypes.c_double * max(nargs, 1)
+        self.out_type = ctypes.c_double * max(nout, 1)
+        self.out_shape = shape or ()
+
+    def fast_checked(self, values: tuple) -> tuple[int, Any]:
+        """Status and result of the checked scalar entry (status != 0: use the slow path)."""
+        try:
+            a = self.args_type(*values)
+        except TypeError:
+            return 1, None
+        out = self.out_type()
+        status = self.checked(a, out)
+        if status:
+            return status, None
+        return 0, np.frombuffer(out)[: self.nout].reshape(self.out_shape)
+
+    def __call__(self, *values: Any) -> np.ndarray:
+        """Unchecked evaluation with NumPy broadcasting over array arguments."""
+        try:
+            a = self.args_type(*values)
+        except TypeError:
+            return self._broadcast(values)
+        out = self.out_type()
+        self.scalar(a, out)
+        return np.frombuffer(out)[: self.nout].reshape(self.out_shape)
+
+    def _broadcast(self, values: tuple) -> np.ndarray:
+        arrays = [np.asarray(v) for v in values]
+        for v in arrays:
+            if np.iscomplexobj(v):
+                raise ParameterError("the C backend evaluates real arguments only; got a complex value")
+        arrays = [np.asarray(v, dtype=float) for v in arrays]
+        batch = np.broadcast_shapes(*(v.shape for v in arrays)) if arrays else ()
+        count = int(np.prod(batch, dtype=np.int64))
+        a = np.empty((count, max(self.nargs, 1)))
+        for i, v in enumerate(arrays):
+            a[:, i] = np.broadcast_to(v, batch).reshape(-1)
+        out = np.empty((count, max(self.nout, 1)))
+        if count:
+            self.batch(ctypes.c_long(count), a.ctypes.data_as(ctypes.c_void_p), out.ctypes.data_as(ctypes.c_void_p))
+        return out[:, : self.nout].reshape(batch + self.out_shape)
