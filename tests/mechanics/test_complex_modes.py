@@ -16,7 +16,7 @@ from scipy.integrate import solve_ivp
 
 from symosc import ModelError, ParameterError, dot, t
 from symosc.mechanics import LagrangianSystem, LinearModel
-from symosc.mechanics._quadratic import complex_modes
+from symosc.mechanics import complex_modes
 from symosc.periodic import mathieu_a, mathieu_b
 
 

@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from symosc.mechanics._quadratic import complex_modes
+from symosc.mechanics import complex_modes
 from symosc.nonlinear import gyro_pendulum_modes
 
 CASES = [(1.0, 1.0, 1.5, 0.7, 0.2), (2.0, 1.3, 0.4, 0.1, 0.9), (0.8, 1.7, 2.5, 0.5, 0.5), (1.0, 0.6, 0.05, 0.3, 0.1)]
