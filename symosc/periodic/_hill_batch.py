@@ -29,8 +29,10 @@ import numpy as np
 _EPS = float(np.finfo(float).eps)
 _TINY = float(np.finfo(float).tiny)
 _SQRT2 = math.sqrt(2.0)
-#: a seed further than this from an eigenvalue (relative residual) is not refined here
+#: a seed further than this from an eigenvalue (residual relative to max(1, |seed|)) is not refined here
 _RHO_MAX = 1e-3
+#: Rayleigh-quotient steps at most (one for a seed accurate to rounding)
+MAX_STEPS = 4
 
 
 def batch_size(k: int, q: float) -> int:
@@ -44,10 +46,39 @@ def _squares(offset: int, size: int) -> tuple[float, ...]:
     return tuple(float((2 * j + offset) ** 2) for j in range(size))
 
 
-def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: float, size: int):
-    """(value, error_estimate, accepted) for one point; the same operations as :func:`refine_batch`."""
+def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: float, size: int, tol: float = 1.0):
+    """(value, error_estimate, accepted) for one point; the same operations as :func:`refine_batch`.
+
+    Up to ``MAX_STEPS`` Rayleigh-quotient steps (one suffices for a seed accurate to rounding; a neighbour's value
+    used as a seed for a nearly degenerate pair needs two), then the index, truncation and error checks (the error
+    estimate must be at most ``tol`` times max(1, |value|)).
+    """
     if not math.isfinite(x):
         return math.nan, math.inf, False
+    for _ in range(MAX_STEPS):
+        out = _step_scalar(offset, q_sign, sqrt2, q, x, size)
+        if out is None:
+            return math.nan, math.inf, False
+        value, scale, rho2, trunc, index = out
+        if not rho2 <= _RHO_MAX * _RHO_MAX * max(1.0, abs(x)) ** 2:
+            return math.nan, math.inf, False
+        if rho2 <= 0.01 * _EPS * max(1.0, abs(value)):
+            break
+        x = value
+    err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
+    mag = max(1.0, abs(value))
+    ok = (
+        math.isfinite(value)
+        and math.isfinite(err)
+        and index == k
+        and trunc <= 1e-3 * _EPS * mag
+        and err <= tol * mag
+    )
+    return (value, err, True) if ok else (math.nan, math.inf, False)
+
+
+def _step_scalar(offset: int, q_sign: int, sqrt2: bool, q: float, x: float, size: int):
+    """One step at x: (Rayleigh quotient, scale, rho^2, truncation, index), or None when a pivot vanishes."""
     n = size
     e0 = _SQRT2 * q if sqrt2 else q
     d0 = float(offset * offset) + q_sign * q
@@ -63,20 +94,20 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
             tj = dx[j] - b / tj
             b = bq
         if tj == 0.0 and j < n - 1:  # t_{n-1} and u_0 never divide
-            return math.nan, math.inf, False
+            return None
         t[j] = tj
     u = [0.0] * n
     g = [0.0] * n
     uj = dx[n - 1]
     if uj == 0.0 and n > 1:
-        return math.nan, math.inf, False
+        return None
     u[n - 1] = uj
     g[n - 1] = t[n - 1]
     for j in range(n - 2, -1, -1):
         bqj = (b0 if j == 0 else bq) / uj
         uj = dx[j] - bqj
         if uj == 0.0 and j > 0:
-            return math.nan, math.inf, False
+            return None
         u[j] = uj
         g[j] = t[j] - bqj
     m = 0
@@ -116,15 +147,7 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
     rho2 = (gm * gm) / norm2
     w = q * z[n - 1]
     trunc = (w * w) / norm2
-    err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
-    ok = (
-        math.isfinite(value)
-        and math.isfinite(err)
-        and rho2 <= _RHO_MAX * _RHO_MAX
-        and index == k
-        and trunc <= 1e-3 * _EPS * max(1.0, abs(value))
-    )
-    return (value, err, True) if ok else (math.nan, math.inf, False)
+    return value, scale, rho2, trunc, index
 
 
 def _rowsum(a: np.ndarray) -> np.ndarray:
@@ -135,15 +158,54 @@ def _rowsum(a: np.ndarray) -> np.ndarray:
     return out
 
 
-def refine_batch(offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x: np.ndarray, size: int):
-    """Vectorised :func:`refine_scalar` over 1-d arrays ``q``, ``x`` (same size for all points).
+def refine_batch(
+    offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x: np.ndarray, size: int, tol: float = 1.0
+):
+    """Vectorised :func:`refine_scalar` over 1-d arrays ``q``, ``x`` (same size for all points)."""
+    q = np.asarray(q, dtype=float)
+    x = np.asarray(x, dtype=float)
+    value = np.full(q.shape, np.nan)
+    err = np.full(q.shape, np.inf)
+    accepted = np.zeros(q.shape, dtype=bool)
+    live = np.nonzero(np.isfinite(x))[0]
+    xs = x[live]
+    for it in range(MAX_STEPS):
+        if not live.size:
+            break
+        v, scale, rho2, trunc, index, fine = _step_batch(offset, q_sign, sqrt2, q[live], xs, size)
+        with np.errstate(all="ignore"):
+            fine &= rho2 <= _RHO_MAX * _RHO_MAX * np.maximum(1.0, np.abs(xs)) ** 2
+            done = fine & (rho2 <= 0.01 * _EPS * np.maximum(1.0, np.abs(v)))
+        last = it == MAX_STEPS - 1
+        fin = np.nonzero(done | (fine & last))[0]
+        if fin.size:
+            vf = v[fin]
+            with np.errstate(all="ignore"):
+                e = 8.0 * _EPS * scale[fin] + 0.5 * _EPS * np.abs(vf) + trunc[fin] + rho2[fin]
+                mag = np.maximum(1.0, np.abs(vf))
+                ok = (
+                    np.isfinite(vf)
+                    & np.isfinite(e)
+                    & (index[fin] == k)
+                    & (trunc[fin] <= 1e-3 * _EPS * mag)
+                    & (e <= tol * mag)
+                )
+            pts = live[fin]
+            value[pts] = np.where(ok, vf, np.nan)
+            err[pts] = np.where(ok, e, np.inf)
+            accepted[pts] = ok
+        more = np.nonzero(fine & ~done)[0]
+        live, xs = live[more], v[more]
+    return value, err, accepted
 
-    Only the two pivot recurrences loop over the rows; products and sums along the rows use ``cumprod`` /
-    ``cumsum`` (sequential, hence the same rounding as the scalar loop).
+
+def _step_batch(offset: int, q_sign: int, sqrt2: bool, q: np.ndarray, x: np.ndarray, size: int):
+    """Vectorised :func:`_step_scalar` (plus a mask of the points where no pivot vanished).
+
+    Only the two pivot recurrences loop over the rows; products and sums along the rows use ``cumprod`` and
+    row-by-row sums (sequential, hence the same rounding as the scalar loop).
     """
     n = size
-    finite = np.isfinite(x)
-    x = np.where(finite, x, 0.0)
     e0 = _SQRT2 * q if sqrt2 else q
     d0 = float(offset * offset) + q_sign * q
     b0 = e0 * e0
@@ -201,14 +263,37 @@ def refine_batch(offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x
         rho2 = (gm * gm) / norm2
         w = q * z[n - 1]
         trunc = (w * w) / norm2
-        err = 8.0 * _EPS * scale + 0.5 * _EPS * np.abs(value) + trunc + rho2
-        ok = (
-            finite
-            & ~zero
-            & np.isfinite(value)
-            & np.isfinite(err)
-            & (rho2 <= _RHO_MAX * _RHO_MAX)
-            & (index == k)
-            & (trunc <= 1e-3 * _EPS * np.maximum(1.0, np.abs(value)))
+    return value, scale, rho2, trunc, index, ~zero
+
+
+def log_gaps_a(n: int, q: float) -> tuple[float, float]:
+    """Scalar log gap estimates of a_n to b_n (below) and b_{n+1} (above); see ``_hill.log_gap_estimates``."""
+    lq = math.log(q if q > 1e-300 else 1e-300)
+    below = n * lq - (2 * n - 3) * math.log(2.0) - 2 * math.lgamma(n) if n >= 1 else math.inf
+    h = math.sqrt(q)
+    above = math.log(2.0 * n + 1.0)
+    if h >= (n + 1.5) / 4:
+        large = (
+            (4 * n + 5) * math.log(2.0)
+            + 0.5 * math.log(2.0 / math.pi)
+            + (n + 1.5) * math.log(h if h > 1e-300 else 1e-300)
+            - 4 * h
+            - math.lgamma(n + 1.0)
         )
-    return np.where(ok, value, np.nan), np.where(ok, err, np.inf), ok
+        above = min(above, large)
+    return below, above
+
+
+def gaps_scalar(is_b: bool, n: int, q: float) -> tuple[float, float, int]:
+    """(log gap below, log gap above, seed rule) of kind_n at q; the seed rule of b_n is -1 (seed from a_{n-1}),
+    +1 (from a_n) or 0 (its own), chosen where the gap estimate is below 1e-6 (n^2 + 2q + 1) -- looser than the
+    ordering clamp's 1e-7 max(1, |value|), so a clamped pair always shares its seed."""
+    if not is_b:
+        lo, hi = log_gaps_a(n, q)
+        return lo, hi, 0
+    a0 = log_gaps_a(n - 1, q)[1]
+    b1 = log_gaps_a(n, q)[0]
+    thr = math.log(1e-6 * (float(n) * n + 2.0 * q + 1.0))
+    if a0 < thr and a0 <= b1:
+        return a0, b1, -1
+    return a0, b1, (1 if b1 < thr else 0)
