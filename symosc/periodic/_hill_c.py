@@ -16,6 +16,7 @@ import os
 import numpy as np
 
 SOURCE = r"""
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -66,42 +67,38 @@ static int step(int offset, double d0, double e0, int n, double q, double x, dou
     z[m] = 1.0;
     for (int j = m - 1; j >= 0; j--) z[j] = ((j == 0 ? -e0 : -q) / t[j]) * z[j + 1];
     for (int j = m + 1; j < n; j++) z[j] = ((j == 1 ? -e0 : -q) / u[j]) * z[j - 1];
-    double zz = z[0] * z[0];
-    double norm2 = zz, dsum = d0 * zz, dabs = fabs(d0) * zz, c = 0.0, cross = 0.0, cabs = 0.0;
-    if (n > 1) { c = e0 * (z[0] * z[1]); cross = c; cabs = fabs(c); }
+    /* the Rayleigh quotient summed in long double: where |value| << 2q the cancellation between the diagonal and
+       the off-diagonal sums is what limits the accuracy (the rounding bound uses LDBL_EPSILON for these sums) */
+    long double zz = (long double)z[0] * z[0];
+    long double norm2 = zz, dsum = (long double)d0 * zz, dabs = fabs(d0) * zz, c = 0.0L, cross = 0.0L, cabs = 0.0L;
+    if (n > 1) { c = (long double)e0 * ((long double)z[0] * z[1]); cross = c; cabs = fabsl(c); }
     for (int j = 1; j < n; j++) {
-        double zj = z[j];
+        long double zj = z[j];
         zz = zj * zj;
         norm2 += zz;
-        double dz = (double)(2 * j + offset) * (double)(2 * j + offset) * zz;
+        long double dz = (long double)((double)(2 * j + offset) * (double)(2 * j + offset)) * zz;
         dsum += dz;
         dabs += dz;
         if (j < n - 1) {
-            c = q * (zj * z[j + 1]);
+            c = (long double)q * (zj * z[j + 1]);
             cross += c;
-            cabs += fabs(c);
+            cabs += fabsl(c);
         }
     }
-    *value = (dsum + 2.0 * cross) / norm2;
-    *scale = (dabs + 2.0 * cabs) / norm2;
-    *rho2 = (gm * gm) / norm2;
-    double w = q * z[n - 1];
-    *trunc = (w * w) / norm2;
+    *value = (double)((dsum + 2.0L * cross) / norm2);
+    *scale = (double)((dabs + 2.0L * cabs) / norm2);
+    *rho2 = (double)(((long double)gm * gm) / norm2);
+    long double w = (long double)q * z[n - 1];
+    *trunc = (double)((w * w) / norm2);
     *index = idx;
     return 1;
 }
 
-/* Refine the seed x of eigenvalue k (0-based) of one Hill family at q >= 0: up to MAX_STEPS Rayleigh-quotient steps
-   (the first one is enough for a seed accurate to rounding), then the index and error checks. */
-static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, double x, double tol, double *work,
-                        double *out_value, double *out_err) {
-    *out_value = NAN;
-    *out_err = INFINITY;
-    if (!isfinite(x)) return 0;
-    int n = batch_size(k, q);
-    if (n < 1) return 0;
-    double e0 = sqrt2 ? 1.4142135623730951 * q : q;
-    double d0 = (double)(offset * offset) + q_sign * q;
+/* Rayleigh-quotient steps from x for eigenvalue k (0-based) of one Hill family at q >= 0 (the first one is enough
+   for a seed accurate to rounding), then the index and error checks.  Returns 1 (accepted), 2 (right eigenvalue but
+   error estimate above tol) or 0 (rejected: wrong index, seed too far, vanishing pivot). */
+static int rq_point(int offset, double d0, double e0, int n, int k, double q, double x, double tol, double *work,
+                    double *out_value, double *out_err) {
     double value = x, scale = 0.0, rho2 = 0.0, trunc = 0.0;
     int index = -1;
     for (int s = 0; s < MAX_STEPS; s++) {
@@ -112,10 +109,53 @@ static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, doub
         if (rho2 <= 0.01 * EPS * (fabs(value) > 1.0 ? fabs(value) : 1.0)) break;
         x = value;
     }
-    double err = 8.0 * EPS * scale + 0.5 * EPS * fabs(value) + trunc + rho2;
+    double err = 8.0 * LDBL_EPSILON * scale + 0.5 * EPS * fabs(value) + trunc + rho2;
     double mag = fabs(value) > 1.0 ? fabs(value) : 1.0;
-    if (!(isfinite(value) && isfinite(err) && index == k && trunc <= 1e-3 * EPS * mag && err <= tol * mag))
-        return 0;
+    if (!(isfinite(value) && isfinite(err) && index == k && trunc <= 1e-3 * EPS * mag)) return 0;
+    *out_value = value;
+    *out_err = err;
+    return err <= tol * mag ? 1 : 2;
+}
+
+/* Number of eigenvalues below x (negative pivots of the LDL^T factorisation of T - x I). */
+static int sturm_count(int offset, double d0, double e0, int n, double q, double x) {
+    double b0 = e0 * e0, bq = q * q, tj = d0 - x;
+    int count = 0;
+    for (int j = 0; j < n; j++) {
+        if (j) {
+            double sq = (double)(2 * j + offset) * (double)(2 * j + offset);
+            tj = (sq - x) - (j == 1 ? b0 : bq) / tj;
+        }
+        if (tj == 0.0) tj = -EPS * (fabs(x) + 1.0);
+        count += tj < 0.0;
+    }
+    return count;
+}
+
+/* The seed refined, or (when it is rejected: SciPy's value on a wrong branch) a start found by bisection on the
+   Sturm count, refined the same way. */
+static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, double x, double tol, double *work,
+                        double *out_value, double *out_err) {
+    *out_value = NAN;
+    *out_err = INFINITY;
+    int n = batch_size(k, q);
+    if (n < 1) return 0;
+    double e0 = sqrt2 ? 1.4142135623730951 * q : q;
+    double d0 = (double)(offset * offset) + q_sign * q;
+    double value, err;
+    int status = isfinite(x) ? rq_point(offset, d0, e0, n, k, q, x, tol, work, &value, &err) : 0;
+    if (status == 0) {
+        double top = (double)(2 * k + offset) * (double)(2 * k + offset);
+        double lo = -4.0 * q - 1.0, hi = top + 4.0 * q + 1.0;
+        for (int it = 0; it < 200; it++) {
+            double mid = 0.5 * (lo + hi);
+            double size = fabs(lo) > fabs(hi) ? fabs(lo) : fabs(hi);
+            if (hi - lo <= 1e-7 * (size > 1.0 ? size : 1.0) || mid <= lo || mid >= hi) break;
+            if (sturm_count(offset, d0, e0, n, q, mid) > k) hi = mid; else lo = mid;
+        }
+        status = rq_point(offset, d0, e0, n, k, q, 0.5 * (lo + hi), tol, work, &value, &err);
+    }
+    if (status != 1) return 0;
     *out_value = value;
     *out_err = err;
     return 1;
