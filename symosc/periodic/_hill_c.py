@@ -25,96 +25,135 @@ SOURCE = r"""
 #define MAX_STEPS 4
 #define MAX_SIZE 65536
 
-static int batch_size(int k, double q) {
+/* Matrix sizes: a first try (measured: enough for n <= 100, q <= 1e4 -- the truncation is checked anyway) and a
+   larger retry when the truncation estimate of the first is above target; -1 when q is too large. */
+static int first_size(int k, double q) {
     double r = ceil(sqrt(q));
-    if (!(r < MAX_SIZE)) return -1;
-    int n = k + 12 + (int)r;
-    return 8 * ((n + 7) / 8);
+    return r < MAX_SIZE ? k + 10 + (int)r : -1;
 }
 
-/* One twisted-factorisation step at x: returns 1 and fills the outputs, or 0 when a pivot vanishes. */
-static int step(int offset, double d0, double e0, int n, double q, double x, double *t, double *u, double *z,
-                double *value, double *scale, double *rho2, double *trunc, int *index) {
+static int retry_size(int k, double q) {
+    double r = ceil(1.2 * sqrt(q));
+    return r < MAX_SIZE ? k + 20 + (int)r : -1;
+}
+
+static inline double diag(int j, int offset) {
+    int m = 2 * j + offset;
+    return (double)m * (double)m;
+}
+
+/* One twisted-factorisation step at x (pivots t_j forward, u_j backward, twist m = argmin |gamma_j|, eigenvector z
+   with z_m = 1) and the Rayleigh quotient of z.  Returns 0 when a pivot vanishes.  The sums are done in double; when
+   their rounding bound is above tol they are redone in long double. */
+static int step(int offset, double d0, double e0, int n, double q, double x, double tol, double *work,
+                double *value, double *err, double *rho2, double *trunc, int *index) {
+    double *t = work, *rt = work + n, *ru = work + 2 * n, *z = work + 3 * n;
     double b0 = e0 * e0, bq = q * q;
-    double tj = d0 - x, b = b0;
-    for (int j = 0; j < n; j++) {
-        if (j) {
-            double sq = (double)(2 * j + offset) * (double)(2 * j + offset);
-            tj = (sq - x) - b / tj;
-            b = bq;
-        }
-        if (tj == 0.0 && j < n - 1) return 0;
-        t[j] = tj;
+    /* the forward and backward pivot recurrences are independent chains of divisions: run them in one loop so that
+       the processor overlaps them (the operations of each are those of a separate loop) */
+    double *bqj = z;  /* b_j / u_{j+1}, kept for the twist; z is filled later */
+    double tj = d0 - x;
+    double uj = (n == 1) ? d0 - x : diag(n - 1, offset) - x;
+    if ((tj == 0.0 || uj == 0.0) && n > 1) return 0;
+    t[0] = tj;
+    rt[0] = 1.0 / tj;
+    ru[n - 1] = 1.0 / uj;
+    for (int i = 1; i < n; i++) {
+        tj = (diag(i, offset) - x) - (i == 1 ? b0 : bq) * rt[i - 1];
+        int j = n - 1 - i;
+        double bb = (j == 0 ? b0 : bq) * ru[j + 1];
+        uj = ((j == 0) ? d0 : diag(j, offset)) - x - bb;
+        if ((tj == 0.0 && i < n - 1) || (uj == 0.0 && j > 0)) return 0;
+        t[i] = tj;
+        rt[i] = 1.0 / tj;
+        ru[j] = 1.0 / uj;
+        bqj[j] = bb;
     }
-    double sqn = (double)(2 * (n - 1) + offset) * (double)(2 * (n - 1) + offset);
-    double uj = (n == 1) ? d0 - x : sqn - x;
-    if (uj == 0.0 && n > 1) return 0;
-    u[n - 1] = uj;
     int m = n - 1;
     double gm = fabs(t[n - 1]);
     for (int j = n - 2; j >= 0; j--) {
-        double bqj = (j == 0 ? b0 : bq) / uj;
-        double dxj = (j == 0) ? d0 - x : (double)(2 * j + offset) * (double)(2 * j + offset) - x;
-        uj = dxj - bqj;
-        if (uj == 0.0 && j > 0) return 0;
-        u[j] = uj;
-        double g = fabs(t[j] - bqj);
-        if (g <= gm) { m = j; gm = g; }  /* first minimum, as argmin */
+        double g = fabs(t[j] - bqj[j]);
+        if (g <= gm) { m = j; gm = g; }  /* the first minimum */
     }
     int idx = 0;
     for (int j = 0; j < m; j++) idx += t[j] < 0.0;
-    for (int j = m + 1; j < n; j++) idx += u[j] < 0.0;
+    for (int j = m + 1; j < n; j++) idx += ru[j] < 0.0;
     z[m] = 1.0;
-    for (int j = m - 1; j >= 0; j--) z[j] = ((j == 0 ? -e0 : -q) / t[j]) * z[j + 1];
-    for (int j = m + 1; j < n; j++) z[j] = ((j == 1 ? -e0 : -q) / u[j]) * z[j - 1];
-    /* the Rayleigh quotient summed in long double: where |value| << 2q the cancellation between the diagonal and
-       the off-diagonal sums is what limits the accuracy (the rounding bound uses LDBL_EPSILON for these sums) */
-    long double zz = (long double)z[0] * z[0];
-    long double norm2 = zz, dsum = (long double)d0 * zz, dabs = fabs(d0) * zz, c = 0.0L, cross = 0.0L, cabs = 0.0L;
-    if (n > 1) { c = (long double)e0 * ((long double)z[0] * z[1]); cross = c; cabs = fabsl(c); }
+    for (int j = m - 1; j >= 0; j--) z[j] = (-(j == 0 ? e0 : q) * rt[j]) * z[j + 1];
+    for (int j = m + 1; j < n; j++) z[j] = (-(j == 1 ? e0 : q) * ru[j]) * z[j - 1];
+    double zz = z[0] * z[0];
+    double norm2 = zz, dsum = d0 * zz, dabs = fabs(d0) * zz, cross = 0.0, cabs = 0.0;
+    if (n > 1) { cross = e0 * (z[0] * z[1]); cabs = fabs(cross); }
     for (int j = 1; j < n; j++) {
-        long double zj = z[j];
-        zz = zj * zj;
+        zz = z[j] * z[j];
         norm2 += zz;
-        long double dz = (long double)((double)(2 * j + offset) * (double)(2 * j + offset)) * zz;
+        double dz = diag(j, offset) * zz;
         dsum += dz;
         dabs += dz;
         if (j < n - 1) {
-            c = (long double)q * (zj * z[j + 1]);
+            double c = q * (z[j] * z[j + 1]);
             cross += c;
-            cabs += fabsl(c);
+            cabs += fabs(c);
         }
     }
-    *value = (double)((dsum + 2.0L * cross) / norm2);
-    *scale = (double)((dabs + 2.0L * cabs) / norm2);
-    *rho2 = (double)(((long double)gm * gm) / norm2);
-    long double w = (long double)q * z[n - 1];
-    *trunc = (double)((w * w) / norm2);
+    double v = (dsum + 2.0 * cross) / norm2;
+    double scale = (dabs + 2.0 * cabs) / norm2;
+    double r2 = (gm * gm) / norm2;
+    double w = q * z[n - 1];
+    double tr = (w * w) / norm2;
+    double mag = fabs(v) > 1.0 ? fabs(v) : 1.0;
+    double e = 8.0 * EPS * scale + 0.5 * EPS * fabs(v) + tr + r2;
+    if (!(e <= tol * mag) && LDBL_EPSILON < EPS) {
+        /* where |value| << 2q the cancellation between the diagonal and off-diagonal sums limits the accuracy */
+        long double zl = z[0], zzl = zl * zl;
+        long double n2 = zzl, ds = (long double)d0 * zzl, cr = 0.0L;
+        if (n > 1) cr = (long double)e0 * (zl * z[1]);
+        for (int j = 1; j < n; j++) {
+            zl = z[j];
+            zzl = zl * zl;
+            n2 += zzl;
+            ds += (long double)diag(j, offset) * zzl;
+            if (j < n - 1) cr += (long double)q * (zl * z[j + 1]);
+        }
+        v = (double)((ds + 2.0L * cr) / n2);
+        e = 8.0 * LDBL_EPSILON * scale + 0.5 * EPS * fabs(v) + tr + r2;
+    }
+    *value = v;
+    *err = e;
+    *rho2 = r2;
+    *trunc = tr;
     *index = idx;
     return 1;
 }
 
 /* Rayleigh-quotient steps from x for eigenvalue k (0-based) of one Hill family at q >= 0 (the first one is enough
    for a seed accurate to rounding), then the index and error checks.  Returns 1 (accepted), 2 (right eigenvalue but
-   error estimate above tol) or 0 (rejected: wrong index, seed too far, vanishing pivot). */
+   error estimate above tol), 3 (truncation above target) or 0 (wrong index, seed too far, vanishing pivot). */
 static int rq_point(int offset, double d0, double e0, int n, int k, double q, double x, double tol, double *work,
                     double *out_value, double *out_err) {
-    double value = x, scale = 0.0, rho2 = 0.0, trunc = 0.0;
+    double value = x, err = INFINITY, rho2 = 0.0, trunc = 0.0;
     int index = -1;
     for (int s = 0; s < MAX_STEPS; s++) {
-        if (!step(offset, d0, e0, n, q, x, work, work + n, work + 2 * n, &value, &scale, &rho2, &trunc, &index))
-            return 0;
+        if (!step(offset, d0, e0, n, q, x, tol, work, &value, &err, &rho2, &trunc, &index)) return 0;
         double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
         if (!(rho2 <= RHO_MAX * RHO_MAX * big * big)) return 0;
         if (rho2 <= 0.01 * EPS * (fabs(value) > 1.0 ? fabs(value) : 1.0)) break;
         x = value;
     }
-    double err = 8.0 * LDBL_EPSILON * scale + 0.5 * EPS * fabs(value) + trunc + rho2;
     double mag = fabs(value) > 1.0 ? fabs(value) : 1.0;
-    if (!(isfinite(value) && isfinite(err) && index == k && trunc <= 1e-3 * EPS * mag)) return 0;
+    if (!(isfinite(value) && isfinite(err) && index == k)) return 0;
+    if (!(trunc <= 1e-3 * EPS * mag)) return 3;
     *out_value = value;
     *out_err = err;
     return err <= tol * mag ? 1 : 2;
+}
+
+/* rq_point at the first matrix size, and at the retry size when the truncation estimate asks for it. */
+static int rq_sizes(int offset, double d0, double e0, int k, double q, double x, double tol, double *work,
+                    double *out_value, double *out_err) {
+    int status = rq_point(offset, d0, e0, first_size(k, q), k, q, x, tol, work, out_value, out_err);
+    if (status == 3) status = rq_point(offset, d0, e0, retry_size(k, q), k, q, x, tol, work, out_value, out_err);
+    return status;
 }
 
 /* Number of eigenvalues below x (negative pivots of the LDL^T factorisation of T - x I). */
@@ -122,10 +161,7 @@ static int sturm_count(int offset, double d0, double e0, int n, double q, double
     double b0 = e0 * e0, bq = q * q, tj = d0 - x;
     int count = 0;
     for (int j = 0; j < n; j++) {
-        if (j) {
-            double sq = (double)(2 * j + offset) * (double)(2 * j + offset);
-            tj = (sq - x) - (j == 1 ? b0 : bq) / tj;
-        }
+        if (j) tj = (diag(j, offset) - x) - (j == 1 ? b0 : bq) / tj;
         if (tj == 0.0) tj = -EPS * (fabs(x) + 1.0);
         count += tj < 0.0;
     }
@@ -138,14 +174,14 @@ static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, doub
                         double *out_value, double *out_err) {
     *out_value = NAN;
     *out_err = INFINITY;
-    int n = batch_size(k, q);
-    if (n < 1) return 0;
+    if (first_size(k, q) < 1 || retry_size(k, q) < 1) return 0;
     double e0 = sqrt2 ? 1.4142135623730951 * q : q;
     double d0 = (double)(offset * offset) + q_sign * q;
     double value, err;
-    int status = isfinite(x) ? rq_point(offset, d0, e0, n, k, q, x, tol, work, &value, &err) : 0;
+    int status = isfinite(x) ? rq_sizes(offset, d0, e0, k, q, x, tol, work, &value, &err) : 0;
     if (status == 0) {
-        double top = (double)(2 * k + offset) * (double)(2 * k + offset);
+        int n = retry_size(k, q);
+        double top = diag(k, offset);
         double lo = -4.0 * q - 1.0, hi = top + 4.0 * q + 1.0;
         for (int it = 0; it < 200; it++) {
             double mid = 0.5 * (lo + hi);
@@ -153,7 +189,7 @@ static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, doub
             if (hi - lo <= 1e-7 * (size > 1.0 ? size : 1.0) || mid <= lo || mid >= hi) break;
             if (sturm_count(offset, d0, e0, n, q, mid) > k) hi = mid; else lo = mid;
         }
-        status = rq_point(offset, d0, e0, n, k, q, 0.5 * (lo + hi), tol, work, &value, &err);
+        status = rq_sizes(offset, d0, e0, k, q, 0.5 * (lo + hi), tol, work, &value, &err);
     }
     if (status != 1) return 0;
     *out_value = value;
@@ -161,10 +197,10 @@ static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, doub
     return 1;
 }
 
-static double work_size(int k, long npts, const double *q) {
+static int work_size(int k, long npts, const double *q) {
     int nmax = 8;
     for (long i = 0; i < npts; i++) {
-        int n = batch_size(k, q[i]);
+        int n = retry_size(k, q[i]);
         if (n > nmax) nmax = n;
     }
     return nmax;
@@ -172,23 +208,22 @@ static double work_size(int k, long npts, const double *q) {
 
 int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
                           double tol, double *value, double *err, unsigned char *ok) {
-    int nmax = (int)work_size(k, npts, q);
-    double *work = malloc(sizeof(double) * 3 * (size_t)nmax);
+    int nmax = work_size(k, npts, q);
+    double *work = malloc(sizeof(double) * 4 * (size_t)nmax);
     if (!work) return -1;
-    for (long i = 0; i < npts; i++) ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work,
-                                                                       value + i, err + i);
+    for (long i = 0; i < npts; i++)
+        ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, value + i, err + i);
     free(work);
     return 0;
 }
 
 double symosc_mathieu_refine1(int offset, int q_sign, int sqrt2, int k, double q, double x, double tol, double *err) {
-    double value;
-    int n = batch_size(k, q);
-    if (n < 8) n = 8;
-    double *work = malloc(sizeof(double) * 3 * (size_t)n);
+    double value, stack[4 * 256];
+    int n = work_size(k, 1, &q);
+    double *work = n <= 256 ? stack : malloc(sizeof(double) * 4 * (size_t)n);
     if (!work) { *err = INFINITY; return NAN; }
     refine_point(offset, q_sign, sqrt2, k, q, x, tol, work, &value, err);
-    free(work);
+    if (work != stack) free(work);
     return value;
 }
 
