@@ -42,33 +42,74 @@ static inline double diag(int j, int offset) {
     return (double)m * (double)m;
 }
 
-/* One twisted-factorisation step at x (pivots t_j forward, u_j backward, twist m = argmin |gamma_j|, eigenvector z
-   with z_m = 1) and the Rayleigh quotient of z.  Returns 0 when a pivot vanishes.  The sums are done in double; when
-   their rounding bound is above tol they are redone in long double. */
-static int step(int offset, double d0, double e0, int n, double q, double x, double tol, double *work,
-                double *value, double *err, double *rho2, double *trunc, int *index) {
-    double *t = work, *rt = work + n, *ru = work + 2 * n, *z = work + 3 * n;
-    double b0 = e0 * e0, bq = q * q;
-    /* the forward and backward pivot recurrences are independent chains of divisions: run them in one loop so that
-       the processor overlaps them (the operations of each are those of a separate loop) */
-    double *bqj = z;  /* b_j / u_{j+1}, kept for the twist; z is filled later */
-    double tj = d0 - x;
-    double uj = (n == 1) ? d0 - x : diag(n - 1, offset) - x;
-    if ((tj == 0.0 || uj == 0.0) && n > 1) return 0;
-    t[0] = tj;
-    rt[0] = 1.0 / tj;
-    ru[n - 1] = 1.0 / uj;
-    for (int i = 1; i < n; i++) {
-        tj = (diag(i, offset) - x) - (i == 1 ? b0 : bq) * rt[i - 1];
-        int j = n - 1 - i;
-        double bb = (j == 0 ? b0 : bq) * ru[j + 1];
-        uj = ((j == 0) ? d0 : diag(j, offset)) - x - bb;
-        if ((tj == 0.0 && i < n - 1) || (uj == 0.0 && j > 0)) return 0;
-        t[i] = tj;
-        rt[i] = 1.0 / tj;
-        ru[j] = 1.0 / uj;
-        bqj[j] = bb;
+/* Work layout per point: t, 1/t, 1/u, b_j/u_{j+1} (later overwritten by z), each n doubles. */
+#define PIVOT_ROW(T, RT, RU, BQ, X, OK)                                                             \
+    {                                                                                               \
+        double tj_ = (diag(i, offset) - X) - (i == 1 ? b0 : bq) * RT[i - 1];                        \
+        double bb_ = (j == 0 ? b0 : bq) * RU[j + 1];                                                \
+        double uj_ = ((j == 0) ? d0 : diag(j, offset)) - X - bb_;                                   \
+        if ((tj_ == 0.0 && i < n - 1) || (uj_ == 0.0 && j > 0)) OK = 0;                             \
+        T[i] = tj_;                                                                                 \
+        RT[i] = 1.0 / tj_;                                                                          \
+        RU[j] = 1.0 / uj_;                                                                          \
+        BQ[j] = bb_;                                                                                \
     }
+
+/* Forward pivots t_j = (d_j - x) - b_{j-1} / t_{j-1} and backward pivots u_j = (d_j - x) - b_j / u_{j+1}: two
+   independent chains of divisions, run in one loop so that the processor overlaps them (each keeps the operations
+   of its own loop).  Returns 0 when a pivot that divides vanishes. */
+static int pivots(int offset, double d0, double e0, int n, double q, double x, double *w) {
+    double *t = w, *rt = w + n, *ru = w + 2 * n, *bq_ = w + 3 * n;
+    double b0 = e0 * e0, bq = q * q;
+    double t0 = d0 - x, un = diag(n - 1, offset) - x;
+    if (t0 == 0.0 || un == 0.0) return 0;
+    t[0] = t0;
+    rt[0] = 1.0 / t0;
+    ru[n - 1] = 1.0 / un;
+    int ok = 1;
+    for (int i = 1; i < n; i++) {
+        int j = n - 1 - i;
+        PIVOT_ROW(t, rt, ru, bq_, x, ok)
+    }
+    return ok;
+}
+
+/* pivots() for two points with the same matrix size, interleaved (four independent chains); each point gets the
+   bits pivots() gives it. */
+static void pivots2(int offset, double d0a, double d0b, double e0a, double e0b, int n, double qa, double qb,
+                    double xa, double xb, double *wa, double *wb, int *oka, int *okb) {
+    double *ta = wa, *rta = wa + n, *rua = wa + 2 * n, *bqa = wa + 3 * n;
+    double *tb = wb, *rtb = wb + n, *rub = wb + 2 * n, *bqb = wb + 3 * n;
+    int ok_a = 1, ok_b = 1;
+    {
+        double t0 = d0a - xa, un = diag(n - 1, offset) - xa;
+        if (t0 == 0.0 || un == 0.0) ok_a = 0;
+        ta[0] = t0; rta[0] = 1.0 / t0; rua[n - 1] = 1.0 / un;
+        t0 = d0b - xb; un = diag(n - 1, offset) - xb;
+        if (t0 == 0.0 || un == 0.0) ok_b = 0;
+        tb[0] = t0; rtb[0] = 1.0 / t0; rub[n - 1] = 1.0 / un;
+    }
+    for (int i = 1; i < n; i++) {
+        int j = n - 1 - i;
+        {
+            double b0 = e0a * e0a, bq = qa * qa, d0 = d0a;
+            PIVOT_ROW(ta, rta, rua, bqa, xa, ok_a)
+        }
+        {
+            double b0 = e0b * e0b, bq = qb * qb, d0 = d0b;
+            PIVOT_ROW(tb, rtb, rub, bqb, xb, ok_b)
+        }
+    }
+    *oka = ok_a;
+    *okb = ok_b;
+}
+
+/* The rest of a twisted-factorisation step at x, after pivots(): twist m = argmin |gamma_j|, the index (negative
+   pivots other than the twist), eigenvector z with z_m = 1 and its Rayleigh quotient.  The sums are done in double;
+   when their rounding bound is above tol they are redone in long double. */
+static void finish(int offset, double d0, double e0, int n, double q, double tol, double *work, double *value,
+                   double *err, double *rho2, double *trunc, int *index) {
+    double *t = work, *rt = work + n, *ru = work + 2 * n, *z = work + 3 * n, *bqj = z;
     int m = n - 1;
     double gm = fabs(t[n - 1]);
     for (int j = n - 2; j >= 0; j--) {
@@ -123,6 +164,12 @@ static int step(int offset, double d0, double e0, int n, double q, double x, dou
     *rho2 = r2;
     *trunc = tr;
     *index = idx;
+}
+
+static int step(int offset, double d0, double e0, int n, double q, double x, double tol, double *work,
+                double *value, double *err, double *rho2, double *trunc, int *index) {
+    if (!pivots(offset, d0, e0, n, q, x, work)) return 0;
+    finish(offset, d0, e0, n, q, tol, work, value, err, rho2, trunc, index);
     return 1;
 }
 
@@ -206,13 +253,51 @@ static int work_size(int k, long npts, const double *q) {
     return nmax;
 }
 
+/* After pivots(): the first Rayleigh-quotient step of rq_point() accepted as it stands?  (Then refine_point()
+   returns exactly this value and error.) */
+static int accept_first(int offset, double d0, double e0, int n, int k, double q, double x, double tol, double *work,
+                        double *out_value, double *out_err) {
+    double value, err, rho2, trunc;
+    int index;
+    finish(offset, d0, e0, n, q, tol, work, &value, &err, &rho2, &trunc, &index);
+    double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
+    double mag = fabs(value) > 1.0 ? fabs(value) : 1.0;
+    if (!(rho2 <= RHO_MAX * RHO_MAX * big * big) || !(rho2 <= 0.01 * EPS * mag)) return 0;
+    if (!(isfinite(value) && isfinite(err) && index == k && trunc <= 1e-3 * EPS * mag && err <= tol * mag)) return 0;
+    *out_value = value;
+    *out_err = err;
+    return 1;
+}
+
 int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
                           double tol, double *value, double *err, unsigned char *ok) {
     int nmax = work_size(k, npts, q);
-    double *work = malloc(sizeof(double) * 4 * (size_t)nmax);
+    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
     if (!work) return -1;
-    for (long i = 0; i < npts; i++)
+    long i = 0;
+    while (i < npts) {
+        /* two neighbouring points with the same matrix size: their pivots interleaved, the common case finished
+           here; anything else goes through refine_point() from the start (the same operations either way) */
+        int n = first_size(k, q[i]);
+        if (i + 1 < npts && n > 1 && n == first_size(k, q[i + 1]) && retry_size(k, q[i]) > 0 &&
+            retry_size(k, q[i + 1]) > 0 && isfinite(x[i]) && isfinite(x[i + 1])) {
+            double e0a = sqrt2 ? 1.4142135623730951 * q[i] : q[i], e0b = sqrt2 ? 1.4142135623730951 * q[i + 1] : q[i + 1];
+            double d0a = (double)(offset * offset) + q_sign * q[i], d0b = (double)(offset * offset) + q_sign * q[i + 1];
+            int oka, okb;
+            pivots2(offset, d0a, d0b, e0a, e0b, n, q[i], q[i + 1], x[i], x[i + 1], work, work + 4 * n, &oka, &okb);
+            oka = oka && accept_first(offset, d0a, e0a, n, k, q[i], x[i], tol, work, value + i, err + i);
+            okb = okb && accept_first(offset, d0b, e0b, n, k, q[i + 1], x[i + 1], tol, work + 4 * n, value + i + 1,
+                                      err + i + 1);
+            ok[i] = oka ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, value + i,
+                                                          err + i);
+            ok[i + 1] = okb ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i + 1], x[i + 1], tol, work,
+                                                              value + i + 1, err + i + 1);
+            i += 2;
+            continue;
+        }
         ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, value + i, err + i);
+        i++;
+    }
     free(work);
     return 0;
 }
