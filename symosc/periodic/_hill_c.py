@@ -176,12 +176,23 @@ static int step(int offset, double d0, double e0, int n, double q, double x, dou
 /* Rayleigh-quotient steps from x for eigenvalue k (0-based) of one Hill family at q >= 0 (the first one is enough
    for a seed accurate to rounding), then the index and error checks.  Returns 1 (accepted), 2 (right eigenvalue but
    error estimate above tol), 3 (truncation above target) or 0 (wrong index, seed too far, vanishing pivot). */
+struct first_step {
+    int ok;
+    double value, err, rho2, trunc;
+    int index;
+};
+
 static int rq_point(int offset, double d0, double e0, int n, int k, double q, double x, double tol, double *work,
-                    double *out_value, double *out_err) {
+                    const struct first_step *first, double *out_value, double *out_err) {
     double value = x, err = INFINITY, rho2 = 0.0, trunc = 0.0;
     int index = -1;
     for (int s = 0; s < MAX_STEPS; s++) {
-        if (!step(offset, d0, e0, n, q, x, tol, work, &value, &err, &rho2, &trunc, &index)) return 0;
+        if (s == 0 && first) {  /* the first step, already done by the caller */
+            if (!first->ok) return 0;
+            value = first->value, err = first->err, rho2 = first->rho2, trunc = first->trunc, index = first->index;
+        } else if (!step(offset, d0, e0, n, q, x, tol, work, &value, &err, &rho2, &trunc, &index)) {
+            return 0;
+        }
         double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
         if (!(rho2 <= RHO_MAX * RHO_MAX * big * big)) return 0;
         if (rho2 <= 0.01 * EPS * (fabs(value) > 1.0 ? fabs(value) : 1.0)) break;
@@ -197,9 +208,10 @@ static int rq_point(int offset, double d0, double e0, int n, int k, double q, do
 
 /* rq_point at the first matrix size, and at the retry size when the truncation estimate asks for it. */
 static int rq_sizes(int offset, double d0, double e0, int k, double q, double x, double tol, double *work,
-                    double *out_value, double *out_err) {
-    int status = rq_point(offset, d0, e0, first_size(k, q), k, q, x, tol, work, out_value, out_err);
-    if (status == 3) status = rq_point(offset, d0, e0, retry_size(k, q), k, q, x, tol, work, out_value, out_err);
+                    const struct first_step *first, double *out_value, double *out_err) {
+    int status = rq_point(offset, d0, e0, first_size(k, q), k, q, x, tol, work, first, out_value, out_err);
+    if (status == 3)
+        status = rq_point(offset, d0, e0, retry_size(k, q), k, q, x, tol, work, NULL, out_value, out_err);
     return status;
 }
 
@@ -218,14 +230,14 @@ static int sturm_count(int offset, double d0, double e0, int n, double q, double
 /* The seed refined, or (when it is rejected: SciPy's value on a wrong branch) a start found by bisection on the
    Sturm count, refined the same way. */
 static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, double x, double tol, double *work,
-                        double *out_value, double *out_err) {
+                        const struct first_step *first, double *out_value, double *out_err) {
     *out_value = NAN;
     *out_err = INFINITY;
     if (first_size(k, q) < 1 || retry_size(k, q) < 1) return 0;
     double e0 = sqrt2 ? 1.4142135623730951 * q : q;
     double d0 = (double)(offset * offset) + q_sign * q;
     double value, err;
-    int status = isfinite(x) ? rq_sizes(offset, d0, e0, k, q, x, tol, work, &value, &err) : 0;
+    int status = isfinite(x) ? rq_sizes(offset, d0, e0, k, q, x, tol, work, first, &value, &err) : 0;
     if (status == 0) {
         int n = retry_size(k, q);
         double top = diag(k, offset);
@@ -236,7 +248,7 @@ static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, doub
             if (hi - lo <= 1e-7 * (size > 1.0 ? size : 1.0) || mid <= lo || mid >= hi) break;
             if (sturm_count(offset, d0, e0, n, q, mid) > k) hi = mid; else lo = mid;
         }
-        status = rq_sizes(offset, d0, e0, k, q, 0.5 * (lo + hi), tol, work, &value, &err);
+        status = rq_sizes(offset, d0, e0, k, q, 0.5 * (lo + hi), tol, work, NULL, &value, &err);
     }
     if (status != 1) return 0;
     *out_value = value;
@@ -253,19 +265,20 @@ static int work_size(int k, long npts, const double *q) {
     return nmax;
 }
 
-/* After pivots(): the first Rayleigh-quotient step of rq_point() accepted as it stands?  (Then refine_point()
-   returns exactly this value and error.) */
+/* After pivots() of the first matrix size: the first step of rq_point(), and whether it is accepted as it stands
+   (then refine_point() returns exactly this value and error; else refine_point() continues from it). */
 static int accept_first(int offset, double d0, double e0, int n, int k, double q, double x, double tol, double *work,
-                        double *out_value, double *out_err) {
-    double value, err, rho2, trunc;
-    int index;
-    finish(offset, d0, e0, n, q, tol, work, &value, &err, &rho2, &trunc, &index);
+                        struct first_step *f, double *out_value, double *out_err) {
+    f->ok = 1;
+    finish(offset, d0, e0, n, q, tol, work, &f->value, &f->err, &f->rho2, &f->trunc, &f->index);
     double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
-    double mag = fabs(value) > 1.0 ? fabs(value) : 1.0;
-    if (!(rho2 <= RHO_MAX * RHO_MAX * big * big) || !(rho2 <= 0.01 * EPS * mag)) return 0;
-    if (!(isfinite(value) && isfinite(err) && index == k && trunc <= 1e-3 * EPS * mag && err <= tol * mag)) return 0;
-    *out_value = value;
-    *out_err = err;
+    double mag = fabs(f->value) > 1.0 ? fabs(f->value) : 1.0;
+    if (!(f->rho2 <= RHO_MAX * RHO_MAX * big * big) || !(f->rho2 <= 0.01 * EPS * mag)) return 0;
+    if (!(isfinite(f->value) && isfinite(f->err) && f->index == k && f->trunc <= 1e-3 * EPS * mag &&
+          f->err <= tol * mag))
+        return 0;
+    *out_value = f->value;
+    *out_err = f->err;
     return 1;
 }
 
@@ -276,26 +289,29 @@ int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, c
     if (!work) return -1;
     long i = 0;
     while (i < npts) {
-        /* two neighbouring points with the same matrix size: their pivots interleaved, the common case finished
-           here; anything else goes through refine_point() from the start (the same operations either way) */
+        /* two neighbouring points with the same matrix size: their pivots interleaved and the first step done here;
+           refine_point() goes on from it where it is not accepted as it stands (the same operations either way) */
         int n = first_size(k, q[i]);
         if (i + 1 < npts && n > 1 && n == first_size(k, q[i + 1]) && retry_size(k, q[i]) > 0 &&
             retry_size(k, q[i + 1]) > 0 && isfinite(x[i]) && isfinite(x[i + 1])) {
-            double e0a = sqrt2 ? 1.4142135623730951 * q[i] : q[i], e0b = sqrt2 ? 1.4142135623730951 * q[i + 1] : q[i + 1];
-            double d0a = (double)(offset * offset) + q_sign * q[i], d0b = (double)(offset * offset) + q_sign * q[i + 1];
+            double qa = q[i], qb = q[i + 1];
+            double e0a = sqrt2 ? 1.4142135623730951 * qa : qa, e0b = sqrt2 ? 1.4142135623730951 * qb : qb;
+            double d0a = (double)(offset * offset) + q_sign * qa, d0b = (double)(offset * offset) + q_sign * qb;
+            struct first_step fa = {0}, fb = {0};
             int oka, okb;
-            pivots2(offset, d0a, d0b, e0a, e0b, n, q[i], q[i + 1], x[i], x[i + 1], work, work + 4 * n, &oka, &okb);
-            oka = oka && accept_first(offset, d0a, e0a, n, k, q[i], x[i], tol, work, value + i, err + i);
-            okb = okb && accept_first(offset, d0b, e0b, n, k, q[i + 1], x[i + 1], tol, work + 4 * n, value + i + 1,
+            pivots2(offset, d0a, d0b, e0a, e0b, n, qa, qb, x[i], x[i + 1], work, work + 4 * n, &oka, &okb);
+            oka = oka && accept_first(offset, d0a, e0a, n, k, qa, x[i], tol, work, &fa, value + i, err + i);
+            okb = okb && accept_first(offset, d0b, e0b, n, k, qb, x[i + 1], tol, work + 4 * n, &fb, value + i + 1,
                                       err + i + 1);
-            ok[i] = oka ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, value + i,
-                                                          err + i);
-            ok[i + 1] = okb ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i + 1], x[i + 1], tol, work,
+            ok[i] = oka ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, qa, x[i], tol, work, &fa,
+                                                          value + i, err + i);
+            ok[i + 1] = okb ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, qb, x[i + 1], tol, work, &fb,
                                                               value + i + 1, err + i + 1);
             i += 2;
             continue;
         }
-        ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, value + i, err + i);
+        ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, NULL, value + i,
+                                            err + i);
         i++;
     }
     free(work);
@@ -307,7 +323,7 @@ double symosc_mathieu_refine1(int offset, int q_sign, int sqrt2, int k, double q
     int n = work_size(k, 1, &q);
     double *work = n <= 256 ? stack : malloc(sizeof(double) * 4 * (size_t)n);
     if (!work) { *err = INFINITY; return NAN; }
-    refine_point(offset, q_sign, sqrt2, k, q, x, tol, work, &value, err);
+    refine_point(offset, q_sign, sqrt2, k, q, x, tol, work, NULL, &value, err);
     if (work != stack) free(work);
     return value;
 }
