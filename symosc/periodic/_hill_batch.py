@@ -33,6 +33,8 @@ _SQRT2 = math.sqrt(2.0)
 _RHO_MAX = 1e-3
 #: Rayleigh-quotient steps at most (one for a seed accurate to rounding)
 MAX_STEPS = 4
+#: no further step once rho^2 (a bound on the error of the Rayleigh quotient) is below _STOP min(tol, 1e-13)
+_STOP = 1e-3
 
 
 def batch_size(k: int, q: float) -> int:
@@ -62,7 +64,7 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
         value, scale, rho2, trunc, index = out
         if not rho2 <= _RHO_MAX * _RHO_MAX * max(1.0, abs(x)) ** 2:
             return math.nan, math.inf, False
-        if rho2 <= 0.01 * _EPS * max(1.0, abs(value)):
+        if rho2 <= _STOP * min(tol, 1e-13) * max(1.0, abs(value)):
             break
         x = value
     err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
@@ -175,7 +177,7 @@ def refine_batch(
         v, scale, rho2, trunc, index, fine = _step_batch(offset, q_sign, sqrt2, q[live], xs, size)
         with np.errstate(all="ignore"):
             fine &= rho2 <= _RHO_MAX * _RHO_MAX * np.maximum(1.0, np.abs(xs)) ** 2
-            done = fine & (rho2 <= 0.01 * _EPS * np.maximum(1.0, np.abs(v)))
+            done = fine & (rho2 <= _STOP * min(tol, 1e-13) * np.maximum(1.0, np.abs(v)))
         last = it == MAX_STEPS - 1
         fin = np.nonzero(done | (fine & last))[0]
         if fin.size:

@@ -23,6 +23,8 @@ SOURCE = r"""
 #define EPS 2.220446049250313e-16
 #define RHO_MAX 1e-3
 #define MAX_STEPS 4
+/* no further step once rho^2 (which bounds the error of the Rayleigh quotient) is below STOP min(tol, 1e-13) */
+#define STOP 1e-3
 #define MAX_SIZE 65536
 
 /* Matrix sizes: a first try (measured: enough for n <= 100, q <= 1e4 -- the truncation is checked anyway) and a
@@ -195,7 +197,7 @@ static int rq_point(int offset, double d0, double e0, int n, int k, double q, do
         }
         double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
         if (!(rho2 <= RHO_MAX * RHO_MAX * big * big)) return 0;
-        if (rho2 <= 0.01 * EPS * (fabs(value) > 1.0 ? fabs(value) : 1.0)) break;
+        if (rho2 <= STOP * (tol < 1e-13 ? tol : 1e-13) * (fabs(value) > 1.0 ? fabs(value) : 1.0)) break;
         x = value;
     }
     double mag = fabs(value) > 1.0 ? fabs(value) : 1.0;
@@ -273,7 +275,8 @@ static int accept_first(int offset, double d0, double e0, int n, int k, double q
     finish(offset, d0, e0, n, q, tol, work, &f->value, &f->err, &f->rho2, &f->trunc, &f->index);
     double big = fabs(x) > 1.0 ? fabs(x) : 1.0;
     double mag = fabs(f->value) > 1.0 ? fabs(f->value) : 1.0;
-    if (!(f->rho2 <= RHO_MAX * RHO_MAX * big * big) || !(f->rho2 <= 0.01 * EPS * mag)) return 0;
+    if (!(f->rho2 <= RHO_MAX * RHO_MAX * big * big) || !(f->rho2 <= STOP * (tol < 1e-13 ? tol : 1e-13) * mag))
+        return 0;
     if (!(isfinite(f->value) && isfinite(f->err) && f->index == k && f->trunc <= 1e-3 * EPS * mag &&
           f->err <= tol * mag))
         return 0;
@@ -328,31 +331,43 @@ double symosc_mathieu_refine1(int offset, int q_sign, int sqrt2, int k, double q
     return value;
 }
 
-/* Log gap estimates of a_n (to b_n below and to b_{n+1} above); see _hill.log_gap_estimates. */
-static void log_gaps_a(int n, double q, double *below, double *above) {
-    double lq = log(q > 1e-300 ? q : 1e-300);
-    *below = n >= 1 ? n * lq - (2 * n - 3) * log(2.0) - 2 * lgamma((double)n) : INFINITY;
-    double h = sqrt(q);
-    double cap = log(2.0 * n + 1.0);
-    *above = cap;
+/* Log gap estimates of a_n (to b_n below and to b_{n+1} above); see _hill.log_gap_estimates.  The constants that
+   depend on n only are computed once per call. */
+struct gap_consts {
+    int n;
+    double small_c, large_c, cap;
+};
+
+static void gap_consts_init(int n, struct gap_consts *c) {
+    c->n = n;
+    c->small_c = n >= 1 ? -(2 * n - 3) * log(2.0) - 2 * lgamma((double)n) : 0.0;
+    c->large_c = (4 * n + 5) * log(2.0) + 0.5 * log(2.0 / 3.141592653589793) - lgamma(n + 1.0);
+    c->cap = log(2.0 * n + 1.0);
+}
+
+static void log_gaps_a(const struct gap_consts *c, double q, double lq, double h, double *below, double *above) {
+    int n = c->n;
+    *below = n >= 1 ? n * lq + c->small_c : INFINITY;
+    *above = c->cap;
     if (h >= (n + 1.5) / 4) {
-        double large = (4 * n + 5) * log(2.0) + 0.5 * log(2.0 / 3.141592653589793)
-                       + (n + 1.5) * log(h > 1e-300 ? h : 1e-300) - 4 * h - lgamma(n + 1.0);
-        if (large < cap) *above = large;
+        double large = c->large_c + (n + 1.5) * (0.5 * lq) - 4 * h;
+        if (large < c->cap) *above = large;
     }
 }
 
 /* Gaps of kind_n (is_b) to its chain neighbours, and the seed rule for b_n: -1 seed from a_{n-1}, +1 from a_n,
    0 its own seed (a_n always uses its own).  A neighbour is used as the seed when the gap estimate is below
-   1e-6 (n^2 + 2q + 1), looser than the ordering clamp's 1e-7 max(1, |value|). */
-static int gaps_point(int is_b, int n, double q, double *lo, double *hi) {
-    double b0, a0, b1, a1;
+   1e-6 (n^2 + 2q + 1) (one extra Rayleigh step costs less than a SciPy call). */
+static int gaps_point(int is_b, const struct gap_consts *c0, const struct gap_consts *c1, double q, double *lo,
+                      double *hi) {
+    double lq = log(q > 1e-300 ? q : 1e-300), h = sqrt(q), b0, a0, b1, a1;
     if (!is_b) {
-        log_gaps_a(n, q, lo, hi);
+        log_gaps_a(c1, q, lq, h, lo, hi);
         return 0;
     }
-    log_gaps_a(n - 1, q, &b0, &a0);
-    log_gaps_a(n, q, &b1, &a1);
+    int n = c1->n;
+    log_gaps_a(c0, q, lq, h, &b0, &a0);
+    log_gaps_a(c1, q, lq, h, &b1, &a1);
     *lo = a0;
     *hi = b1;
     double thr = log(1e-6 * ((double)n * n + 2.0 * q + 1.0));
@@ -362,11 +377,17 @@ static int gaps_point(int is_b, int n, double q, double *lo, double *hi) {
 }
 
 void symosc_mathieu_gaps(int is_b, int n, long npts, const double *q, double *lo, double *hi, signed char *rule) {
-    for (long i = 0; i < npts; i++) rule[i] = (signed char)gaps_point(is_b, n, q[i], lo + i, hi + i);
+    struct gap_consts c0, c1;
+    gap_consts_init(n > 0 ? n - 1 : 0, &c0);
+    gap_consts_init(n, &c1);
+    for (long i = 0; i < npts; i++) rule[i] = (signed char)gaps_point(is_b, &c0, &c1, q[i], lo + i, hi + i);
 }
 
 int symosc_mathieu_gaps1(int is_b, int n, double q, double *out) {
-    return gaps_point(is_b, n, q, out, out + 1);
+    struct gap_consts c0, c1;
+    gap_consts_init(n > 0 ? n - 1 : 0, &c0);
+    gap_consts_init(n, &c1);
+    return gaps_point(is_b, &c0, &c1, q, out, out + 1);
 }
 """
 
