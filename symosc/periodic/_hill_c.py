@@ -389,9 +389,117 @@ int symosc_mathieu_gaps1(int is_b, int n, double q, double *out) {
     gap_consts_init(n, &c1);
     return gaps_point(is_b, &c0, &c1, q, out, out + 1);
 }
+
+/* ---- the whole "auto" method for the common case: kind_n from its seed, the nearly degenerate neighbour from it,
+   the ordering clamp.  status 1: done; 0: this point needs the general (Python) path. ---- */
+struct family { int offset, q_sign, sqrt2, k; };
+
+static struct family family_of(int is_b, int n) {
+    struct family f;
+    if (!is_b) {
+        if (n % 2 == 0) { f.offset = 0; f.q_sign = 0; f.sqrt2 = 1; f.k = n / 2; }
+        else { f.offset = 1; f.q_sign = 1; f.sqrt2 = 0; f.k = (n - 1) / 2; }
+    } else {
+        if (n % 2 == 1) { f.offset = 1; f.q_sign = -1; f.sqrt2 = 0; f.k = (n - 1) / 2; }
+        else { f.offset = 2; f.q_sign = 0; f.sqrt2 = 0; f.k = n / 2 - 1; }
+    }
+    return f;
+}
+
+static int refine_family(struct family f, double q, double x, double tol, double *work, double *value, double *err) {
+    return refine_point(f.offset, f.q_sign, f.sqrt2, f.k, q, x, tol, work, NULL, value, err);
+}
+
+/* seed: SciPy's a_n for kind a; for kind b, SciPy's value of the seed's source by the rule of gaps_point (b_n for
+   rule 0, a_{n-1} for -1, a_n for +1). */
+static int auto_point(int is_b, int n, double q, double seed, double tol, double *work, const struct gap_consts *c0,
+                      const struct gap_consts *c1, const struct gap_consts *c2, double *out_value, double *out_err) {
+    double lo, hi, v, e, other, oe;
+    if (q == 0.0) return 0;
+    if (!is_b) {
+        if (!refine_family(family_of(0, n), q, seed, tol, work, &v, &e)) return 0;
+        gaps_point(0, c0, c1, q, &lo, &hi);
+        double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
+        double clamped = v, l2, h2;
+        if (n >= 1 && lo < thr) {  /* b_n, seeded from a_n by its rule */
+            if (gaps_point(1, c0, c1, q, &l2, &h2) != 1) return 0;
+            if (!refine_family(family_of(1, n), q, v, tol, work, &other, &oe)) return 0;
+            if (other > clamped) clamped = other;
+        }
+        if (hi < thr) {  /* b_{n+1}, seeded from a_n by its rule */
+            if (gaps_point(1, c1, c2, q, &l2, &h2) != -1) return 0;
+            if (!refine_family(family_of(1, n + 1), q, v, tol, work, &other, &oe)) return 0;
+            if (other < clamped) clamped = other;
+        }
+        *out_value = clamped;
+        *out_err = e;
+        return 1;
+    }
+    int rule = gaps_point(1, c0, c1, q, &lo, &hi);
+    double partner = NAN, pe;
+    if (rule != 0) {
+        if (!refine_family(family_of(0, rule < 0 ? n - 1 : n), q, seed, tol, work, &partner, &pe)) return 0;
+        seed = partner;
+    }
+    if (!refine_family(family_of(1, n), q, seed, tol, work, &v, &e)) return 0;
+    double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
+    double clamped = v;
+    if (lo < thr) {  /* a_{n-1} */
+        if (rule != -1) return 0;
+        if (partner > clamped) clamped = partner;
+    }
+    if (hi < thr) {  /* a_n */
+        if (rule != 1) return 0;
+        if (partner < clamped) clamped = partner;
+    }
+    *out_value = clamped;
+    *out_err = e;
+    return 1;
+}
+
+static int auto_work(int n, long npts, const double *q) {
+    int nmax = 8;
+    for (long i = 0; i < npts; i++) {
+        int m = retry_size(n / 2 + 1, q[i]);
+        if (m > nmax) nmax = m;
+    }
+    return nmax;
+}
+
+int symosc_mathieu_auto(int is_b, int n, long npts, const double *q, const double *seed, double tol, double *value,
+                        double *err, unsigned char *ok) {
+    struct gap_consts c0, c1, c2;
+    gap_consts_init(n > 0 ? n - 1 : 0, &c0);
+    gap_consts_init(n, &c1);
+    gap_consts_init(n + 1, &c2);
+    int nmax = auto_work(n, npts, q);
+    double *work = malloc(sizeof(double) * 4 * (size_t)nmax);
+    if (!work) return -1;
+    for (long i = 0; i < npts; i++) {
+        ok[i] = (unsigned char)auto_point(is_b, n, q[i], seed[i], tol, work, &c0, &c1, &c2, value + i, err + i);
+    }
+    free(work);
+    return 0;
+}
+
+double symosc_mathieu_auto1(int is_b, int n, double q, double seed, double tol, double *err) {
+    struct gap_consts c0, c1, c2;
+    gap_consts_init(n > 0 ? n - 1 : 0, &c0);
+    gap_consts_init(n, &c1);
+    gap_consts_init(n + 1, &c2);
+    double value, stack[4 * 256];
+    int nmax = auto_work(n, 1, &q);
+    double *work = nmax <= 256 ? stack : malloc(sizeof(double) * 4 * (size_t)nmax);
+    if (!work) return NAN;
+    int ok = auto_point(is_b, n, q, seed, tol, work, &c0, &c1, &c2, &value, err);
+    if (work != stack) free(work);
+    return ok ? value : NAN;
+}
 """
 
 _PTR = ctypes.POINTER(ctypes.c_double)
+#: output buffer of the gap estimates of scalar calls that only need the seed rule (its contents are not used)
+SCRATCH = (ctypes.c_double * 2)()
 _state: dict = {}
 
 
@@ -418,8 +526,14 @@ def kernel():
         lib.symosc_mathieu_refine1.argtypes = [ctypes.c_int] * 4 + [ctypes.c_double] * 3 + [_PTR]
         lib.symosc_mathieu_gaps.restype = None
         lib.symosc_mathieu_gaps.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_long] + [ctypes.c_void_p] * 4
+        lib.symosc_mathieu_auto.restype = ctypes.c_int
+        lib.symosc_mathieu_auto.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_long] + [ctypes.c_void_p] * 2 + [
+            ctypes.c_double
+        ] + [ctypes.c_void_p] * 3
+        lib.symosc_mathieu_auto1.restype = ctypes.c_double
+        lib.symosc_mathieu_auto1.argtypes = [ctypes.c_int, ctypes.c_int] + [ctypes.c_double] * 3 + [_PTR]
         lib.symosc_mathieu_gaps1.restype = ctypes.c_int
-        lib.symosc_mathieu_gaps1.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_double, _PTR]
+        lib.symosc_mathieu_gaps1.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_void_p]
     _state["lib"] = lib
     return lib
 
@@ -463,5 +577,20 @@ def gaps(lib, is_b: bool, n: int, q: np.ndarray):
 
 def gaps1(lib, is_b: bool, n: int, q: float) -> tuple[float, float, int]:
     out = (ctypes.c_double * 2)()
-    rule = lib.symosc_mathieu_gaps1(is_b, n, q, ctypes.cast(out, _PTR))
+    rule = lib.symosc_mathieu_gaps1(is_b, n, q, out)
     return out[0], out[1], rule
+
+
+def auto(lib, is_b: bool, n: int, q: np.ndarray, seeds: np.ndarray, tol: float):
+    """(values, errors, done) of the whole "auto" method for the common case; ``done`` False: use the general path."""
+    q = np.ascontiguousarray(q, dtype=float)
+    seeds = np.ascontiguousarray(seeds, dtype=float)
+    value = np.empty(q.shape)
+    err = np.empty(q.shape)
+    ok = np.empty(q.shape, dtype=np.uint8)
+    status = lib.symosc_mathieu_auto(
+        int(is_b), n, q.size, q.ctypes.data, seeds.ctypes.data, tol, value.ctypes.data, err.ctypes.data, ok.ctypes.data
+    )
+    if status:
+        raise MemoryError("the Mathieu kernel could not allocate its work array")
+    return value, err, ok.view(bool)

@@ -90,7 +90,23 @@ def _raw_b1(n: int, q: float, tol, memo: dict, rule: int | None = None) -> tuple
 
 
 def auto_scalar(kind: str, n: int, q: float, tol) -> tuple[float, float]:
-    """kind_n(q) for one q >= 0 with the ordering clamp."""
+    """kind_n(q) for one q >= 0 with the ordering clamp: the compiled common case, else :func:`general_scalar`."""
+    lib = _hill_c.kernel()
+    if lib is not None and q != 0.0:
+        if kind == "a":
+            seed = _scipy("a")(n, q)
+        else:
+            rule = lib.symosc_mathieu_gaps1(1, n, q, _hill_c.SCRATCH)
+            seed = _scipy("b")(n, q) if rule == 0 else _scipy("a")(n - 1 if rule < 0 else n, q)
+        err = _hill_c.ctypes.c_double()
+        value = lib.symosc_mathieu_auto1(kind == "b", n, q, seed, tol or DEFAULT_TOL, err)
+        if value == value:
+            return value, err.value
+    return general_scalar(kind, n, q, tol)
+
+
+def general_scalar(kind: str, n: int, q: float, tol) -> tuple[float, float]:
+    """kind_n(q) for one q >= 0 with the ordering clamp, step by step (each raw value by the kernel or the solvers)."""
     memo: dict = {}
     lo, hi, rule = _gaps1(kind, n, q)
     if kind == "a":
@@ -189,6 +205,28 @@ class _Memo:
 
 def auto_array(kind: str, n: int, q: np.ndarray, tol) -> tuple[np.ndarray, np.ndarray]:
     """Vectorised :func:`auto_scalar` over a 1-d array q >= 0 (the same bits per point)."""
+    lib = _hill_c.kernel()
+    if lib is None:
+        return general_array(kind, n, q, tol)
+    with np.errstate(all="ignore"):
+        if kind == "a":
+            seeds = _scipy("a")(n, q)
+        else:
+            rule = _hill_c.gaps(lib, True, n, q)[2]
+            seeds = np.empty(q.shape)
+            for r, fun, m in ((0, _scipy("b"), n), (-1, _scipy("a"), n - 1), (1, _scipy("a"), n)):
+                sel = np.nonzero(rule == r)[0]
+                if sel.size:
+                    seeds[sel] = fun(m, q[sel])
+    values, errors, done = _hill_c.auto(lib, kind == "b", n, q, seeds, tol or DEFAULT_TOL)
+    rest = np.nonzero(~done)[0]
+    if rest.size:
+        values[rest], errors[rest] = general_array(kind, n, q[rest], tol)
+    return values, errors
+
+
+def general_array(kind: str, n: int, q: np.ndarray, tol) -> tuple[np.ndarray, np.ndarray]:
+    """Vectorised :func:`general_scalar` (the same bits per point)."""
     memo = _Memo(q, tol)
     everything = np.arange(q.size)
     lo, hi, rule = _gaps(kind, n, q)
