@@ -285,11 +285,9 @@ static int accept_first(int offset, double d0, double e0, int n, int k, double q
     return 1;
 }
 
-int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
-                          double tol, double *value, double *err, unsigned char *ok) {
-    int nmax = work_size(k, npts, q);
-    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
-    if (!work) return -1;
+/* refine_point() for a batch (work: 8 * work_size doubles). */
+static void refine_core(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
+                        double tol, double *value, double *err, unsigned char *ok, double *work) {
     long i = 0;
     while (i < npts) {
         /* two neighbouring points with the same matrix size: their pivots interleaved and the first step done here;
@@ -317,6 +315,14 @@ int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, c
                                             err + i);
         i++;
     }
+}
+
+int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
+                          double tol, double *value, double *err, unsigned char *ok) {
+    int nmax = work_size(k, npts, q);
+    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
+    if (!work) return -1;
+    refine_core(offset, q_sign, sqrt2, k, npts, q, x, tol, value, err, ok, work);
     free(work);
     return 0;
 }
@@ -406,94 +412,127 @@ static struct family family_of(int is_b, int n) {
     return f;
 }
 
-static int refine_family(struct family f, double q, double x, double tol, double *work, double *value, double *err) {
-    return refine_point(f.offset, f.q_sign, f.sqrt2, f.k, q, x, tol, work, NULL, value, err);
+/* refine_core() for the points idx[0..m-1] of q with seeds x (gathered; results scattered back to value/err/ok). */
+static void refine_gather(struct family f, long m, const long *idx, const double *q, const double *x, double tol,
+                          double *value, double *err, unsigned char *ok, double *buf, double *work) {
+    double *qg = buf, *xg = buf + m, *vg = buf + 2 * m, *eg = buf + 3 * m;
+    unsigned char *og = (unsigned char *)(buf + 4 * m);
+    for (long i = 0; i < m; i++) { qg[i] = q[idx[i]]; xg[i] = x[idx[i]]; }
+    refine_core(f.offset, f.q_sign, f.sqrt2, f.k, m, qg, xg, tol, vg, eg, og, work);
+    for (long i = 0; i < m; i++) { value[idx[i]] = vg[i]; err[idx[i]] = eg[i]; ok[idx[i]] = og[i]; }
 }
 
 /* seed: SciPy's a_n for kind a; for kind b, SciPy's value of the seed's source by the rule of gaps_point (b_n for
-   rule 0, a_{n-1} for -1, a_n for +1). */
-static int auto_point(int is_b, int n, double q, double seed, double tol, double *work, const struct gap_consts *c0,
-                      const struct gap_consts *c1, const struct gap_consts *c2, double *out_value, double *out_err) {
-    double lo, hi, v, e, other, oe;
-    if (q == 0.0) return 0;
-    if (!is_b) {
-        if (!refine_family(family_of(0, n), q, seed, tol, work, &v, &e)) return 0;
-        gaps_point(0, c0, c1, q, &lo, &hi);
-        double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
-        double clamped = v, l2, h2;
-        if (n >= 1 && lo < thr) {  /* b_n, seeded from a_n by its rule */
-            if (gaps_point(1, c0, c1, q, &l2, &h2) != 1) return 0;
-            if (!refine_family(family_of(1, n), q, v, tol, work, &other, &oe)) return 0;
-            if (other > clamped) clamped = other;
-        }
-        if (hi < thr) {  /* b_{n+1}, seeded from a_n by its rule */
-            if (gaps_point(1, c1, c2, q, &l2, &h2) != -1) return 0;
-            if (!refine_family(family_of(1, n + 1), q, v, tol, work, &other, &oe)) return 0;
-            if (other < clamped) clamped = other;
-        }
-        *out_value = clamped;
-        *out_err = e;
-        return 1;
-    }
-    int rule = gaps_point(1, c0, c1, q, &lo, &hi);
-    double partner = NAN, pe;
-    if (rule != 0) {
-        if (!refine_family(family_of(0, rule < 0 ? n - 1 : n), q, seed, tol, work, &partner, &pe)) return 0;
-        seed = partner;
-    }
-    if (!refine_family(family_of(1, n), q, seed, tol, work, &v, &e)) return 0;
-    double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
-    double clamped = v;
-    if (lo < thr) {  /* a_{n-1} */
-        if (rule != -1) return 0;
-        if (partner > clamped) clamped = partner;
-    }
-    if (hi < thr) {  /* a_n */
-        if (rule != 1) return 0;
-        if (partner < clamped) clamped = partner;
-    }
-    *out_value = clamped;
-    *out_err = e;
-    return 1;
-}
-
-static int auto_work(int n, long npts, const double *q) {
-    int nmax = 8;
-    for (long i = 0; i < npts; i++) {
-        int m = retry_size(n / 2 + 1, q[i]);
-        if (m > nmax) nmax = m;
-    }
-    return nmax;
-}
-
+   rule 0, a_{n-1} for -1, a_n for +1).  Raw values are refined in batches (two points interleaved); a point whose
+   raw value or needed neighbour is not covered here gets ok = 0 and goes the general way. */
 int symosc_mathieu_auto(int is_b, int n, long npts, const double *q, const double *seed, double tol, double *value,
                         double *err, unsigned char *ok) {
     struct gap_consts c0, c1, c2;
     gap_consts_init(n > 0 ? n - 1 : 0, &c0);
     gap_consts_init(n, &c1);
     gap_consts_init(n + 1, &c2);
-    int nmax = auto_work(n, npts, q);
-    double *work = malloc(sizeof(double) * 4 * (size_t)nmax);
-    if (!work) return -1;
+    int nmax = 8;
     for (long i = 0; i < npts; i++) {
-        ok[i] = (unsigned char)auto_point(is_b, n, q[i], seed[i], tol, work, &c0, &c1, &c2, value + i, err + i);
+        int m = retry_size(n / 2 + 1, q[i]);
+        if (m > nmax) nmax = m;
     }
-    free(work);
+    size_t np = (size_t)(npts > 0 ? npts : 1);
+    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
+    double *buf = malloc(sizeof(double) * 5 * np);
+    double *raw = malloc(sizeof(double) * 5 * np);  /* own raw, partner raw, lo gap, hi gap, clamped */
+    long *idx = malloc(sizeof(long) * np);
+    unsigned char *flags = malloc(3 * np);
+    if (!work || !buf || !raw || !idx || !flags) {
+        free(work); free(buf); free(raw); free(idx); free(flags);
+        return -1;
+    }
+    double *partner = raw + np, *lo = raw + 2 * np, *hi = raw + 3 * np, *clamped = raw + 4 * np;
+    unsigned char *pok = flags, *rule_c = flags + np, *need = flags + 2 * np;
+    long m;
+    for (long i = 0; i < npts; i++) ok[i] = 0;
+    if (!is_b) {
+        m = 0;
+        for (long i = 0; i < npts; i++) if (q[i] != 0.0) idx[m++] = i;
+        refine_gather(family_of(0, n), m, idx, q, seed, tol, raw, err, ok, buf, work);
+        for (long i = 0; i < npts; i++) clamped[i] = raw[i];
+        /* neighbours: b_n (below) and b_{n+1} (above) where the gap estimate asks for the clamp, seeded from a_n */
+        for (int side = 0; side < 2; side++) {
+            m = 0;
+            for (long i = 0; i < npts; i++) {
+                need[i] = 0;
+                if (!ok[i]) continue;
+                double l, h, l2, h2, v = raw[i];
+                gaps_point(0, &c0, &c1, q[i], &l, &h);
+                double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
+                if (side == 0 && n >= 1 && l < thr) {
+                    if (gaps_point(1, &c0, &c1, q[i], &l2, &h2) != 1) { ok[i] = 0; continue; }
+                    need[i] = 1;
+                    idx[m++] = i;
+                }
+                if (side == 1 && h < thr) {
+                    if (gaps_point(1, &c1, &c2, q[i], &l2, &h2) != -1) { ok[i] = 0; continue; }
+                    need[i] = 1;
+                    idx[m++] = i;
+                }
+            }
+            if (!m) continue;
+            /* seeded from the raw a_n */
+            refine_gather(family_of(1, side == 0 ? n : n + 1), m, idx, q, raw, tol, partner, lo, pok, buf, work);
+            for (long j = 0; j < m; j++) {
+                long i = idx[j];
+                if (!pok[i]) { ok[i] = 0; continue; }
+                if (side == 0 ? partner[i] > clamped[i] : partner[i] < clamped[i]) clamped[i] = partner[i];
+            }
+        }
+        for (long i = 0; i < npts; i++) value[i] = ok[i] ? clamped[i] : NAN;
+    } else {
+        /* the seed rule, then the partner a (rule -1: a_{n-1}, +1: a_n) from its SciPy seed */
+        for (long i = 0; i < npts; i++) {
+            rule_c[i] = (unsigned char)(gaps_point(1, &c0, &c1, q[i], lo + i, hi + i) + 1);
+            partner[i] = NAN;
+            raw[i] = seed[i];
+        }
+        for (int r = 0; r <= 2; r += 2) {
+            m = 0;
+            for (long i = 0; i < npts; i++) if (q[i] != 0.0 && rule_c[i] == r) idx[m++] = i;
+            if (!m) continue;
+            refine_gather(family_of(0, r == 0 ? n - 1 : n), m, idx, q, seed, tol, partner, err, pok, buf, work);
+            for (long j = 0; j < m; j++) {
+                long i = idx[j];
+                if (pok[i]) raw[i] = partner[i]; else raw[i] = NAN;  /* NAN: not refined below */
+            }
+        }
+        m = 0;
+        for (long i = 0; i < npts; i++) if (q[i] != 0.0 && raw[i] == raw[i]) idx[m++] = i;
+        for (long j = 0; j < m; j++) value[idx[j]] = raw[idx[j]];
+        refine_gather(family_of(1, n), m, idx, q, value, tol, raw, err, ok, buf, work);
+        for (long j = 0; j < m; j++) {
+            long i = idx[j];
+            if (!ok[i]) continue;
+            double v = raw[i], c = v;
+            double thr = log(1e-7 * (fabs(v) > 1.0 ? fabs(v) : 1.0));
+            int rule = (int)rule_c[i] - 1;
+            if (lo[i] < thr) {
+                if (rule != -1) { ok[i] = 0; continue; }
+                if (partner[i] > c) c = partner[i];
+            }
+            if (hi[i] < thr) {
+                if (rule != 1) { ok[i] = 0; continue; }
+                if (partner[i] < c) c = partner[i];
+            }
+            raw[i] = c;
+        }
+        for (long i = 0; i < npts; i++) value[i] = ok[i] ? raw[i] : NAN;
+    }
+    free(work); free(buf); free(raw); free(idx); free(flags);
     return 0;
 }
 
 double symosc_mathieu_auto1(int is_b, int n, double q, double seed, double tol, double *err) {
-    struct gap_consts c0, c1, c2;
-    gap_consts_init(n > 0 ? n - 1 : 0, &c0);
-    gap_consts_init(n, &c1);
-    gap_consts_init(n + 1, &c2);
-    double value, stack[4 * 256];
-    int nmax = auto_work(n, 1, &q);
-    double *work = nmax <= 256 ? stack : malloc(sizeof(double) * 4 * (size_t)nmax);
-    if (!work) return NAN;
-    int ok = auto_point(is_b, n, q, seed, tol, work, &c0, &c1, &c2, &value, err);
-    if (work != stack) free(work);
-    return ok ? value : NAN;
+    double value;
+    unsigned char ok;
+    if (symosc_mathieu_auto(is_b, n, 1, &q, &seed, tol, &value, err, &ok) || !ok) return NAN;
+    return value;
 }
 """
 
