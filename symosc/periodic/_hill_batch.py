@@ -69,13 +69,7 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
         x = value
     err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
     mag = max(1.0, abs(value))
-    ok = (
-        math.isfinite(value)
-        and math.isfinite(err)
-        and index == k
-        and trunc <= 1e-3 * _EPS * mag
-        and err <= tol * mag
-    )
+    ok = math.isfinite(value) and math.isfinite(err) and index == k and trunc <= 1e-3 * _EPS * mag and err <= tol * mag
     return (value, err, True) if ok else (math.nan, math.inf, False)
 
 

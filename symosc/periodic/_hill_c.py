@@ -558,17 +558,20 @@ def kernel():
             lib = None
     if lib is not None:
         lib.symosc_mathieu_refine.restype = ctypes.c_int
-        lib.symosc_mathieu_refine.argtypes = [ctypes.c_int] * 4 + [ctypes.c_long] + [ctypes.c_void_p] * 2 + [
-            ctypes.c_double
-        ] + [ctypes.c_void_p] * 3
+        lib.symosc_mathieu_refine.argtypes = (
+            [ctypes.c_int] * 4 + [ctypes.c_long] + [ctypes.c_void_p] * 2 + [ctypes.c_double] + [ctypes.c_void_p] * 3
+        )
         lib.symosc_mathieu_refine1.restype = ctypes.c_double
         lib.symosc_mathieu_refine1.argtypes = [ctypes.c_int] * 4 + [ctypes.c_double] * 3 + [_PTR]
         lib.symosc_mathieu_gaps.restype = None
         lib.symosc_mathieu_gaps.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_long] + [ctypes.c_void_p] * 4
         lib.symosc_mathieu_auto.restype = ctypes.c_int
-        lib.symosc_mathieu_auto.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_long] + [ctypes.c_void_p] * 2 + [
-            ctypes.c_double
-        ] + [ctypes.c_void_p] * 3
+        lib.symosc_mathieu_auto.argtypes = (
+            [ctypes.c_int, ctypes.c_int, ctypes.c_long]
+            + [ctypes.c_void_p] * 2
+            + [ctypes.c_double]
+            + [ctypes.c_void_p] * 3
+        )
         lib.symosc_mathieu_auto1.restype = ctypes.c_double
         lib.symosc_mathieu_auto1.argtypes = [ctypes.c_int, ctypes.c_int] + [ctypes.c_double] * 3 + [_PTR]
         lib.symosc_mathieu_gaps1.restype = ctypes.c_int
