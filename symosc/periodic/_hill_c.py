@@ -25,6 +25,9 @@ SOURCE = r"""
 #define MAX_STEPS 4
 /* no further step once rho^2 (which bounds the error of the Rayleigh quotient) is below STOP min(tol, 1e-13) */
 #define STOP 1e-3
+/* the Rayleigh quotient is summed again in long double when the rounding bound of the double sums is above
+   LD_FRACTION tol (so that accepted values keep the last digits too) */
+#define LD_FRACTION 0.1
 #define MAX_SIZE 65536
 
 /* Matrix sizes: a first try (measured: enough for n <= 100, q <= 1e4 -- the truncation is checked anyway) and a
@@ -146,7 +149,7 @@ static void finish(int offset, double d0, double e0, int n, double q, double tol
     double tr = (w * w) / norm2;
     double mag = fabs(v) > 1.0 ? fabs(v) : 1.0;
     double e = 8.0 * EPS * scale + 0.5 * EPS * fabs(v) + tr + r2;
-    if (!(e <= tol * mag) && LDBL_EPSILON < EPS) {
+    if (!(e <= LD_FRACTION * tol * mag) && LDBL_EPSILON < EPS) {
         /* where |value| << 2q the cancellation between the diagonal and off-diagonal sums limits the accuracy */
         long double zl = z[0], zzl = zl * zl;
         long double n2 = zzl, ds = (long double)d0 * zzl, cr = 0.0L;
