@@ -262,34 +262,39 @@ def _step_batch(offset: int, q_sign: int, sqrt2: bool, q: np.ndarray, x: np.ndar
     return value, scale, rho2, trunc, index, ~zero
 
 
-def log_gaps_a(n: int, q: float) -> tuple[float, float]:
-    """Scalar log gap estimates of a_n to b_n (below) and b_{n+1} (above); see ``_hill.log_gap_estimates``."""
-    lq = math.log(q if q > 1e-300 else 1e-300)
-    below = n * lq - (2 * n - 3) * math.log(2.0) - 2 * math.lgamma(n) if n >= 1 else math.inf
-    h = math.sqrt(q)
-    above = math.log(2.0 * n + 1.0)
-    if h >= (n + 1.5) / 4:
-        large = (
-            (4 * n + 5) * math.log(2.0)
-            + 0.5 * math.log(2.0 / math.pi)
-            + (n + 1.5) * math.log(h if h > 1e-300 else 1e-300)
-            - 4 * h
-            - math.lgamma(n + 1.0)
-        )
-        above = min(above, large)
+def _log_gaps_a(m: int, lq: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Log gap estimates of a_m to b_m (below) and b_{m+1} (above); see ``_hill.log_gap_estimates``."""
+    below = m * lq + (-(2 * m - 3) * math.log(2.0) - 2 * math.lgamma(m)) if m >= 1 else np.full_like(lq, np.inf)
+    cap = math.log(2.0 * m + 1.0)
+    large = (
+        ((4 * m + 5) * math.log(2.0) + 0.5 * math.log(2.0 / math.pi) - math.lgamma(m + 1.0))
+        + (m + 1.5) * (0.5 * lq)
+        - 4 * h
+    )
+    above = np.where((h >= (m + 1.5) / 4) & (large < cap), large, cap)
     return below, above
 
 
+def gaps_array(is_b: bool, n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(log gap below, log gap above, seed rule) of kind_n at the points q >= 0 (1-d float array).
+
+    The seed rule of b_n is -1 (seed from a_{n-1}), +1 (from a_n) or 0 (its own), chosen where the gap estimate is
+    below 1e-6 (n^2 + 2q + 1).  Scalar calls use a one-element array (the same NumPy loops, the same bits).
+    """
+    with np.errstate(all="ignore"):
+        lq = np.log(np.maximum(q, 1e-300))
+        h = np.sqrt(q)
+        if not is_b:
+            lo, hi = _log_gaps_a(n, lq, h)
+            return lo, hi, np.zeros(q.shape, dtype=np.int8)
+        a0 = _log_gaps_a(n - 1, lq, h)[1]
+        b1 = _log_gaps_a(n, lq, h)[0]
+        thr = np.log(1e-6 * (float(n) * n + 2.0 * q + 1.0))
+    rule = np.where((a0 < thr) & (a0 <= b1), -1, np.where(b1 < thr, 1, 0)).astype(np.int8)
+    return a0, b1, rule
+
+
 def gaps_scalar(is_b: bool, n: int, q: float) -> tuple[float, float, int]:
-    """(log gap below, log gap above, seed rule) of kind_n at q; the seed rule of b_n is -1 (seed from a_{n-1}),
-    +1 (from a_n) or 0 (its own), chosen where the gap estimate is below 1e-6 (n^2 + 2q + 1) -- looser than the
-    ordering clamp's 1e-7 max(1, |value|), so a clamped pair always shares its seed."""
-    if not is_b:
-        lo, hi = log_gaps_a(n, q)
-        return lo, hi, 0
-    a0 = log_gaps_a(n - 1, q)[1]
-    b1 = log_gaps_a(n, q)[0]
-    thr = math.log(1e-6 * (float(n) * n + 2.0 * q + 1.0))
-    if a0 < thr and a0 <= b1:
-        return a0, b1, -1
-    return a0, b1, (1 if b1 < thr else 0)
+    """:func:`gaps_array` at one point."""
+    lo, hi, rule = gaps_array(is_b, n, np.array([q]))
+    return float(lo[0]), float(hi[0]), int(rule[0])

@@ -166,8 +166,7 @@ def _gaps(kind: str, n: int, q: np.ndarray):
     lib = _hill_c.kernel()
     if lib is not None:
         return _hill_c.gaps(lib, kind == "b", n, q)
-    out = np.array([_hill_batch.gaps_scalar(kind == "b", n, float(x)) for x in q]).reshape(-1, 3)
-    return out[:, 0], out[:, 1], out[:, 2].astype(np.int8)
+    return _hill_batch.gaps_array(kind == "b", n, q)
 
 
 class _Memo:
