@@ -79,34 +79,32 @@ static int pivots(int offset, double d0, double e0, int n, double q, double x, d
     return ok;
 }
 
-/* pivots() for two points with the same matrix size, interleaved (four independent chains); each point gets the
-   bits pivots() gives it. */
-static void pivots2(int offset, double d0a, double d0b, double e0a, double e0b, int n, double qa, double qb,
-                    double xa, double xb, double *wa, double *wb, int *oka, int *okb) {
-    double *ta = wa, *rta = wa + n, *rua = wa + 2 * n, *bqa = wa + 3 * n;
-    double *tb = wb, *rtb = wb + n, *rub = wb + 2 * n, *bqb = wb + 3 * n;
-    int ok_a = 1, ok_b = 1;
-    {
-        double t0 = d0a - xa, un = diag(n - 1, offset) - xa;
-        if (t0 == 0.0 || un == 0.0) ok_a = 0;
-        ta[0] = t0; rta[0] = 1.0 / t0; rua[n - 1] = 1.0 / un;
-        t0 = d0b - xb; un = diag(n - 1, offset) - xb;
-        if (t0 == 0.0 || un == 0.0) ok_b = 0;
-        tb[0] = t0; rtb[0] = 1.0 / t0; rub[n - 1] = 1.0 / un;
+/* pivots() for g <= LANES points with the same matrix size, interleaved (2 g independent chains of divisions);
+   each point gets the bits pivots() gives it.  Lane l works in w + 4 n l. */
+#define LANES 4
+static void pivots_lanes(int offset, int g, const double *d0v, const double *e0v, int n, const double *qv,
+                         const double *xv, double *w, int *okv) {
+    double b0v[LANES], bqv[LANES];
+    for (int l = 0; l < g; l++) {
+        double *t = w + 4 * n * l, *rt = t + n, *ru = t + 2 * n;
+        b0v[l] = e0v[l] * e0v[l];
+        bqv[l] = qv[l] * qv[l];
+        double t0 = d0v[l] - xv[l], un = diag(n - 1, offset) - xv[l];
+        okv[l] = !(t0 == 0.0 || un == 0.0);
+        t[0] = t0;
+        rt[0] = 1.0 / t0;
+        ru[n - 1] = 1.0 / un;
     }
     for (int i = 1; i < n; i++) {
         int j = n - 1 - i;
-        {
-            double b0 = e0a * e0a, bq = qa * qa, d0 = d0a;
-            PIVOT_ROW(ta, rta, rua, bqa, xa, ok_a)
-        }
-        {
-            double b0 = e0b * e0b, bq = qb * qb, d0 = d0b;
-            PIVOT_ROW(tb, rtb, rub, bqb, xb, ok_b)
+        for (int l = 0; l < g; l++) {
+            double *t = w + 4 * n * l, *rt = t + n, *ru = t + 2 * n, *bq_ = t + 3 * n;
+            double b0 = b0v[l], bq = bqv[l], d0 = d0v[l], x = xv[l];
+            int ok = okv[l];
+            PIVOT_ROW(t, rt, ru, bq_, x, ok)
+            okv[l] = ok;
         }
     }
-    *oka = ok_a;
-    *okb = ok_b;
 }
 
 /* The rest of a twisted-factorisation step at x, after pivots(): twist m = argmin |gamma_j|, the index (negative
@@ -293,25 +291,33 @@ static void refine_core(int offset, int q_sign, int sqrt2, int k, long npts, con
                         double tol, double *value, double *err, unsigned char *ok, double *work) {
     long i = 0;
     while (i < npts) {
-        /* two neighbouring points with the same matrix size: their pivots interleaved and the first step done here;
-           refine_point() goes on from it where it is not accepted as it stands (the same operations either way) */
+        /* up to LANES neighbouring points with the same matrix size: their pivots interleaved and the first step
+           done here; refine_point() goes on from it where it is not accepted as it stands (the same operations
+           either way) */
         int n = first_size(k, q[i]);
-        if (i + 1 < npts && n > 1 && n == first_size(k, q[i + 1]) && retry_size(k, q[i]) > 0 &&
-            retry_size(k, q[i + 1]) > 0 && isfinite(x[i]) && isfinite(x[i + 1])) {
-            double qa = q[i], qb = q[i + 1];
-            double e0a = sqrt2 ? 1.4142135623730951 * qa : qa, e0b = sqrt2 ? 1.4142135623730951 * qb : qb;
-            double d0a = (double)(offset * offset) + q_sign * qa, d0b = (double)(offset * offset) + q_sign * qb;
-            struct first_step fa = {0}, fb = {0};
-            int oka, okb;
-            pivots2(offset, d0a, d0b, e0a, e0b, n, qa, qb, x[i], x[i + 1], work, work + 4 * n, &oka, &okb);
-            oka = oka && accept_first(offset, d0a, e0a, n, k, qa, x[i], tol, work, &fa, value + i, err + i);
-            okb = okb && accept_first(offset, d0b, e0b, n, k, qb, x[i + 1], tol, work + 4 * n, &fb, value + i + 1,
-                                      err + i + 1);
-            ok[i] = oka ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, qa, x[i], tol, work, &fa,
-                                                          value + i, err + i);
-            ok[i + 1] = okb ? 1 : (unsigned char)refine_point(offset, q_sign, sqrt2, k, qb, x[i + 1], tol, work, &fb,
-                                                              value + i + 1, err + i + 1);
-            i += 2;
+        int g = 0;
+        while (g < LANES && i + g < npts && n > 1 && first_size(k, q[i + g]) == n && retry_size(k, q[i + g]) > 0 &&
+               isfinite(x[i + g]))
+            g++;
+        if (g >= 2) {
+            double d0v[LANES], e0v[LANES];
+            int okv[LANES];
+            struct first_step fv[LANES];
+            for (int l = 0; l < g; l++) {
+                double ql = q[i + l];
+                e0v[l] = sqrt2 ? 1.4142135623730951 * ql : ql;
+                d0v[l] = (double)(offset * offset) + q_sign * ql;
+                fv[l].ok = 0;
+            }
+            pivots_lanes(offset, g, d0v, e0v, n, q + i, x + i, work, okv);
+            for (int l = 0; l < g; l++)
+                okv[l] = okv[l] && accept_first(offset, d0v[l], e0v[l], n, k, q[i + l], x[i + l], tol,
+                                                work + 4 * n * l, &fv[l], value + i + l, err + i + l);
+            for (int l = 0; l < g; l++)
+                ok[i + l] = okv[l] ? 1
+                                   : (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i + l], x[i + l], tol,
+                                                                 work, &fv[l], value + i + l, err + i + l);
+            i += g;
             continue;
         }
         ok[i] = (unsigned char)refine_point(offset, q_sign, sqrt2, k, q[i], x[i], tol, work, NULL, value + i,
@@ -323,7 +329,7 @@ static void refine_core(int offset, int q_sign, int sqrt2, int k, long npts, con
 int symosc_mathieu_refine(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *x,
                           double tol, double *value, double *err, unsigned char *ok) {
     int nmax = work_size(k, npts, q);
-    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
+    double *work = malloc(sizeof(double) * 4 * LANES * (size_t)nmax);
     if (!work) return -1;
     refine_core(offset, q_sign, sqrt2, k, npts, q, x, tol, value, err, ok, work);
     free(work);
@@ -440,7 +446,7 @@ int symosc_mathieu_auto(int is_b, int n, long npts, const double *q, const doubl
         if (m > nmax) nmax = m;
     }
     size_t np = (size_t)(npts > 0 ? npts : 1);
-    double *work = malloc(sizeof(double) * 8 * (size_t)nmax);
+    double *work = malloc(sizeof(double) * 4 * LANES * (size_t)nmax);
     double *buf = malloc(sizeof(double) * 5 * np);
     double *raw = malloc(sizeof(double) * 5 * np);  /* own raw, partner raw, lo gap, hi gap, clamped */
     long *idx = malloc(sizeof(long) * np);
