@@ -51,6 +51,7 @@ from typing import Any
 import mpmath
 import numpy as np
 
+from .._validate import validates_own_arguments
 from ..errors import ConvergenceError, ParameterError
 from . import _hill, _mathieu_auto
 from .mathieu_series import _check_n, mathieu_series_value
@@ -365,6 +366,7 @@ def mathieu_kernel() -> str:
     return _mathieu_auto.mathieu_kernel()
 
 
+@validates_own_arguments
 def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float | None = None):
     """Characteristic value a_n(q) of the Mathieu equation y'' + (a - 2q cos 2x) y = 0.
 
@@ -396,6 +398,7 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     return mathieu_characteristic("a", n, q, method=method, dps=dps, tol=tol).values
 
 
+@validates_own_arguments
 def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float | None = None):
     """Characteristic value b_n(q), n >= 1, of the Mathieu equation y'' + (a - 2q cos 2x) y = 0.
 
