@@ -91,28 +91,64 @@ def _int_products_flint(P: Any, ac, as_, bc, bs, na: int, nb: int) -> tuple[list
     )
 
 
-def _forward_polys(P: Any, t: Trig) -> tuple:
-    """(cos, sin, cos + sin) numerators of ``t`` as ``fmpz_poly`` (cached on ``t``)."""
+def _parity(t: Trig) -> int | None:
+    """1 when only odd harmonics occur, 0 when only even ones, None for both (cached on ``t``)."""
     cache = t.polys if t.polys is not None else {}
-    if "f" not in cache:
-        c, s = P(t.cos.tolist()), P(t.sin.tolist())
-        cache["f"] = (c, s, c + s)
+    if "p" not in cache:
+        if not any(t.cos[0::2].tolist()) and not any(t.sin[0::2].tolist()):
+            cache["p"] = 1
+        elif not any(t.cos[1::2].tolist()) and not any(t.sin[1::2].tolist()):
+            cache["p"] = 0
+        else:
+            cache["p"] = None
         t.polys = cache
-    return cache["f"]
+    return cache["p"]
 
 
-def _reversed_polys(P: Any, t: Trig, n: int) -> tuple:
-    """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms."""
+def _forward_polys(P: Any, t: Trig, parity: int | None = None) -> tuple:
+    """(cos, sin, cos + sin) numerators of ``t`` as ``fmpz_poly`` (cached on ``t``).
+
+    With ``parity`` (0 or 1) only the harmonics of that parity are kept, as a polynomial in ``z**2``.
+    """
     cache = t.polys if t.polys is not None else {}
-    key = ("r", n)
+    key = ("f", parity)
+    if key not in cache:
+        lo = 0 if parity is None else parity
+        step = 1 if parity is None else 2
+        c, s = P(t.cos[lo::step].tolist()), P(t.sin[lo::step].tolist())
+        cache[key] = (c, s, c + s)
+        t.polys = cache
+    return cache[key]
+
+
+def _reversed_polys(P: Any, t: Trig, n: int, parity: int | None = None) -> tuple:
+    """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms.
+
+    With ``parity`` (of the harmonics of ``t``) the reversed polynomials are taken in ``z**2`` from the offset
+    ``(n - parity) % 2``.
+    """
+    cache = t.polys if t.polys is not None else {}
+    key = ("r", n, parity)
     if key not in cache:
         shift = n - (len(t.cos) - 1)
         pad = [0] * shift
-        rc, rs = P(pad + t.cos[::-1].tolist()), P(pad + t.sin[::-1].tolist())
-        c, s, _ = _forward_polys(P, t)
+        rc, rs = pad + t.cos[::-1].tolist(), pad + t.sin[::-1].tolist()
+        if parity is not None:
+            lo = (n - parity) % 2
+            rc, rs = rc[lo::2], rs[lo::2]
+        rc, rs = P(rc), P(rs)
+        c, s, _ = _forward_polys(P, t, parity)
         cache[key] = (rc, rs, rc - rs, c, s, c + s)
         t.polys = cache
     return cache[key]
+
+
+def _spread(p: Any, offset: int, n: int) -> np.ndarray:
+    """Coefficients of ``z**offset * p(z**2)`` as an object array of length ``n``."""
+    out = [0] * n
+    m = len(range(offset, n, 2))
+    out[offset::2] = _int_list(p, m)
+    return _object_array(out)
 
 
 def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
@@ -351,9 +387,22 @@ class ExactArith(_Arith):
         nb = max(len(b.cos) for _, b in pairs) - 1
         zero = P(0)
         acc = [zero, zero, zero, zero]
+        # odd-only or even-only harmonics on each side (odd nonlinearities): multiply polynomials in z**2
+        par_a = {_parity(a) for a, _ in pairs}
+        par_b = {_parity(b) for _, b in pairs}
+        if len(par_a) == 1 and len(par_b) == 1 and None not in par_a and None not in par_b:
+            pa, pb = par_a.pop(), par_b.pop()
+            forward = lambda t: _forward_polys(P, t, pa)  # noqa: E731
+            reverse = lambda t: _reversed_polys(P, t, nb, pb)  # noqa: E731
+            q = (nb - pb) % 2
+            offsets = (pa + pb, pa + pb, pa + q, pa + q)
+        else:
+            forward = lambda t: _forward_polys(P, t)  # noqa: E731
+            reverse = lambda t: _reversed_polys(P, t, nb)  # noqa: E731
+            offsets = None
         for (a, b), d in zip(pairs, dens, strict=True):
-            a_c, a_s, a_sum = _forward_polys(P, a)
-            r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb)
+            a_c, a_s, a_sum = forward(a)
+            r_c, r_s, r_diff, b_c, b_s, b_sum = reverse(b)
             f = den // d
             p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
             p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
@@ -362,7 +411,10 @@ class ExactArith(_Arith):
             acc[2] += (p4 + p5) * f
             acc[3] += (p6 - p4 + p5) * f
         n = na + nb
-        out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
+        if offsets is None:
+            out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
+        else:
+            out_c, out_s, dc, ds = (_spread(p, off, n + 1) for p, off in zip(acc, offsets, strict=True))
         _fold_differences(out_c, out_s, dc, ds, na, nb)
         top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
         return self._norm(Trig(out_c[:top].copy(), out_s[:top].copy(), den))
