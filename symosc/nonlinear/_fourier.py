@@ -151,6 +151,49 @@ def _spread(p: Any, offset: int, n: int) -> np.ndarray:
     return _object_array(out)
 
 
+def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tuple[np.ndarray, np.ndarray]:
+    """Twice the numerators of ``sum f * a * b`` (integer numerators; ``f`` in ``factors``) by FLINT products.
+
+    Odd-only or even-only harmonics on each side (odd nonlinearities) are multiplied as polynomials in ``z**2``.
+    """
+    na = max(len(a.cos) for a, _ in pairs) - 1
+    nb = max(len(b.cos) for _, b in pairs) - 1
+    zero = P(0)
+    acc = [zero, zero, zero, zero]
+    par_a = {_parity(a) for a, _ in pairs}
+    par_b = {_parity(b) for _, b in pairs}
+    if len(par_a) == 1 and len(par_b) == 1 and None not in par_a and None not in par_b:
+        pa, pb = par_a.pop(), par_b.pop()
+        q = (nb - pb) % 2
+        offsets: tuple | None = (pa + pb, pa + pb, pa + q, pa + q)
+    else:
+        pa = pb = None
+        offsets = None
+    for (a, b), f in zip(pairs, factors, strict=True):
+        a_c, a_s, a_sum = _forward_polys(P, a, pa)
+        r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
+        p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
+        p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
+        if f == 1:
+            acc[0] += p1 - p2
+            acc[1] += p3 - p1 - p2
+            acc[2] += p4 + p5
+            acc[3] += p6 - p4 + p5
+        else:
+            acc[0] += (p1 - p2) * f
+            acc[1] += (p3 - p1 - p2) * f
+            acc[2] += (p4 + p5) * f
+            acc[3] += (p6 - p4 + p5) * f
+    n = na + nb
+    if offsets is None:
+        out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
+    else:
+        out_c, out_s, dc, ds = (_spread(p, off, n + 1) for p, off in zip(acc, offsets, strict=True))
+    _fold_differences(out_c, out_s, dc, ds, na, nb)
+    top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
+    return out_c[:top].copy(), out_s[:top].copy()
+
+
 def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
     """Add the n - m terms (``dc``/``ds`` index j + nb holds n - m = j) into the n + m sums, in place."""
     out_c[: na + 1] = out_c[: na + 1] + dc[nb : nb + na + 1]
@@ -287,6 +330,13 @@ class _Arith:
             acc = self.add(acc, self.mul(a, b))
         return acc
 
+    def lincomb(self, scalars: list[Any], series: list[Trig]) -> Trig:
+        """``sum s * t`` over scalars and series (the Cauchy products with a scalar series)."""
+        acc = self.scale(series[0], scalars[0])
+        for c, t in zip(scalars[1:], series[1:], strict=True):
+            acc = self.add(acc, self.scale(t, c))
+        return acc
+
     def solve_forced(self, r: Trig) -> Trig:
         """Periodic solution of ``x'' + x = r`` with the n = 1 harmonics of ``r`` ignored (and set to 0)."""
         raise NotImplementedError
@@ -383,41 +433,25 @@ class ExactArith(_Arith):
             return self._dot_numpy(pairs)
         dens = [2 * a.den * b.den for a, b in pairs]
         den = math.lcm(*dens)
-        na = max(len(a.cos) for a, _ in pairs) - 1
-        nb = max(len(b.cos) for _, b in pairs) - 1
-        zero = P(0)
-        acc = [zero, zero, zero, zero]
-        # odd-only or even-only harmonics on each side (odd nonlinearities): multiply polynomials in z**2
-        par_a = {_parity(a) for a, _ in pairs}
-        par_b = {_parity(b) for _, b in pairs}
-        if len(par_a) == 1 and len(par_b) == 1 and None not in par_a and None not in par_b:
-            pa, pb = par_a.pop(), par_b.pop()
-            forward = lambda t: _forward_polys(P, t, pa)  # noqa: E731
-            reverse = lambda t: _reversed_polys(P, t, nb, pb)  # noqa: E731
-            q = (nb - pb) % 2
-            offsets = (pa + pb, pa + pb, pa + q, pa + q)
-        else:
-            forward = lambda t: _forward_polys(P, t)  # noqa: E731
-            reverse = lambda t: _reversed_polys(P, t, nb)  # noqa: E731
-            offsets = None
-        for (a, b), d in zip(pairs, dens, strict=True):
-            a_c, a_s, a_sum = forward(a)
-            r_c, r_s, r_diff, b_c, b_s, b_sum = reverse(b)
-            f = den // d
-            p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
-            p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
-            acc[0] += (p1 - p2) * f
-            acc[1] += (p3 - p1 - p2) * f
-            acc[2] += (p4 + p5) * f
-            acc[3] += (p6 - p4 + p5) * f
-        n = na + nb
-        if offsets is None:
-            out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
-        else:
-            out_c, out_s, dc, ds = (_spread(p, off, n + 1) for p, off in zip(acc, offsets, strict=True))
-        _fold_differences(out_c, out_s, dc, ds, na, nb)
-        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
-        return self._norm(Trig(out_c[:top].copy(), out_s[:top].copy(), den))
+        out_c, out_s = _flint_dot(P, pairs, [den // d for d in dens])
+        return self._norm(Trig(out_c, out_s, den))
+
+    def lincomb(self, scalars: list[Fraction], series: list[Trig]) -> Trig:
+        """``sum s * t`` on one common denominator, reduced once."""
+        scalars = [Fraction(c) for c in scalars]
+        dens = [c.denominator * t.den for c, t in zip(scalars, series, strict=True)]
+        den = math.lcm(*dens)
+        n = max(len(t.cos) for t in series)
+        out_c = np.zeros(n, dtype=object)
+        out_s = np.zeros(n, dtype=object)
+        for c, t, d in zip(scalars, series, dens, strict=True):
+            if c.numerator == 0:
+                continue
+            f = c.numerator * (den // d)
+            k = len(t.cos)
+            out_c[:k] += t.cos * f
+            out_s[:k] += t.sin * f
+        return self._norm(Trig(out_c, out_s, den))
 
     def _dot_numpy(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
         dens = [2 * a.den * b.den for a, b in pairs]
@@ -489,6 +523,21 @@ class FixedArith(_Arith):
         c, s = self._products(a, b)
         return Trig(_shift_arr(c, self.prec + 1), _shift_arr(s, self.prec + 1), a.den)
 
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` with the products summed exactly and rounded once."""
+        P = _fmpz_poly()
+        if P:
+            c, s = _flint_dot(P, pairs, [1] * len(pairs))
+        else:
+            prods = [self._products(a, b) for a, b in pairs]
+            n = max(len(pc) for pc, _ in prods)
+            c = np.zeros(n, dtype=object)
+            s = np.zeros(n, dtype=object)
+            for pc, ps in prods:
+                c[: len(pc)] += pc
+                s[: len(ps)] += ps
+        return Trig(_shift_arr(c, self.prec + 1), _shift_arr(s, self.prec + 1), pairs[0][0].den)
+
     def solve_forced(self, r: Trig) -> Trig:
         n = len(r.cos)
         c = r.cos.copy()
@@ -525,6 +574,33 @@ class FixedArith(_Arith):
         return [self.output(x) for x in c], [self.output(x) for x in s]
 
 
+def _float_structure(t: Trig) -> Any:
+    """("c" | "s" | None, parity | None) of a float series, or "0" for the zero series."""
+    has_c = bool(np.any(t.cos))
+    has_s = bool(np.any(t.sin))
+    if not has_c and not has_s:
+        return "0"
+    kind = None if has_c and has_s else ("c" if has_c else "s")
+    if not np.any(t.cos[0::2]) and not np.any(t.sin[0::2]):
+        parity = 1
+    elif not np.any(t.cos[1::2]) and not np.any(t.sin[1::2]):
+        parity = 0
+    else:
+        parity = None
+    return kind, parity
+
+
+def _float_kind(a: Trig, b: Trig) -> Any:
+    """Which coefficients of ``a * b`` can be nonzero: (kind, parity) as in :func:`_float_structure`, or "0"."""
+    sa, sb = _float_structure(a), _float_structure(b)
+    if sa == "0" or sb == "0":
+        return "0"
+    (ka, pa), (kb, pb) = sa, sb
+    kind = None if ka is None or kb is None else ("c" if ka == kb else "s")
+    parity = None if pa is None or pb is None else (pa + pb) % 2
+    return kind, parity
+
+
 class FloatArith(_Arith):
     """Double precision (numpy float64 arrays)."""
 
@@ -547,6 +623,39 @@ class FloatArith(_Arith):
     def mul(self, a: Trig, b: Trig) -> Trig:
         c, s = self._products(a, b)
         return Trig(0.5 * c, 0.5 * s, 1)
+
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` by sampling: one batched real FFT per side, products summed on the grid, one FFT back."""
+        na = max(len(a.cos) for a, _ in pairs)
+        nb = max(len(b.cos) for _, b in pairs)
+        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)
+        size = 1 << (2 * top).bit_length()  # more grid points than twice the highest harmonic: no aliasing
+        k = len(pairs)
+        ya = np.zeros((k, na), dtype=complex)
+        yb = np.zeros((k, nb), dtype=complex)
+        for i, (a, b) in enumerate(pairs):
+            ya[i, : len(a.cos)] = a.cos - 1j * a.sin
+            yb[i, : len(b.cos)] = b.cos - 1j * b.sin
+        ya[:, 1:] *= 0.5
+        yb[:, 1:] *= 0.5
+        grid = np.einsum("ij,ij->j", np.fft.irfft(ya, size, axis=1), np.fft.irfft(yb, size, axis=1))
+        spec = np.fft.rfft(grid)[:top] * size
+        c = spec.real
+        c[1:] *= 2.0
+        s = -2.0 * spec.imag
+        s[0] = 0.0
+        # coefficients that vanish by symmetry are set to exact zeros (no rounding noise from the transform)
+        kinds = {_float_kind(a, b) for a, b in pairs} - {"0"}
+        if len(kinds) == 1:
+            kind, parity = kinds.pop()
+            if kind == "c":
+                s[:] = 0.0
+            elif kind == "s":
+                c[:] = 0.0
+            if parity is not None:
+                c[1 - parity :: 2] = 0.0
+                s[1 - parity :: 2] = 0.0
+        return Trig(c, s, 1)
 
     def solve_forced(self, r: Trig) -> Trig:
         k = np.arange(len(r.cos), dtype=float)

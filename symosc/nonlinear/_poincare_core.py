@@ -242,13 +242,11 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
     for k in range(1, order + 2):
         m = k - 1
         # v_m = sum_i w_i x'_{m-i}
-        vm = ar.new(0)
-        for i in range(0, m + 1):
-            vm = ar.add(vm, ar.scale(ar.deriv(x[m - i]), w[i]))
+        vm = ar.deriv(ar.lincomb(w[: m + 1], x[m::-1]))
         tables.push(x[m], vm)
         R = _combine(ar, tables, coeffs, m)
-        for j in range(1, k):
-            R = ar.sub(R, ar.scale(ar.deriv(ar.deriv(x[k - j])), s[j]))
+        if k > 1:
+            R = ar.sub(R, ar.deriv(ar.deriv(ar.lincomb(s[1:k], x[k - 1 : 0 : -1]))))
         if k == 1:
             sk = _neg(ar, ar.coeff(R, "c", 1))
             var = tables.variations()
