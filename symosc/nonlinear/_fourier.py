@@ -515,6 +515,7 @@ class FloatArith(_Arith):
         return float(arr[n]) if n < len(arr) else 0.0
 
     def _set(self, t: Trig, kind: str, n: int, value: float) -> None:
+        t.polys = None
         (t.cos if kind == "c" else t.sin)[n] = value
 
 

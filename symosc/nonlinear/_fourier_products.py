@@ -161,19 +161,24 @@ def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
 
 
 def _float_structure(t: Trig) -> Any:
-    """("c" | "s" | None, parity | None) of a float series, or "0" for the zero series."""
-    has_c = bool(np.any(t.cos))
-    has_s = bool(np.any(t.sin))
-    if not has_c and not has_s:
-        return "0"
-    kind = None if has_c and has_s else ("c" if has_c else "s")
-    if not np.any(t.cos[0::2]) and not np.any(t.sin[0::2]):
-        parity = 1
-    elif not np.any(t.cos[1::2]) and not np.any(t.sin[1::2]):
-        parity = 0
-    else:
-        parity = None
-    return kind, parity
+    """("c" | "s" | None, parity | None) of a float series, or "0" for the zero series (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "fs" not in cache:
+        c, s = t.cos, t.sin
+        has_c, has_s = bool(c.any()), bool(s.any())
+        if not has_c and not has_s:
+            cache["fs"] = "0"
+        else:
+            kind = None if has_c and has_s else ("c" if has_c else "s")
+            if not c[0::2].any() and not s[0::2].any():
+                parity = 1
+            elif not c[1::2].any() and not s[1::2].any():
+                parity = 0
+            else:
+                parity = None
+            cache["fs"] = (kind, parity)
+        t.polys = cache
+    return cache["fs"]
 
 
 def _float_kind(a: Trig, b: Trig) -> Any:
