@@ -332,6 +332,13 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
     harmonics = []
     amp = []
     for xk in raw.x[: order + 1]:
+        if isinstance(ar, ExactArith):  # straight from the integer numerators (the same reduced Rationals)
+            den = int(xk.den)
+            cs = [sp.Rational(int(c), den) for c in xk.cos]
+            ss = [sp.Rational(int(c), den) for c in xk.sin]
+            harmonics.append((cs, ss))
+            amp.append(sp.Rational(int(sum(xk.cos.tolist())), den))
+            continue
         cs, ss = ar.values(xk)
         cs = [to_sympy_number(c, prec_digits) for c in cs]
         ss = [to_sympy_number(c, prec_digits) for c in ss]
