@@ -46,6 +46,7 @@ def __getattr__(name: str):
         "identification",
         "linear",
         "plotting",
+        "networks",
         "cli",
     }:
         return importlib.import_module(f".{name}", __name__)
