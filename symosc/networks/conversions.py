@@ -143,4 +143,4 @@ def convert_parameters(M: Any, source: str, target: str, convention: str = "book
     M = _to_book(_as_2x2(M), source, convention)
     result = _from_chain(_chain_from(M, source), target)
     result = _to_book(result, target, convention)  # the flips are involutions
-    return result.applyfunc(sp.cancel)
+    return sp.Matrix(result).applyfunc(sp.cancel)

@@ -113,7 +113,10 @@ def image_parameters(four_pole: FourPole, at: Any) -> ImageParameters:
     q = mpmath.sqrt(A22 / A11)
     W = mpmath.sqrt(A12 / A21)
     egx = A11 * q + A21 * W
-    if mpmath.log(egx).real < 0:
+    a = mpmath.log(egx).real
+    tol = mpmath.mpf(2) ** (-mpmath.mp.prec + 12) * (1 + abs(egx))
+    # Re gx > 0 (the book's rule); on a passband (Re gx = 0 up to rounding) take Re W >= 0 instead
+    if a < -tol or (abs(a) <= tol and W.real < 0):
         W = -W
         egx = A11 * q + A21 * W
     emgy = A11 * q - A21 * W

@@ -1,0 +1,81 @@
+"""Pole removal steps shared by the synthesis modules (private), Bulgakov (1954), §9.23, Theorem IV."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..errors import ModelError
+from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
+
+
+def pole_at_infinity(F: sp.Expr, p: sp.Symbol) -> sp.Expr:
+    """Residue ``k`` of the pole of ``F`` at infinity (``F ~ k p``), 0 when there is none."""
+    N, D = sp.fraction(sp.cancel(F))
+    N, D = sp.Poly(N, p), sp.Poly(D, p)
+    if N.degree() == D.degree() + 1:
+        return sp.cancel(N.LC() / D.LC())
+    if N.degree() > D.degree() + 1:
+        raise ModelError("multiple pole at infinity: not a positive-real function")
+    return sp.Integer(0)
+
+
+def pole_at_zero(F: sp.Expr, p: sp.Symbol) -> sp.Expr:
+    """Residue ``k`` of the pole of ``F`` at ``p = 0`` (``F ~ k/p``), 0 when there is none."""
+    N, D = sp.fraction(sp.cancel(F))
+    D = sp.Poly(D, p)
+    if D.eval(0) != 0:
+        return sp.Integer(0)
+    return sp.cancel(_lim0(p * F, p))
+
+
+def _lim0(G: sp.Expr, p: sp.Symbol) -> sp.Expr:
+    N, D = sp.fraction(sp.cancel(G))
+    N, D = sp.Poly(N, p), sp.Poly(D, p)
+    if D.eval(0) == 0:
+        raise ModelError("multiple pole at p = 0: not a positive-real function")
+    return N.eval(0) / D.eval(0)
+
+
+def finite_axis_poles(F: sp.Expr, p: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]:
+    """Pairs ``(w2, k)``: poles at ``p = ±i sqrt(w2)``, ``w2 > 0``, with ``F ~ 2 k p/(p² + w2)``."""
+    N, D = sp.fraction(sp.cancel(F))
+    Dp = sp.Poly(D, p)
+    G = sp.gcd(Dp, sp.Poly(D.subs(p, -p), p))
+    out = []
+    for factor, _ in sp.factor_list(G.as_expr(), p)[1]:
+        fpoly = sp.Poly(factor, p)
+        if fpoly.degree() < 2 or fpoly.eval(0) == 0:
+            continue
+        y = sp.Dummy("y")
+        H = sp.Poly(sp.expand(factor.subs(p, sp.sqrt(y))), y)  # polynomial in y = p**2
+        for r in sp.roots(H, y, multiple=True) or [sp.CRootOf(H, i) for i in range(H.degree())]:
+            w2 = sp.nsimplify(-r) if not isinstance(r, sp.CRootOf) else -r
+            if not sp.N(w2, 30).is_positive:
+                continue
+            rest = sp.cancel(F * (p**2 + w2) / p)
+            k2 = sp.radsimp(sp.simplify(rest.subs(p, sp.I * sp.sqrt(w2))))
+            out.append((w2, k2 / 2))
+    return out
+
+
+def remove_axis_poles(F: sp.Expr, p: sp.Symbol, mode: str) -> tuple[list[OnePort], sp.Expr]:
+    """Remove every imaginary-axis pole of ``F`` (an impedance if ``mode == "Z"``, else an admittance).
+
+    Returns the removed elements (series elements for an impedance, shunt branches for an admittance) and the
+    remainder, which keeps the real part of ``F`` on the axis (Theorem IV).
+    """
+    parts: list[OnePort] = []
+    k_inf = pole_at_infinity(F, p)
+    k_0 = pole_at_zero(F, p)
+    poles = finite_axis_poles(F, p)
+    rest = F - k_inf * p - k_0 / p - sum((2 * k * p / (p**2 + w2) for w2, k in poles), sp.Integer(0))
+    if k_inf != 0:
+        parts.append(Inductor(k_inf) if mode == "Z" else Capacitor(k_inf))
+    if k_0 != 0:
+        parts.append(Capacitor(1 / k_0) if mode == "Z" else Inductor(1 / k_0))
+    for w2, k in poles:
+        if mode == "Z":  # parallel tank: 2kp/(p²+w2) = 1/(C p + 1/(L p)), C = 1/(2k), L = 2k/w2
+            parts.append(Parallel((Capacitor(1 / (2 * k)), Inductor(2 * k / w2))))
+        else:  # series L-C branch: admittance 2kp/(p²+w2), L = 1/(2k), C = 2k/w2
+            parts.append(Series((Inductor(1 / (2 * k)), Capacitor(2 * k / w2))))
+    return parts, sp.cancel(sp.together(rest))
