@@ -3,8 +3,18 @@
 After Bulgakov (1954), §8.31–8.49 and ch. 9 B–D.
 """
 
+from .absorber import (
+    Absorber,
+    HInfinityOptimum,
+    absorber_fixed_points,
+    absorber_hinf_optimum,
+    absorber_optimum,
+    amplification_squared,
+)
+from .brune import brune_synthesis, minimum_real_part
 from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
 from .conversions import PARAMETER_KINDS, convert_parameters
+from .foster_cauer import cauer_first, cauer_second, foster_first, foster_second, is_reactance_function
 from .fourpoles import FourPole
 from .image import (
     ImageParameters,
@@ -27,6 +37,14 @@ from .oneports import (
     Series,
     equivalent_two_pole,
 )
+from .positive_real import (
+    PositiveRealReport,
+    biquadratic_is_positive_real,
+    is_m_function,
+    is_positive_real,
+    positive_real_report,
+    real_part_on_axis,
+)
 from .sections import (
     bridged_t_section,
     ideal_transformer,
@@ -44,42 +62,61 @@ from .sections import (
 
 __all__ = [
     "PARAMETER_KINDS",
+    "Absorber",
     "BruneSection",
     "Capacitor",
     "FourPole",
+    "HInfinityOptimum",
     "ImageParameters",
-    "IterativeParameters",
-    "TerminatedResponse",
     "Impedance",
     "Inductor",
+    "IterativeParameters",
     "OnePort",
     "Parallel",
+    "PositiveRealReport",
     "Resistor",
     "Series",
+    "TerminatedResponse",
+    "absorber_fixed_points",
+    "absorber_hinf_optimum",
+    "absorber_optimum",
+    "amplification_squared",
+    "biquadratic_is_positive_real",
     "bridged_t_section",
+    "brune_synthesis",
     "brune_test",
     "cascade",
+    "cauer_first",
+    "cauer_second",
     "chain_power",
     "convert_parameters",
     "equivalent_two_pole",
+    "foster_first",
+    "foster_second",
+    "ideal_transformer",
     "image_parameters",
     "insertion_loss",
+    "is_m_function",
+    "is_positive_real",
+    "is_reactance_function",
     "iterative_parameters",
-    "terminated_response",
-    "working_loss",
-    "ideal_transformer",
     "l_section",
     "lattice",
     "lattice_phase_network",
+    "minimum_real_part",
     "parallel",
     "parallel_series",
     "pi_section",
+    "positive_real_report",
+    "real_part_on_axis",
     "series",
     "series_element",
     "series_parallel",
     "shunt_element",
     "t_section",
+    "terminated_response",
     "transformer",
     "twin_t_notch",
     "twin_t_section",
+    "working_loss",
 ]

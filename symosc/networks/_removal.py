@@ -21,7 +21,7 @@ def pole_at_infinity(F: sp.Expr, p: sp.Symbol) -> sp.Expr:
 
 def pole_at_zero(F: sp.Expr, p: sp.Symbol) -> sp.Expr:
     """Residue ``k`` of the pole of ``F`` at ``p = 0`` (``F ~ k/p``), 0 when there is none."""
-    N, D = sp.fraction(sp.cancel(F))
+    _N, D = sp.fraction(sp.cancel(F))
     D = sp.Poly(D, p)
     if D.eval(0) != 0:
         return sp.Integer(0)
@@ -38,7 +38,7 @@ def _lim0(G: sp.Expr, p: sp.Symbol) -> sp.Expr:
 
 def finite_axis_poles(F: sp.Expr, p: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]:
     """Pairs ``(w2, k)``: poles at ``p = ±i sqrt(w2)``, ``w2 > 0``, with ``F ~ 2 k p/(p² + w2)``."""
-    N, D = sp.fraction(sp.cancel(F))
+    _N, D = sp.fraction(sp.cancel(F))
     Dp = sp.Poly(D, p)
     G = sp.gcd(Dp, sp.Poly(D.subs(p, -p), p))
     out = []
@@ -52,9 +52,9 @@ def finite_axis_poles(F: sp.Expr, p: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]
             w2 = sp.nsimplify(-r) if not isinstance(r, sp.CRootOf) else -r
             if not sp.N(w2, 30).is_positive:
                 continue
-            rest = sp.cancel(F * (p**2 + w2) / p)
-            k2 = sp.radsimp(sp.simplify(rest.subs(p, sp.I * sp.sqrt(w2))))
-            out.append((w2, k2 / 2))
+            num, den = sp.fraction(sp.cancel(F))
+            k = even_at(num / sp.diff(den, p), p, w2)  # residue N/D' at p = i*sqrt(w2), real
+            out.append((w2, k))
     return out
 
 
@@ -79,3 +79,14 @@ def remove_axis_poles(F: sp.Expr, p: sp.Symbol, mode: str) -> tuple[list[OnePort
         else:  # series L-C branch: admittance 2kp/(p²+w2), L = 1/(2k), C = 2k/w2
             parts.append(Series((Inductor(1 / (2 * k)), Capacitor(2 * k / w2))))
     return parts, sp.cancel(sp.together(rest))
+
+
+def even_at(F: sp.Expr, p: sp.Symbol, x0: sp.Expr) -> sp.Expr:
+    """Value of the even part of ``F`` at ``p² = -x0`` (exact, without square roots of ``x0``)."""
+    Fe = sp.cancel(sp.together((F + F.subs(p, -p)) / 2))
+    y = sp.Dummy("y")
+    num, den = sp.fraction(Fe)
+    num = sp.Poly(num, p).as_expr().subs(p, sp.sqrt(y))
+    den = sp.Poly(den, p).as_expr().subs(p, sp.sqrt(y))
+    value = sp.expand(num.subs(y, -x0)) / sp.expand(den.subs(y, -x0))
+    return value if value.is_Rational else sp.radsimp(sp.simplify(value))

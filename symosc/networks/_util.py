@@ -62,7 +62,9 @@ def rational_function(Z: Any, p: sp.Symbol, name: str = "Z") -> tuple[sp.Poly, s
     if g.degree() > 0:
         N, D = sp.div(N, g)[0], sp.div(D, g)[0]
     lc = D.LC()
-    return N.mul_ground(1 / lc) if lc != 1 else N, D.monic() if lc != 1 else D
+    if lc != 1:
+        N, D = sp.Poly(sp.expand(N.as_expr() / lc), p), sp.Poly(sp.expand(D.as_expr() / lc), p)
+    return N, D
 
 
 def is_zero(expr: sp.Expr) -> bool:

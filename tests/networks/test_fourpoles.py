@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from symosc.errors import ModelError, ParameterError
 from symosc.networks import (
     Impedance,
+    Resistor,
     brune_test,
     cascade,
     chain_power,
@@ -39,7 +40,6 @@ from symosc.networks import (
     transformer,
     twin_t_notch,
     working_loss,
-    Resistor,
 )
 from symosc.networks._nodal import chain_from_netlist
 
@@ -151,7 +151,9 @@ def test_pi_and_lattice_book_forms():
     assert _zero(Pi - sp.Matrix([[(ZB + ZC) / ZC, ZB], [(ZA + ZB + ZC) / (ZA * ZC), (ZA + ZB) / ZA]]))
     Zl = lattice(ZA, ZB, ZC, ZD).Z
     S = ZA + ZB + ZC + ZD
-    assert _zero(Zl - sp.Matrix([[(ZA + ZD) * (ZB + ZC), ZA * ZB - ZC * ZD], [ZC * ZD - ZA * ZB, -(ZA + ZC) * (ZB + ZD)]]) / S)
+    assert _zero(
+        Zl - sp.Matrix([[(ZA + ZD) * (ZB + ZC), ZA * ZB - ZC * ZD], [ZC * ZD - ZA * ZB, -(ZA + ZC) * (ZB + ZD)]]) / S
+    )
 
 
 def test_bridged_t_book_form():
