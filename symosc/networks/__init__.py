@@ -14,6 +14,14 @@ from .absorber import (
 from .brune import brune_synthesis, minimum_real_part
 from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
 from .conversions import PARAMETER_KINDS, convert_parameters
+from .filters import (
+    FilterSection,
+    constant_k_section,
+    frequency_map,
+    image_operating_loss,
+    lattice_from_transmission,
+    m_derived_section,
+)
 from .foster_cauer import cauer_first, cauer_second, foster_first, foster_second, is_reactance_function
 from .fourpoles import FourPole
 from .image import (
@@ -37,6 +45,7 @@ from .oneports import (
     Series,
     equivalent_two_pole,
 )
+from .pads import MatchingPad, matching_l_pad
 from .positive_real import (
     PositiveRealReport,
     biquadratic_is_positive_real,
@@ -65,12 +74,14 @@ __all__ = [
     "Absorber",
     "BruneSection",
     "Capacitor",
+    "FilterSection",
     "FourPole",
     "HInfinityOptimum",
     "ImageParameters",
     "Impedance",
     "Inductor",
     "IterativeParameters",
+    "MatchingPad",
     "OnePort",
     "Parallel",
     "PositiveRealReport",
@@ -89,11 +100,14 @@ __all__ = [
     "cauer_first",
     "cauer_second",
     "chain_power",
+    "constant_k_section",
     "convert_parameters",
     "equivalent_two_pole",
     "foster_first",
     "foster_second",
+    "frequency_map",
     "ideal_transformer",
+    "image_operating_loss",
     "image_parameters",
     "insertion_loss",
     "is_m_function",
@@ -102,7 +116,10 @@ __all__ = [
     "iterative_parameters",
     "l_section",
     "lattice",
+    "lattice_from_transmission",
     "lattice_phase_network",
+    "m_derived_section",
+    "matching_l_pad",
     "minimum_real_part",
     "parallel",
     "parallel_series",

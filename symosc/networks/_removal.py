@@ -48,8 +48,12 @@ def finite_axis_poles(F: sp.Expr, p: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]
             continue
         y = sp.Dummy("y")
         H = sp.Poly(sp.expand(factor.subs(p, sp.sqrt(y))), y)  # polynomial in y = p**2
-        for r in sp.roots(H, y, multiple=True) or [sp.CRootOf(H, i) for i in range(H.degree())]:
-            w2 = sp.nsimplify(-r) if not isinstance(r, sp.CRootOf) else -r
+        if H.degree() <= 2:
+            found = sp.roots(H, y, multiple=True)
+        else:  # exact real roots (cubic formulas would bring spurious imaginary parts)
+            found = [sp.CRootOf(H, i) for i in range(H.count_roots())]
+        for r in found:
+            w2 = -r
             if not sp.N(w2, 30).is_positive:
                 continue
             num, den = sp.fraction(sp.cancel(F))
@@ -83,10 +87,23 @@ def remove_axis_poles(F: sp.Expr, p: sp.Symbol, mode: str) -> tuple[list[OnePort
 
 def even_at(F: sp.Expr, p: sp.Symbol, x0: sp.Expr) -> sp.Expr:
     """Value of the even part of ``F`` at ``p² = -x0`` (exact, without square roots of ``x0``)."""
-    Fe = sp.cancel(sp.together((F + F.subs(p, -p)) / 2))
+    Fe = sp.together((F + F.subs(p, -p)) / 2)
+    radical = any(a.is_Pow and not a.exp.is_Integer and not a.has(sp.Symbol) for a in Fe.atoms(sp.Pow))
+    Fe = sp.cancel(Fe, extension=True) if radical else sp.cancel(Fe)
     y = sp.Dummy("y")
     num, den = sp.fraction(Fe)
     num = sp.Poly(num, p).as_expr().subs(p, sp.sqrt(y))
     den = sp.Poly(den, p).as_expr().subs(p, sp.sqrt(y))
     value = sp.expand(num.subs(y, -x0)) / sp.expand(den.subs(y, -x0))
     return value if value.is_Rational else sp.radsimp(sp.simplify(value))
+
+
+def remainder_is_zero(rest: sp.Expr, p: sp.Symbol) -> bool:
+    """Exact zero test; with CRootOf coefficients (poles at roots of cubics or higher) a 50-digit test."""
+    if rest == 0:
+        return True
+    if not rest.has(sp.CRootOf):
+        return False
+    return all(
+        abs(sp.N(rest.subs(p, z), 50)) < sp.Float(10) ** -40 for z in (sp.Rational(3, 7) + sp.I, sp.Rational(5, 3))
+    )

@@ -98,7 +98,7 @@ def _optimum() -> tuple[sp.Expr, sp.Expr]:
     a2, a1, _ = quad.all_coeffs()
     # equal heights: R1 = 1/|1 - (1+mu)x| at both fixed points (the zeta -> oo curve), one below and one above
     # the locked resonance, so x1 + x2 = 2/(1+mu); Vieta gives the tuning
-    f_opt = [s for s in sp.solve(sp.Eq(-a1 / a2, 2 / (1 + MU)), F) if s.is_positive is not False][0]
+    f_opt = next(s for s in sp.solve(sp.Eq(-a1 / a2, 2 / (1 + MU)), F) if s.is_positive is not False)
     xs = sp.solve(quad.as_expr().subs(F, f_opt), X)
     A = (F**2 - X) ** 2
     B = 4 * X

@@ -22,7 +22,7 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
-from ._removal import pole_at_infinity, pole_at_zero, remove_axis_poles
+from ._removal import pole_at_infinity, pole_at_zero, remainder_is_zero, remove_axis_poles
 from ._util import P, as_symbol, rational_function
 from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
 from .positive_real import real_part_on_axis, require_positive_real
@@ -85,7 +85,7 @@ def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     """
     Z = _reactance(Z, p)
     parts, rest = remove_axis_poles(Z, p, "Z")
-    if rest != 0:  # pragma: no cover - a reactance function is exhausted by its poles
+    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover - exhausted by its poles
         raise ParameterError(f"Foster expansion left a remainder {rest}")
     return _join(parts, Series)
 
@@ -107,7 +107,7 @@ def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     """
     Z = _reactance(Z, p)
     parts, rest = remove_axis_poles(sp.cancel(1 / Z), p, "Y")
-    if rest != 0:  # pragma: no cover
+    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover
         raise ParameterError(f"Foster expansion left a remainder {rest}")
     return _join(parts, Parallel)
 

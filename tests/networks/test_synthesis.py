@@ -48,8 +48,14 @@ def _values(net) -> list:
 
 
 def _check(net, Z):
-    diff = sp.together(net.impedance(p) - Z)
-    assert (sp.cancel(diff, extension=True) if diff.has(sp.sqrt(2).func) else sp.cancel(diff)) == 0
+    if any(sp.sympify(v).has(sp.CRootOf) for v in _values(net)):
+        # poles at roots of an irreducible cubic in p²: exact CRootOf values, checked at 40 digits
+        for z in (sp.Rational(3, 7) + sp.I, sp.Rational(11, 5), 2 * sp.I + sp.Rational(1, 9)):
+            a, b = sp.N(net.impedance(p).subs(p, z), 40), sp.N(Z.subs(p, z), 40)
+            assert abs(a - b) <= sp.Float(10) ** -30 * abs(b)
+    else:
+        diff = sp.together(net.impedance(p) - Z)
+        assert (sp.cancel(diff, extension=True) if diff.has(sp.sqrt(2).func) else sp.cancel(diff)) == 0
     assert all(sp.N(v, 30) > 0 for v in _values(net))
 
 
@@ -66,7 +72,8 @@ def foster_sums(draw):
     return sp.cancel(Z)
 
 
-@SETTINGS
+@pytest.mark.slow
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(foster_sums())
 def test_foster_and_cauer_forms_reproduce_reactance_functions(Z):
     """Foster I/II and Cauer I/II realise every reactance function exactly with positive L and C."""
@@ -165,7 +172,7 @@ def test_positive_real_reports_name_the_failed_condition():
         (p + 1) / (p - 1): "pole in the right half-plane",
         (p**2 + 1) / (p**2 + p + 4): "negative real part on the imaginary axis",
         (p**2 + 2) / (p * (p**2 + 1)): "residue at an imaginary-axis pole",
-        1 / (p**2 + 1) ** 2 * (p**3 + p): "multiple pole on the imaginary axis",
+        (p**3 + 2 * p) / (p**2 + 1) ** 2: "multiple pole on the imaginary axis",
         1 / (p**2 + 1): "degree difference",
     }
     for Z, reason in cases.items():
