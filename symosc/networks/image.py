@@ -119,10 +119,12 @@ def image_parameters(four_pole: FourPole, at: Any) -> ImageParameters:
     if a < -tol or (abs(a) <= tol and W.real < 0):
         W = -W
         egx = A11 * q + A21 * W
-    emgy = A11 * q - A21 * W
     gx = mpmath.log(egx)
-    gy = -mpmath.log(emgy)
-    return ImageParameters(W, q, W / q, W * q, gx, gy, (gx + gy) / 2, (gx - gy) / 2)
+    # e^{2 delta} = det A (8.299): take delta from the principal logarithm, so that a reciprocal network has
+    # delta = 0 and the phase of a stop band (b = pi) stays in g, not in delta
+    delta = mpmath.log(A11 * A22 - A12 * A21) / 2
+    g = gx - delta
+    return ImageParameters(W, q, W / q, W * q, gx, g - delta, g, delta)
 
 
 @dataclass(frozen=True)

@@ -186,7 +186,7 @@ def test_positive_real_reports_name_the_failed_condition():
 
 
 def test_non_positive_real_target_is_rejected():
-    with pytest.raises(ParameterError, match="not positive real .*right half-plane"):
+    with pytest.raises(ParameterError, match=r"not positive real .*right half-plane"):
         brune_synthesis((p + 1) / (p - 1), p)
     with pytest.raises(ParameterError, match="not a reactance function"):
         foster_first((p + 1) / p, p)
