@@ -21,8 +21,8 @@ from symosc.networks import (
     lattice_from_transmission,
     m_derived_section,
     matching_l_pad,
-    shunt_element,
     series_element,
+    shunt_element,
     working_loss,
 )
 
