@@ -38,3 +38,17 @@ def test_bad_input():
         to_electrical(Spring(1) | Damper(2), "force-speed")
     with pytest.raises(ParameterError, match="same length"):
         chain_driving_point([1, 2], [1])
+
+
+def test_results_pickle_and_print():
+    """Result objects are picklable and print through SymPy's printers."""
+    import pickle
+
+    from symosc.networks import Absorber, Capacitor, Inductor, Resistor, brune_synthesis, t_section
+
+    net = brune_synthesis((p**2 + p + 1) / (p**2 + p + 4), p)
+    for obj in (net, t_section(1, p, 2), Absorber(0.1, 0.9, 0.1), Resistor(1) + (Inductor(2) | Capacitor(3))):
+        assert pickle.loads(pickle.dumps(obj)) == obj
+    assert sp.sstr(t_section(1, p, 2)).startswith("FourPole(")
+    assert sp.latex(Resistor(1) + Inductor(2)) == sp.latex(2 * p + 1)
+    assert sp.latex(t_section(1, p, 2)).startswith(r"\mathbf{A} = ")

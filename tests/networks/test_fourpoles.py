@@ -318,3 +318,24 @@ def test_bad_input():
         convert_parameters(sp.eye(2), "S", "Z")
     with pytest.raises(ParameterError, match="positive integer"):
         chain_power(sp.eye(2), 0)
+
+
+def test_boundary_problem_iterative_form():
+    """Eq. (8.407): Iy = (Z'+Z'') E e^{-delta} / [(Zr+Z')(ZH+Z'')(e^s - r'r'' e^{-s})] for a cascade of 5 Π sections."""
+    sec = pi_section(2 + p, 1 + 3 * p, 1 / p)
+    Zr, ZH, E = sp.Rational(13, 10), sp.Rational(3, 5), 2
+    for omega in (sp.Rational(2, 5), sp.Rational(17, 10)):
+        z = 1j * float(omega)
+        it = iterative_parameters(sec, at=z)
+        s5, d5 = 5 * it.s, 5 * it.delta  # iterative parameters add along a cascade (8.403)-(8.405)
+        r1 = (Zr - it.Z2) / (Zr + it.Z1)
+        r2 = (ZH - it.Z1) / (ZH + it.Z2)
+        iy_book = (
+            (it.Z1 + it.Z2)
+            * E
+            * mpmath.exp(-d5)
+            / ((Zr + it.Z1) * (ZH + it.Z2) * (mpmath.exp(s5) - r1 * r2 * mpmath.exp(-s5)))
+        )
+        chain = cascade(*[sec.subs(p, sp.I * omega)] * 5)
+        iy = complex(sp.N(terminated_response(chain, E, Zr, ZH).Iy))
+        assert abs(iy - complex(iy_book)) < 1e-12 * abs(iy)
