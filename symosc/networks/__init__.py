@@ -22,6 +22,7 @@ from .analogues import (
     to_electrical,
     to_mechanical,
 )
+from .bott_duffin import bott_duffin_synthesis
 from .brune import brune_synthesis, minimum_real_part
 from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
 from .conversions import PARAMETER_KINDS, convert_parameters
@@ -110,6 +111,7 @@ __all__ = [
     "absorber_optimum",
     "amplification_squared",
     "biquadratic_is_positive_real",
+    "bott_duffin_synthesis",
     "bridged_t_section",
     "brune_synthesis",
     "brune_test",

@@ -199,3 +199,19 @@ def test_m_function_example_1():
     Z = (2 * p + 3) / (p + 4)  # min(4/1, 3/2) = 3/2
     assert is_m_function(Z, sp.Rational(14, 10), p)
     assert not is_m_function(Z, sp.Rational(16, 10), p)
+
+
+@pytest.mark.parametrize(
+    "Z",
+    [
+        (p**2 + p + 1) / (p**2 + p + 4),  # Z(i sqrt 2) = i sqrt(2)/2: inductive case, k = 1
+        (p**2 + p + 4) / (p**2 + p + 1),  # capacitive case: the dual step on 1/Z
+    ],
+)
+def test_bott_duffin_transformerless(Z):
+    """§9.27, (9.408)-(9.423): R, L, C only, all positive, impedance equal to Z exactly."""
+    from symosc.networks import bott_duffin_synthesis
+
+    net = bott_duffin_synthesis(Z, p)
+    _check(net, Z)
+    assert not any(isinstance(e, BruneSection) for e in net.elements())
