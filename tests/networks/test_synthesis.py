@@ -73,7 +73,7 @@ def foster_sums(draw):
 
 
 @pytest.mark.slow
-@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=5, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(foster_sums())
 def test_foster_and_cauer_forms_reproduce_reactance_functions(Z):
     """Foster I/II and Cauer I/II realise every reactance function exactly with positive L and C."""
@@ -127,7 +127,7 @@ def brune_targets(draw):
     return Z
 
 
-@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 @given(brune_targets())
 def test_brune_synthesis_reproduces_target_exactly(Z):
     """Brune's procedure terminates with positive elements and the network's impedance equals Z exactly."""
@@ -135,7 +135,7 @@ def test_brune_synthesis_reproduces_target_exactly(Z):
     _check(brune_synthesis(Z, p), Z)
 
 
-@SETTINGS
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(rlc_loads(), rlc_loads())
 def test_brune_synthesis_of_rlc_networks(a, b):
     """Impedances of random RLC networks (no Brune section needed or not) are resynthesised exactly."""
