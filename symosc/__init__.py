@@ -47,6 +47,7 @@ def __getattr__(name: str):
         "identification",
         "linear",
         "plotting",
+        "networks",
         "cli",
         "scene",
     }:
