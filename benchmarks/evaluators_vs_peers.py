@@ -191,10 +191,19 @@ def build_numba(case: Case):
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--build-only", action="store_true", help="only symosc's build times (numpy and c backends)")
     ns = ap.parse_args()
     sizes = (3, 6) if ns.quick else (3, 6, 10, 20)
     workdir = tempfile.mkdtemp(prefix="symosc_bench_")
     os.environ["SYMOSC_CACHE_DIR"] = os.path.join(workdir, "cache")  # first C builds are really first builds
+    if ns.build_only:
+        print(f"{'n':>3}{'numpy first s':>15}{'c first s':>11}{'c cached ms':>13}")
+        for n in sizes:
+            case = Case(n)
+            numpy_first = build_symosc(case, "numpy")[2]
+            _, _, c_first, c_cached = build_symosc(case, "c")
+            print(f"{n:3d}{numpy_first:15.2f}{c_first:11.2f}{c_cached * 1e3:13.1f}")
+        return
     names = ["symosc numpy", "symosc c", "sympy lambdify(cse)", "symengine llvm", "pydy cython", "numba lambdify"]
     print(f"machine: {os.cpu_count()} cores, shared with other jobs (timings are noisy; ratios are from one run)")
     e2e_case = None

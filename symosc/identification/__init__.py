@@ -51,10 +51,12 @@ from .reconstruction import (
 from .refine import refine
 from .sensitivity import JacobianResult, jacobian, sensitivity
 from .simulator import StandRecord, simulate_stand, stand_system
+from .spin_up import CentralGyration, central_gyration, motor_spin_up_brake
 from .two_stage import SecondOrderModel, two_stage
 
 __all__ = [
     "ApplicabilityCheck",
+    "CentralGyration",
     "CramerRaoBound",
     "DampingPerturbation",
     "ErrorMap",
@@ -75,6 +77,7 @@ __all__ = [
     "add_noise",
     "applicability",
     "assemble_tensor",
+    "central_gyration",
     "central_identity",
     "check_distinct",
     "cramer_rao_bound",
@@ -93,6 +96,7 @@ __all__ = [
     "matrix_pencil",
     "min_time_1dof",
     "monte_carlo",
+    "motor_spin_up_brake",
     "noise_sigma",
     "physical_pendulum",
     "prony",

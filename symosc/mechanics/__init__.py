@@ -4,6 +4,7 @@ Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 >>> from symosc.mechanics import LagrangianSystem, LinearModel, FirstOrderSystem, HamiltonianSystem
 """
 
+from ._quadratic import ComplexModes, complex_modes
 from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
 from .circuits import LoopEquations, loop_equations
 from .constraints import ConstrainedForm, MinimalForm
@@ -33,6 +34,7 @@ from .variational import (
 __all__ = [
     "ActionVariable",
     "CanonicalTransformation",
+    "ComplexModes",
     "ConstrainedForm",
     "FirstOrderReduction",
     "FirstOrderSystem",
@@ -51,6 +53,7 @@ __all__ = [
     "action_variable",
     "action_variable_numeric",
     "canonical_transformation",
+    "complex_modes",
     "decompose_forces",
     "electromechanical_system",
     "governor_statics",

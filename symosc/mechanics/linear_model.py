@@ -288,6 +288,38 @@ class LinearModel(SymPyPrintable):
             self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, backend=backend
         )
 
+    # ------------------------------------------------------------------ damped/gyroscopic and periodic analysis
+    def complex_modes(self, values: Mapping[Any, Any]) -> Any:
+        """Roots ``s`` and complex mode shapes of ``(M s**2 + D s + K0) phi = 0``, damping and gyroscopic terms kept.
+
+        Returns a :class:`~symosc.mechanics._quadratic.ComplexModes`; see
+        :func:`symosc.mechanics._quadratic.complex_modes` for the method (companion pencil, QZ).
+
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> lin.complex_modes({"m1": 1, "l1": 1, "g": 4}).frequencies.round(12).tolist()
+        [2.0]
+        """
+        from ._quadratic import model_complex_modes
+
+        return model_complex_modes(self, values)
+
+    def monodromy(self, values: Mapping[Any, Any], **kwargs: Any) -> Any:
+        """Floquet analysis of ``M q'' + D q' + (K0 + K1 cos(p t)) q = 0`` over one period ``2 pi / p``.
+
+        Builds ``x' = A(t) x`` with ``x = (q, q')`` and calls :func:`symosc.periodic.monodromy` (keyword
+        arguments are passed on; for ``D = 0`` the half-period reversor is used).  Returns its
+        :class:`~symosc.periodic.FloquetResult`.
+
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1, inverted=True, pivot="vertical").linearize()
+        >>> lin.monodromy({"m1": 1, "l1": 1, "g": 9.81, "a": 0.02, "p": 300}).stability   # Kapitza
+        'stable'
+        """
+        from ._quadratic import periodic_monodromy
+
+        return periodic_monodromy(self, values, **kwargs)
+
 
 def _frequencies(lam: np.ndarray) -> np.ndarray:
     scale = np.max(np.abs(lam), axis=-1, keepdims=True)

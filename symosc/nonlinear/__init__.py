@@ -21,6 +21,7 @@ from .averaging_ndof import (
     dry_friction_ratio,
     dry_friction_torus_average,
 )
+from .backlash_servo import BacklashServoRun, simulate_backlash_servo
 from .conservative import Equilibrium, classify_equilibrium, libration_period, rotation_period
 from .delay import (
     DelayRoots,
@@ -32,6 +33,10 @@ from .delay import (
     quasi_polynomial,
     quasi_polynomial_roots,
 )
+from .design_linearization import DesignLinearization, design_amplitude_linearization
+from .flywheel_series import FlywheelSpeedSeries, flywheel_speed_series
+from .forced_poincare import ForcedPeriodicSolution, forced_periodic_solution
+from .gyro_pendulum import GyroPendulumModes, gyro_pendulum_modes
 from .harmonic_linearization import (
     HarmonicCycle,
     HarmonicLinearization,
@@ -54,6 +59,7 @@ from .high_frequency import (
     vibrational_averaging_of,
     vibrational_stiffness,
 )
+from .implicit_point_map import ImplicitMapCycle, implicit_map_cycle
 from .lindstedt import LindstedtSeries, lindstedt
 from .piecewise import (
     CoulombMotion,
@@ -65,8 +71,10 @@ from .piecewise import (
     quadratic_drag_half_swing_times,
 )
 from .poincare import LimitCycleSeries, limit_cycle
+from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
 from .point_map import PointMapFixedPoint, point_map_fixed_point
+from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
 from .special_systems import (
     ClockEscapement,
     FlywheelDesign,
@@ -88,28 +96,37 @@ from .validate import (
 
 __all__ = [
     "AveragedEquations",
+    "BacklashServoRun",
     "CharacteristicExponentSeries",
     "ClockEscapement",
     "CoulombMotion",
     "DelayRoots",
+    "DesignLinearization",
     "EpsSeries",
     "Equilibrium",
     "FastAveragedSystem",
     "FlywheelDesign",
+    "FlywheelSpeedSeries",
     "Fold",
+    "ForcedPeriodicSolution",
     "FrequencyResponse",
+    "GyroPendulumModes",
     "HalfSwingMap",
     "HarmonicCycle",
     "HarmonicLinearization",
+    "ImplicitMapCycle",
     "LimitCycleSeries",
     "LindstedtSeries",
     "LinearizationBoundary",
     "MultiAveragedEquations",
     "NDofPeriodicSolution",
     "NumericCycle",
+    "OperatorCycle",
+    "PoincareOperatorSystem",
     "PointMapFixedPoint",
     "QuasiPolynomial",
     "RadiusEstimate",
+    "RelayRegulatorBoundary",
     "SeriesValidation",
     "StationaryRegime",
     "SteadyState",
@@ -127,11 +144,16 @@ __all__ = [
     "coulomb_oscillator",
     "count_roots",
     "describing_function",
+    "design_amplitude_linearization",
     "dry_friction_ratio",
     "dry_friction_torus_average",
     "fast_averaged_system",
+    "flywheel_speed_series",
+    "forced_periodic_solution",
+    "gyro_pendulum_modes",
     "half_swing_map",
     "harmonic_linearization",
+    "implicit_map_cycle",
     "libration_period",
     "limit_cycle",
     "lindstedt",
@@ -141,6 +163,7 @@ __all__ = [
     "numeric_orbit",
     "numeric_period",
     "periodic_solution_ndof",
+    "poincare_operator_system",
     "point_map_fixed_point",
     "quadratic_drag_eta",
     "quadratic_drag_eta_series",
@@ -148,11 +171,13 @@ __all__ = [
     "quasi_polynomial",
     "quasi_polynomial_roots",
     "radinger_flywheel",
+    "relay_regulator_boundary",
     "rotation_period",
     "self_oscillations",
     "servo_characteristic",
     "servo_equations",
     "servo_region",
+    "simulate_backlash_servo",
     "step_valve_generator",
     "two_nonlinearity_cycles",
     "validate_limit_cycle",

@@ -10,10 +10,17 @@ Arithmetic modes (:class:`_Arith` subclasses):
 ``exact``  numerators are Python ``int`` with one common ``int`` denominator per series (about 50x faster than
            :class:`fractions.Fraction` entries); the products of integer numerators run on FLINT's ``fmpz_poly``
            multiplication when python-flint is installed (``pip install symosc[exact]``), else on
-           :func:`numpy.convolve` -- the same integers either way;
+           :func:`numpy.convolve` -- the same integers either way.  A Cauchy sum is accumulated on one common
+           denominator and reduced once; series with only odd (or only even) harmonics are multiplied as
+           polynomials in ``z**2`` (half the length);
 ``fixed``  numerators are Python ``int`` with the implicit denominator ``2**prec`` (the mpmath option: binary
-           fixed point, converted to ``mpmath.mpf`` on output);
-``float``  float64 arrays;
+           fixed point, converted to ``mpmath.mpf`` on output); a Cauchy sum is formed exactly and rounded once;
+``float``  float64 arrays; the Cauchy sums ``sum_i a_i * b_(m-i)`` are formed on a sampling grid (one batched real
+           FFT per side, products summed pointwise, one FFT back) and the coefficients that vanish by symmetry
+           (odd/even harmonics, cosine/sine parts) are set to exact zeros.  The FFT's rounding error is relative to
+           the largest coefficient, so the small high-order coefficients are less accurate than with direct
+           convolution (van der Pol, order 100: 1e-11 relative up to order 20, ~1e-5 at the last orders, against
+           ~1e-12 and ~1e-6 before); use ``mpmath`` arithmetic for accurate high-order coefficients;
 ``ring``   elements of a SymPy polynomial ring over QQ (symbolic parameters such as the amplitude ``A``).
 """
 
@@ -26,6 +33,13 @@ from typing import Any
 
 import mpmath
 import numpy as np
+
+from ._fourier_products import (
+    _flint_dot,
+    _float_kind,
+    _int_products_flint,
+    _object_array,
+)
 
 
 @dataclass
@@ -56,73 +70,6 @@ def _fmpz_poly() -> Any:
             fmpz_poly = False
         _FMPZ_POLY = fmpz_poly
     return _FMPZ_POLY
-
-
-def _object_array(values: list) -> np.ndarray:
-    """Python ints in an object array (never converted to a fixed-width integer type)."""
-    out = np.empty(len(values), dtype=object)
-    out[:] = values
-    return out
-
-
-def _int_list(p: Any, n: int) -> list:
-    out = [int(c) for c in p.coeffs()]
-    return out + [0] * (n - len(out))
-
-
-def _int_products_flint(P: Any, ac, as_, bc, bs, na: int, nb: int) -> tuple[list, list, list, list]:
-    """The n + m and n - m convolutions of integer numerators by FLINT (6 products, Karatsuba-style).
-
-    Returns (cc - ss, sc + cs, dcc + dss, dsc - dcs) as int lists of length na + nb + 1, the same integers as the
-    eight :func:`numpy.convolve` calls of :meth:`_Arith._products`.
-    """
-    a_c, a_s = P(ac.tolist()), P(as_.tolist())
-    b_c, b_s = P(bc.tolist()), P(bs.tolist())
-    r_c, r_s = P(bc[::-1].tolist()), P(bs[::-1].tolist())
-    a_sum = a_c + a_s
-    p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * (b_c + b_s)
-    p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * (r_c - r_s)
-    n = na + nb + 1
-    return (
-        _int_list(p1 - p2, n),
-        _int_list(p3 - p1 - p2, n),
-        _int_list(p4 + p5, n),
-        _int_list(p6 - p4 + p5, n),
-    )
-
-
-def _forward_polys(P: Any, t: Trig) -> tuple:
-    """(cos, sin, cos + sin) numerators of ``t`` as ``fmpz_poly`` (cached on ``t``)."""
-    cache = t.polys if t.polys is not None else {}
-    if "f" not in cache:
-        c, s = P(t.cos.tolist()), P(t.sin.tolist())
-        cache["f"] = (c, s, c + s)
-        t.polys = cache
-    return cache["f"]
-
-
-def _reversed_polys(P: Any, t: Trig, n: int) -> tuple:
-    """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms."""
-    cache = t.polys if t.polys is not None else {}
-    key = ("r", n)
-    if key not in cache:
-        shift = n - (len(t.cos) - 1)
-        pad = [0] * shift
-        rc, rs = P(pad + t.cos[::-1].tolist()), P(pad + t.sin[::-1].tolist())
-        c, s, _ = _forward_polys(P, t)
-        cache[key] = (rc, rs, rc - rs, c, s, c + s)
-        t.polys = cache
-    return cache[key]
-
-
-def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
-    """Add the n - m terms (``dc``/``ds`` index j + nb holds n - m = j) into the n + m sums, in place."""
-    out_c[: na + 1] = out_c[: na + 1] + dc[nb : nb + na + 1]
-    out_s[: na + 1] = out_s[: na + 1] + ds[nb : nb + na + 1]
-    if nb > 0:
-        out_c[1 : nb + 1] = out_c[1 : nb + 1] + dc[:nb][::-1]
-        out_s[1 : nb + 1] = out_s[1 : nb + 1] - ds[:nb][::-1]
-    out_s[0] = 0
 
 
 def _pad(a: np.ndarray, n: int, zero: Any) -> np.ndarray:
@@ -251,6 +198,13 @@ class _Arith:
             acc = self.add(acc, self.mul(a, b))
         return acc
 
+    def lincomb(self, scalars: list[Any], series: list[Trig]) -> Trig:
+        """``sum s * t`` over scalars and series (the Cauchy products with a scalar series)."""
+        acc = self.scale(series[0], scalars[0])
+        for c, t in zip(scalars[1:], series[1:], strict=True):
+            acc = self.add(acc, self.scale(t, c))
+        return acc
+
     def solve_forced(self, r: Trig) -> Trig:
         """Periodic solution of ``x'' + x = r`` with the n = 1 harmonics of ``r`` ignored (and set to 0)."""
         raise NotImplementedError
@@ -347,25 +301,25 @@ class ExactArith(_Arith):
             return self._dot_numpy(pairs)
         dens = [2 * a.den * b.den for a, b in pairs]
         den = math.lcm(*dens)
-        na = max(len(a.cos) for a, _ in pairs) - 1
-        nb = max(len(b.cos) for _, b in pairs) - 1
-        zero = P(0)
-        acc = [zero, zero, zero, zero]
-        for (a, b), d in zip(pairs, dens, strict=True):
-            a_c, a_s, a_sum = _forward_polys(P, a)
-            r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb)
-            f = den // d
-            p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
-            p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
-            acc[0] += (p1 - p2) * f
-            acc[1] += (p3 - p1 - p2) * f
-            acc[2] += (p4 + p5) * f
-            acc[3] += (p6 - p4 + p5) * f
-        n = na + nb
-        out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
-        _fold_differences(out_c, out_s, dc, ds, na, nb)
-        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
-        return self._norm(Trig(out_c[:top].copy(), out_s[:top].copy(), den))
+        out_c, out_s = _flint_dot(P, pairs, [den // d for d in dens])
+        return self._norm(Trig(out_c, out_s, den))
+
+    def lincomb(self, scalars: list[Fraction], series: list[Trig]) -> Trig:
+        """``sum s * t`` on one common denominator, reduced once."""
+        scalars = [Fraction(c) for c in scalars]
+        dens = [c.denominator * t.den for c, t in zip(scalars, series, strict=True)]
+        den = math.lcm(*dens)
+        n = max(len(t.cos) for t in series)
+        out_c = np.zeros(n, dtype=object)
+        out_s = np.zeros(n, dtype=object)
+        for c, t, d in zip(scalars, series, dens, strict=True):
+            if c.numerator == 0:
+                continue
+            f = c.numerator * (den // d)
+            k = len(t.cos)
+            out_c[:k] += t.cos * f
+            out_s[:k] += t.sin * f
+        return self._norm(Trig(out_c, out_s, den))
 
     def _dot_numpy(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
         dens = [2 * a.den * b.den for a, b in pairs]
@@ -437,6 +391,21 @@ class FixedArith(_Arith):
         c, s = self._products(a, b)
         return Trig(_shift_arr(c, self.prec + 1), _shift_arr(s, self.prec + 1), a.den)
 
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` with the products summed exactly and rounded once."""
+        P = _fmpz_poly()
+        if P:
+            c, s = _flint_dot(P, pairs, [1] * len(pairs))
+        else:
+            prods = [self._products(a, b) for a, b in pairs]
+            n = max(len(pc) for pc, _ in prods)
+            c = np.zeros(n, dtype=object)
+            s = np.zeros(n, dtype=object)
+            for pc, ps in prods:
+                c[: len(pc)] += pc
+                s[: len(ps)] += ps
+        return Trig(_shift_arr(c, self.prec + 1), _shift_arr(s, self.prec + 1), pairs[0][0].den)
+
     def solve_forced(self, r: Trig) -> Trig:
         n = len(r.cos)
         c = r.cos.copy()
@@ -496,6 +465,39 @@ class FloatArith(_Arith):
         c, s = self._products(a, b)
         return Trig(0.5 * c, 0.5 * s, 1)
 
+    def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
+        """``sum a * b`` by sampling: one batched real FFT per side, products summed on the grid, one FFT back."""
+        na = max(len(a.cos) for a, _ in pairs)
+        nb = max(len(b.cos) for _, b in pairs)
+        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)
+        size = 1 << (2 * top).bit_length()  # more grid points than twice the highest harmonic: no aliasing
+        k = len(pairs)
+        ya = np.zeros((k, na), dtype=complex)
+        yb = np.zeros((k, nb), dtype=complex)
+        for i, (a, b) in enumerate(pairs):
+            ya[i, : len(a.cos)] = a.cos - 1j * a.sin
+            yb[i, : len(b.cos)] = b.cos - 1j * b.sin
+        ya[:, 1:] *= 0.5
+        yb[:, 1:] *= 0.5
+        grid = np.einsum("ij,ij->j", np.fft.irfft(ya, size, axis=1), np.fft.irfft(yb, size, axis=1))
+        spec = np.fft.rfft(grid)[:top] * size
+        c = spec.real
+        c[1:] *= 2.0
+        s = -2.0 * spec.imag
+        s[0] = 0.0
+        # coefficients that vanish by symmetry are set to exact zeros (no rounding noise from the transform)
+        kinds = {_float_kind(a, b) for a, b in pairs} - {"0"}
+        if len(kinds) == 1:
+            kind, parity = kinds.pop()
+            if kind == "c":
+                s[:] = 0.0
+            elif kind == "s":
+                c[:] = 0.0
+            if parity is not None:
+                c[1 - parity :: 2] = 0.0
+                s[1 - parity :: 2] = 0.0
+        return Trig(c, s, 1)
+
     def solve_forced(self, r: Trig) -> Trig:
         k = np.arange(len(r.cos), dtype=float)
         d = 1.0 - k * k
@@ -513,6 +515,7 @@ class FloatArith(_Arith):
         return float(arr[n]) if n < len(arr) else 0.0
 
     def _set(self, t: Trig, kind: str, n: int, value: float) -> None:
+        t.polys = None
         (t.cos if kind == "c" else t.sin)[n] = value
 
 

@@ -156,7 +156,12 @@ class _Tables:
         self.one = ar.monomial("c", 0, ar.scalar(1))
 
     def _conv(self, a: list[Trig], b: list[Trig], m: int) -> Trig:
-        return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
+        if a is not b or m == 0:
+            return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
+        # a square: the pairs (i, m - i) and (m - i, i) give the same product
+        ar = self.ar
+        half = ar.scale_int(ar.dot([(a[i], b[m - i]) for i in range((m + 1) // 2)]), 2)
+        return ar.add(half, ar.mul(a[m // 2], a[m // 2])) if m % 2 == 0 else half
 
     def push(self, xm: Trig, vm: Trig) -> None:
         """Append the coefficients of order m = len(X[1]) given x_m and v_m."""
@@ -237,13 +242,11 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
     for k in range(1, order + 2):
         m = k - 1
         # v_m = sum_i w_i x'_{m-i}
-        vm = ar.new(0)
-        for i in range(0, m + 1):
-            vm = ar.add(vm, ar.scale(ar.deriv(x[m - i]), w[i]))
+        vm = ar.deriv(ar.lincomb(w[: m + 1], x[m::-1]))
         tables.push(x[m], vm)
         R = _combine(ar, tables, coeffs, m)
-        for j in range(1, k):
-            R = ar.sub(R, ar.scale(ar.deriv(ar.deriv(x[k - j])), s[j]))
+        if k > 1:
+            R = ar.sub(R, ar.deriv(ar.deriv(ar.lincomb(s[1:k], x[k - 1 : 0 : -1]))))
         if k == 1:
             sk = _neg(ar, ar.coeff(R, "c", 1))
             var = tables.variations()

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import functools
+import math
 import warnings
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 import mpmath
+import mpmath.libmp as mlib
 import numpy as np
 import sympy as sp
 
@@ -18,6 +20,8 @@ from ..errors import SeriesWarning
 __all__ = ["EpsSeries", "RadiusEstimate"]
 
 _ONE = sp.Integer(1)
+_PREC17 = mlib.libmpf.dps_to_prec(17)
+_FLOAT_ZERO = sp.Float(0.0, 17)
 
 
 def to_sympy_number(value: Any, dps: int = 17) -> sp.Expr:
@@ -27,7 +31,12 @@ def to_sympy_number(value: Any, dps: int = 17) -> sp.Expr:
     if isinstance(value, mpmath.mpf):
         return sp.Float(value, dps)
     if isinstance(value, float | np.floating):
-        return sp.Float(float(value), 17)
+        value = float(value)
+        if value == 0.0:
+            return _FLOAT_ZERO
+        if math.isfinite(value):  # what Float(value, 17) builds, without its generic input handling
+            return sp.Float._new(mlib.from_float(value, _PREC17, mlib.round_nearest), _PREC17, zero=False)
+        return sp.Float(value, 17)
     return sp.sympify(value)
 
 

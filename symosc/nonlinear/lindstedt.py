@@ -141,8 +141,8 @@ def _lindstedt_raw(coeffs: dict[int, Any], ar: _Arith, order: int) -> tuple[list
             t = (const if m == 0 else None) if p == 0 else X[p][m]
             if t is not None:
                 R = ar.add(R, ar.scale(t, c))
-        for j in range(1, k):
-            R = ar.sub(R, ar.scale(ar.deriv(ar.deriv(y[k - j])), s[j]))
+        if k > 1:
+            R = ar.sub(R, ar.deriv(ar.deriv(ar.lincomb(s[1:k], y[k - 1 : 0 : -1]))))
         sk = -ar.coeff(R, "c", 1)
         s.append(sk)
         R = ar.add_coeff(R, "c", 1, sk)

@@ -207,7 +207,8 @@ def backlash_critical_gap(z: float, f: float, variant: str = "follower") -> floa
     ``variant="motor"``: friction on the motor, ``k_c = -f L(-(1 - f) M2(-z/(1 - f))/f)`` (5.189), zero for f >= 1.
     ``L(x) = x + ln|1 - x|`` and ``M2`` is its inverse on (0, 1).  ``f = 0`` gives ``M2(-z)`` (5.187).  A gap above
     ``k_c`` suppresses the self-oscillation.  The printed formulas are damaged; these satisfy every limit the text
-    states, but were not checked against a simulation of the (equally damaged) model.
+    states and agree with a simulation of the piecewise equations (:func:`simulate_backlash_servo`: at 0.9 k_c a
+    self-oscillation persists, at 1.1 k_c every start comes to rest, for both variants).
 
     >>> round(backlash_critical_gap(1.0, 0.0), 6) == round(backlash_critical_gap(1.0, 1e-12), 6)
     True

@@ -10,7 +10,7 @@ from .ince_strutt import (
     modified_ince_strutt,
     series_boundary,
 )
-from .mathieu import MathieuValues, mathieu_a, mathieu_b, mathieu_characteristic
+from .mathieu import MathieuValues, mathieu_a, mathieu_b, mathieu_characteristic, mathieu_kernel
 from .mathieu_series import (
     SeriesValue,
     mathieu_series_a,
@@ -34,6 +34,7 @@ __all__ = [
     "mathieu_a",
     "mathieu_b",
     "mathieu_characteristic",
+    "mathieu_kernel",
     "mathieu_series_a",
     "mathieu_series_b",
     "mathieu_series_radius",

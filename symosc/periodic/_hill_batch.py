@@ -1,8 +1,11 @@
-"""Vectorised refinement and verification of Mathieu characteristic values (private).
+"""Vectorised refinement and verification of Mathieu characteristic values: the NumPy kernel (private).
 
-A seed value ``x`` (SciPy's ``mathieu_a/b``, never trusted) is turned into a verified float64 value by one step of
-Rayleigh-quotient iteration on the Hill matrix of :mod:`symosc.periodic._hill`, computed from the *twisted*
-factorisation of ``T - x I`` (Parlett & Dhillon 1997, "Fernando's solution to Wilkinson's problem"):
+This is the fallback when no C compiler is available; :mod:`symosc.periodic._hill_c` runs the same algorithm in C
+(plus bisection for seeds on a wrong branch).  A seed value ``x`` (SciPy's ``mathieu_a/b`` or, for b_n nearly
+degenerate with a neighbour, that neighbour's value; never trusted) is turned into a verified float64 value by
+steps (one for a seed accurate to rounding, at most ``MAX_STEPS``) of Rayleigh-quotient iteration on the Hill
+matrix of :mod:`symosc.periodic._hill`, computed from the *twisted* factorisation of ``T - x I`` (Parlett &
+Dhillon 1997, "Fernando's solution to Wilkinson's problem"):
 
 * forward pivots ``t_j = (d_j - x) - e_{j-1}^2 / t_{j-1}`` and backward pivots ``u_j = (d_j - x) - e_j^2 / u_{j+1}``;
 * twist ``gamma_j = t_j - e_j^2 / u_{j+1}`` and twist index ``m = argmin |gamma_j|`` (largest eigenvector entry);
@@ -29,8 +32,12 @@ import numpy as np
 _EPS = float(np.finfo(float).eps)
 _TINY = float(np.finfo(float).tiny)
 _SQRT2 = math.sqrt(2.0)
-#: a seed further than this from an eigenvalue (relative residual) is not refined here
+#: a seed further than this from an eigenvalue (residual relative to max(1, |seed|)) is not refined here
 _RHO_MAX = 1e-3
+#: Rayleigh-quotient steps at most (one for a seed accurate to rounding)
+MAX_STEPS = 4
+#: no further step once rho^2 (a bound on the error of the Rayleigh quotient) is below _STOP min(tol, 1e-13)
+_STOP = 1e-3
 
 
 def batch_size(k: int, q: float) -> int:
@@ -44,10 +51,33 @@ def _squares(offset: int, size: int) -> tuple[float, ...]:
     return tuple(float((2 * j + offset) ** 2) for j in range(size))
 
 
-def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: float, size: int):
-    """(value, error_estimate, accepted) for one point; the same operations as :func:`refine_batch`."""
+def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: float, size: int, tol: float = 1.0):
+    """(value, error_estimate, accepted) for one point; the same operations as :func:`refine_batch`.
+
+    Up to ``MAX_STEPS`` Rayleigh-quotient steps (one suffices for a seed accurate to rounding; a neighbour's value
+    used as a seed for a nearly degenerate pair needs two), then the index, truncation and error checks (the error
+    estimate must be at most ``tol`` times max(1, |value|)).
+    """
     if not math.isfinite(x):
         return math.nan, math.inf, False
+    for _ in range(MAX_STEPS):
+        out = _step_scalar(offset, q_sign, sqrt2, q, x, size)
+        if out is None:
+            return math.nan, math.inf, False
+        value, scale, rho2, trunc, index = out
+        if not rho2 <= _RHO_MAX * _RHO_MAX * max(1.0, abs(x)) ** 2:
+            return math.nan, math.inf, False
+        if rho2 <= _STOP * min(tol, 1e-13) * max(1.0, abs(value)):
+            break
+        x = value
+    err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
+    mag = max(1.0, abs(value))
+    ok = math.isfinite(value) and math.isfinite(err) and index == k and trunc <= 1e-3 * _EPS * mag and err <= tol * mag
+    return (value, err, True) if ok else (math.nan, math.inf, False)
+
+
+def _step_scalar(offset: int, q_sign: int, sqrt2: bool, q: float, x: float, size: int):
+    """One step at x: (Rayleigh quotient, scale, rho^2, truncation, index), or None when a pivot vanishes."""
     n = size
     e0 = _SQRT2 * q if sqrt2 else q
     d0 = float(offset * offset) + q_sign * q
@@ -63,20 +93,20 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
             tj = dx[j] - b / tj
             b = bq
         if tj == 0.0 and j < n - 1:  # t_{n-1} and u_0 never divide
-            return math.nan, math.inf, False
+            return None
         t[j] = tj
     u = [0.0] * n
     g = [0.0] * n
     uj = dx[n - 1]
     if uj == 0.0 and n > 1:
-        return math.nan, math.inf, False
+        return None
     u[n - 1] = uj
     g[n - 1] = t[n - 1]
     for j in range(n - 2, -1, -1):
         bqj = (b0 if j == 0 else bq) / uj
         uj = dx[j] - bqj
         if uj == 0.0 and j > 0:
-            return math.nan, math.inf, False
+            return None
         u[j] = uj
         g[j] = t[j] - bqj
     m = 0
@@ -116,15 +146,7 @@ def refine_scalar(offset: int, q_sign: int, sqrt2: bool, k: int, q: float, x: fl
     rho2 = (gm * gm) / norm2
     w = q * z[n - 1]
     trunc = (w * w) / norm2
-    err = 8.0 * _EPS * scale + 0.5 * _EPS * abs(value) + trunc + rho2
-    ok = (
-        math.isfinite(value)
-        and math.isfinite(err)
-        and rho2 <= _RHO_MAX * _RHO_MAX
-        and index == k
-        and trunc <= 1e-3 * _EPS * max(1.0, abs(value))
-    )
-    return (value, err, True) if ok else (math.nan, math.inf, False)
+    return value, scale, rho2, trunc, index
 
 
 def _rowsum(a: np.ndarray) -> np.ndarray:
@@ -135,15 +157,54 @@ def _rowsum(a: np.ndarray) -> np.ndarray:
     return out
 
 
-def refine_batch(offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x: np.ndarray, size: int):
-    """Vectorised :func:`refine_scalar` over 1-d arrays ``q``, ``x`` (same size for all points).
+def refine_batch(
+    offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x: np.ndarray, size: int, tol: float = 1.0
+):
+    """Vectorised :func:`refine_scalar` over 1-d arrays ``q``, ``x`` (same size for all points)."""
+    q = np.asarray(q, dtype=float)
+    x = np.asarray(x, dtype=float)
+    value = np.full(q.shape, np.nan)
+    err = np.full(q.shape, np.inf)
+    accepted = np.zeros(q.shape, dtype=bool)
+    live = np.nonzero(np.isfinite(x))[0]
+    xs = x[live]
+    for it in range(MAX_STEPS):
+        if not live.size:
+            break
+        v, scale, rho2, trunc, index, fine = _step_batch(offset, q_sign, sqrt2, q[live], xs, size)
+        with np.errstate(all="ignore"):
+            fine &= rho2 <= _RHO_MAX * _RHO_MAX * np.maximum(1.0, np.abs(xs)) ** 2
+            done = fine & (rho2 <= _STOP * min(tol, 1e-13) * np.maximum(1.0, np.abs(v)))
+        last = it == MAX_STEPS - 1
+        fin = np.nonzero(done | (fine & last))[0]
+        if fin.size:
+            vf = v[fin]
+            with np.errstate(all="ignore"):
+                e = 8.0 * _EPS * scale[fin] + 0.5 * _EPS * np.abs(vf) + trunc[fin] + rho2[fin]
+                mag = np.maximum(1.0, np.abs(vf))
+                ok = (
+                    np.isfinite(vf)
+                    & np.isfinite(e)
+                    & (index[fin] == k)
+                    & (trunc[fin] <= 1e-3 * _EPS * mag)
+                    & (e <= tol * mag)
+                )
+            pts = live[fin]
+            value[pts] = np.where(ok, vf, np.nan)
+            err[pts] = np.where(ok, e, np.inf)
+            accepted[pts] = ok
+        more = np.nonzero(fine & ~done)[0]
+        live, xs = live[more], v[more]
+    return value, err, accepted
 
-    Only the two pivot recurrences loop over the rows; products and sums along the rows use ``cumprod`` /
-    ``cumsum`` (sequential, hence the same rounding as the scalar loop).
+
+def _step_batch(offset: int, q_sign: int, sqrt2: bool, q: np.ndarray, x: np.ndarray, size: int):
+    """Vectorised :func:`_step_scalar` (plus a mask of the points where no pivot vanished).
+
+    Only the two pivot recurrences loop over the rows; products and sums along the rows use ``cumprod`` and
+    row-by-row sums (sequential, hence the same rounding as the scalar loop).
     """
     n = size
-    finite = np.isfinite(x)
-    x = np.where(finite, x, 0.0)
     e0 = _SQRT2 * q if sqrt2 else q
     d0 = float(offset * offset) + q_sign * q
     b0 = e0 * e0
@@ -201,14 +262,42 @@ def refine_batch(offset: int, q_sign: int, sqrt2: bool, k: int, q: np.ndarray, x
         rho2 = (gm * gm) / norm2
         w = q * z[n - 1]
         trunc = (w * w) / norm2
-        err = 8.0 * _EPS * scale + 0.5 * _EPS * np.abs(value) + trunc + rho2
-        ok = (
-            finite
-            & ~zero
-            & np.isfinite(value)
-            & np.isfinite(err)
-            & (rho2 <= _RHO_MAX * _RHO_MAX)
-            & (index == k)
-            & (trunc <= 1e-3 * _EPS * np.maximum(1.0, np.abs(value)))
-        )
-    return np.where(ok, value, np.nan), np.where(ok, err, np.inf), ok
+    return value, scale, rho2, trunc, index, ~zero
+
+
+def _log_gaps_a(m: int, lq: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Log gap estimates of a_m to b_m (below) and b_{m+1} (above); see ``_hill.log_gap_estimates``."""
+    below = m * lq + (-(2 * m - 3) * math.log(2.0) - 2 * math.lgamma(m)) if m >= 1 else np.full_like(lq, np.inf)
+    cap = math.log(2.0 * m + 1.0)
+    large = (
+        ((4 * m + 5) * math.log(2.0) + 0.5 * math.log(2.0 / math.pi) - math.lgamma(m + 1.0))
+        + (m + 1.5) * (0.5 * lq)
+        - 4 * h
+    )
+    above = np.where((h >= (m + 1.5) / 4) & (large < cap), large, cap)
+    return below, above
+
+
+def gaps_array(is_b: bool, n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(log gap below, log gap above, seed rule) of kind_n at the points q >= 0 (1-d float array).
+
+    The seed rule of b_n is -1 (seed from a_{n-1}), +1 (from a_n) or 0 (its own), chosen where the gap estimate is
+    below 1e-6 (n^2 + 2q + 1).  Scalar calls use a one-element array (the same NumPy loops, the same bits).
+    """
+    with np.errstate(all="ignore"):
+        lq = np.log(np.maximum(q, 1e-300))
+        h = np.sqrt(q)
+        if not is_b:
+            lo, hi = _log_gaps_a(n, lq, h)
+            return lo, hi, np.zeros(q.shape, dtype=np.int8)
+        a0 = _log_gaps_a(n - 1, lq, h)[1]
+        b1 = _log_gaps_a(n, lq, h)[0]
+        thr = np.log(1e-6 * (float(n) * n + 2.0 * q + 1.0))
+    rule = np.where((a0 < thr) & (a0 <= b1), -1, np.where(b1 < thr, 1, 0)).astype(np.int8)
+    return a0, b1, rule
+
+
+def gaps_scalar(is_b: bool, n: int, q: float) -> tuple[float, float, int]:
+    """:func:`gaps_array` at one point."""
+    lo, hi, rule = gaps_array(is_b, n, np.array([q]))
+    return float(lo[0]), float(hi[0]), int(rule[0])

@@ -1,0 +1,76 @@
+"""Helpers shared by the network modules (private)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ModelError, ParameterError
+
+#: The default operator variable (Carson/Laplace ``p``; put ``p = i*omega`` for steady state).
+P = sp.Symbol("p")
+
+
+def as_expr(value: Any, name: str) -> sp.Expr:
+    """Sympify ``value`` or raise ParameterError naming ``name``."""
+    try:
+        expr = sp.sympify(value)
+    except (sp.SympifyError, TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a number or SymPy expression, got {value!r}") from exc
+    if not isinstance(expr, sp.Expr):
+        raise ParameterError(f"{name} must be a scalar expression, got {type(expr).__name__}")
+    if expr.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
+        raise ParameterError(f"{name} must be finite, got {expr}")
+    return expr
+
+
+def element_value(value: Any, name: str) -> sp.Expr:
+    """An element value (R, L, C, ...): a number > 0 or a symbol not known to be negative or zero."""
+    expr = as_expr(value, name)
+    if expr.is_extended_real is False:
+        raise ParameterError(f"{name} must be real, got {expr}")
+    if expr.is_positive is False:
+        raise ParameterError(
+            f"{name} = {expr} is not positive; passive elements need positive values "
+            "(use a positive number or a symbol declared positive=True)"
+        )
+    return expr
+
+
+def as_symbol(p: Any, name: str = "p") -> sp.Symbol:
+    """Check that ``p`` is a SymPy Symbol."""
+    if not isinstance(p, sp.Symbol):
+        raise ParameterError(f"{name} must be a SymPy Symbol (the operator variable), got {p!r}")
+    return p
+
+
+def rational_function(Z: Any, p: sp.Symbol, name: str = "Z") -> tuple[sp.Poly, sp.Poly]:
+    """Return coprime numerator and denominator polynomials of a rational function ``Z`` of ``p``."""
+    expr = as_expr(Z, name)
+    expr = sp.cancel(sp.together(expr))
+    if not expr.is_rational_function(p):
+        raise ModelError(f"{name} must be a rational function of {p}, got {expr}")
+    num, den = sp.fraction(expr)
+    try:
+        N, D = sp.Poly(num, p), sp.Poly(den, p)
+    except sp.PolynomialError as exc:
+        raise ModelError(f"{name} must be a rational function of {p}, got {expr}") from exc
+    if D.is_zero:
+        raise ModelError(f"{name} has a zero denominator")
+    g = sp.gcd(N, D)
+    if g.degree() > 0:
+        N, D = sp.div(N, g)[0], sp.div(D, g)[0]
+    lc = D.LC()
+    if lc != 1:
+        N, D = sp.Poly(sp.expand(N.as_expr() / lc), p), sp.Poly(sp.expand(D.as_expr() / lc), p)
+    return N, D
+
+
+def is_zero(expr: sp.Expr) -> bool:
+    """Exact test of a rational expression for zero (``cancel``)."""
+    return sp.cancel(sp.together(expr)) == 0
+
+
+def matrix_latex(printer: Any, M: sp.MatrixBase) -> str:
+    return printer._print(M) if printer is not None else sp.latex(M)

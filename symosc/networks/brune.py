@@ -1,0 +1,73 @@
+"""Brune's synthesis of a positive-real impedance (Brune 1931; Bulgakov (1954), §9.23–9.27).
+
+Each cycle removes the imaginary-axis poles of ``Z`` and of ``1/Z`` (Foster, Theorem IV), subtracts the minimum
+resistance ``R = min Re Z(iω)`` (Theorem III) and, when ``Re Z(iω0) = 0`` at a finite ``ω0 > 0``, extracts a
+Brune section (perfectly coupled coils and a capacitor) that lowers the degree by two.  The result is a network
+whose impedance equals the target exactly.
+
+>>> import sympy as sp
+>>> from symosc.networks import brune_synthesis
+>>> p = sp.Symbol("p")
+>>> Z = (p**2 + p + 1) / (p**2 + p + 4)
+>>> net = brune_synthesis(Z, p)
+>>> sp.cancel(net.impedance(p) - Z)
+0
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ParameterError
+from ._synthesis import minimum_real_part, synthesize
+from ._util import P, as_symbol, rational_function
+from .oneports import OnePort
+from .positive_real import require_positive_real
+
+__all__ = ["brune_synthesis", "minimum_real_part"]
+
+
+def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
+    """Realise a positive-real impedance by Brune's procedure; the network's impedance equals ``Z`` exactly.
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational positive-real function of ``p`` with numeric coefficients.
+    p : sympy.Symbol
+
+    Returns
+    -------
+    OnePort
+        A tree of resistors, inductors, capacitors and :class:`BruneSection` objects (unit-coupled coils), all
+        element values positive.
+
+    Raises
+    ------
+    ParameterError
+        When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
+    ModelError
+        When the minimum of ``Re Z(iω)`` lies at an irrational point whose exact arithmetic SymPy cannot close
+        (the network would need algebraic element values of high degree).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import brune_synthesis
+    >>> p = sp.Symbol("p")
+    >>> brune_synthesis((p**2 + p + 1) / (p**2 + p + 4), p)
+    Brune(Lp=1, Ls=1/4, M=1/2, C=1; load=R(1/4))
+
+    See Also
+    --------
+    bott_duffin_synthesis, is_positive_real, foster_first
+    """
+    p = as_symbol(p)
+    N, D = rational_function(Z, p)
+    if N.is_zero:
+        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    Z = N.as_expr() / D.as_expr()
+    require_positive_real(Z, p)
+    return synthesize(Z, p, 0)

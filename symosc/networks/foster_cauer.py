@@ -1,0 +1,171 @@
+"""Foster and Cauer canonical forms of reactance (LC) one-ports (Bulgakov (1954), §9.21, §9.23).
+
+A reactance function is positive real with ``Re Z(iω) = 0``: Foster's theorem gives
+``Z = L p + 1/(C0 p) + Σ 2k p/(p² + ω²)`` (first form: a series chain of tanks) and the same for ``Y = 1/Z``
+(second form: parallel series-LC branches); Cauer's continued fractions at infinity (first form) and at zero
+(second form) give ladders.
+
+>>> import sympy as sp
+>>> from symosc.networks import foster_first, cauer_first
+>>> p = sp.Symbol("p")
+>>> Z = (p**4 + 4*p**2 + 3) / (p**3 + 2*p)
+>>> foster_first(Z, p)
+L(1) + C(2/3) + (C(2) | L(1/4))
+>>> cauer_first(Z, p)
+L(1) + (C(1/2) | (L(4) + C(1/6)))
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ParameterError
+from ._removal import pole_at_infinity, pole_at_zero, remainder_is_zero, remove_axis_poles
+from ._util import P, as_symbol, rational_function
+from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
+from .positive_real import real_part_on_axis, require_positive_real
+
+__all__ = ["cauer_first", "cauer_second", "foster_first", "foster_second", "is_reactance_function"]
+
+
+def is_reactance_function(Z: Any, p: sp.Symbol = P) -> bool:
+    """True when ``Z`` is positive real with ``Re Z(iω) ≡ 0`` (a lossless LC one-port, Foster's theorem).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import is_reactance_function
+    >>> p = sp.Symbol("p")
+    >>> is_reactance_function((p**2 + 1) / p, p), is_reactance_function((p + 1) / p, p)
+    (True, False)
+
+    See Also
+    --------
+    foster_first, cauer_first, is_positive_real
+    """
+    from .positive_real import is_positive_real
+
+    return is_positive_real(Z, p) and real_part_on_axis(Z, p)[0].is_zero
+
+
+def _reactance(Z: Any, p: sp.Symbol) -> sp.Expr:
+    p = as_symbol(p)
+    N, D = rational_function(Z, p)
+    require_positive_real(N.as_expr() / D.as_expr(), p)
+    if not real_part_on_axis(N.as_expr() / D.as_expr(), p)[0].is_zero:
+        raise ParameterError(
+            "Z is not a reactance function (Re Z(iω) is not identically zero): Foster and Cauer forms realise "
+            "lossless LC one-ports only; use brune_synthesis or bott_duffin_synthesis for RLC targets"
+        )
+    if N.is_zero:
+        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    return N.as_expr() / D.as_expr()
+
+
+def _join(parts: list[OnePort], cls: type) -> OnePort:
+    return parts[0] if len(parts) == 1 else cls(tuple(parts))
+
+
+def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
+    """Foster's first form: series inductor, series capacitor and parallel LC tanks (poles of ``Z``).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import foster_first
+    >>> p = sp.Symbol("p")
+    >>> foster_first(p / (p**2 + 1), p)
+    C(1) | L(1)
+
+    See Also
+    --------
+    foster_second, cauer_first
+    """
+    Z = _reactance(Z, p)
+    parts, rest = remove_axis_poles(Z, p, "Z")
+    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover - exhausted by its poles
+        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    return _join(parts, Series)
+
+
+def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
+    """Foster's second form: shunt capacitor, shunt inductor and parallel series-LC branches (poles of ``1/Z``).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import foster_second
+    >>> p = sp.Symbol("p")
+    >>> foster_second((p**2 + 1) / p, p)
+    L(1) + C(1)
+
+    See Also
+    --------
+    foster_first, cauer_second
+    """
+    Z = _reactance(Z, p)
+    parts, rest = remove_axis_poles(sp.cancel(1 / Z), p, "Y")
+    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover
+        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    return _join(parts, Parallel)
+
+
+def _cauer(F: sp.Expr, p: sp.Symbol, mode: str, at_infinity: bool) -> OnePort:
+    """Continued fraction: remove the pole of ``F`` at infinity (or zero), invert, repeat."""
+    k = pole_at_infinity(F, p) if at_infinity else pole_at_zero(F, p)
+    if k == 0:
+        raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
+    if at_infinity:
+        element = Inductor(k) if mode == "Z" else Capacitor(k)
+        rem = sp.cancel(F - k * p)
+    else:
+        element = Capacitor(1 / k) if mode == "Z" else Inductor(1 / k)
+        rem = sp.cancel(F - k / p)
+    if rem == 0:
+        return element
+    rest = _cauer(sp.cancel(1 / rem), p, "Y" if mode == "Z" else "Z", at_infinity)
+    return Series((element, rest)) if mode == "Z" else Parallel((element, rest))
+
+
+def cauer_first(Z: Any, p: sp.Symbol = P) -> OnePort:
+    """Cauer's first form: ladder of series inductors and shunt capacitors (continued fraction at infinity).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import cauer_first
+    >>> p = sp.Symbol("p")
+    >>> cauer_first(p / (p**2 + 1), p)
+    C(1) | L(1)
+
+    See Also
+    --------
+    cauer_second, foster_first
+    """
+    Z = _reactance(Z, p)
+    if pole_at_infinity(Z, p) != 0:
+        return _cauer(Z, p, "Z", True)
+    return _cauer(sp.cancel(1 / Z), p, "Y", True)
+
+
+def cauer_second(Z: Any, p: sp.Symbol = P) -> OnePort:
+    """Cauer's second form: ladder of series capacitors and shunt inductors (continued fraction at zero).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import cauer_second
+    >>> p = sp.Symbol("p")
+    >>> cauer_second((p**2 + 1) / p, p)
+    C(1) + L(1)
+
+    See Also
+    --------
+    cauer_first, foster_second
+    """
+    Z = _reactance(Z, p)
+    if pole_at_zero(Z, p) != 0:
+        return _cauer(Z, p, "Z", False)
+    return _cauer(sp.cancel(1 / Z), p, "Y", False)

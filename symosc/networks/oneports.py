@@ -1,0 +1,286 @@
+"""One-ports (two-poles): resistors, inductors, capacitors and their series/parallel trees (Bulgakov §8.31).
+
+A network object knows its impedance ``Z(p)`` and admittance ``Y(p) = 1/Z(p)`` in the operator variable ``p``
+(put ``p = i*omega`` for the steady state).  ``a + b`` connects in series and ``a | b`` in parallel, as in lcapy.
+
+>>> from symosc.networks import Resistor, Inductor, Capacitor
+>>> net = Resistor(1) + (Inductor(2) | Capacitor(3))
+>>> net
+R(1) + (L(2) | C(3))
+>>> net.impedance()
+(6*p**2 + 2*p + 1)/(6*p**2 + 1)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ParameterError
+from ._util import P, as_expr, as_symbol, element_value
+
+__all__ = [
+    "BruneSection",
+    "Capacitor",
+    "Impedance",
+    "Inductor",
+    "OnePort",
+    "Parallel",
+    "Resistor",
+    "Series",
+    "equivalent_two_pole",
+]
+
+
+class OnePort:
+    """Base class of one-port networks: impedance, admittance, series ``+`` and parallel ``|``."""
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def admittance(self, p: sp.Symbol = P) -> sp.Expr:
+        """``1/Z(p)`` as a cancelled rational expression."""
+        return sp.cancel(1 / self.impedance(p))
+
+    def elements(self) -> tuple:
+        """The leaf elements in netlist order."""
+        return (self,)
+
+    def __add__(self, other: OnePort) -> Series:
+        return Series((self, _check_port(other)))
+
+    def __or__(self, other: OnePort) -> Parallel:
+        return Parallel((self, _check_port(other)))
+
+    def __str__(self) -> str:
+        return self._sympystr(None)
+
+    def __repr__(self) -> str:
+        return self._sympystr(None)
+
+    def _repr_latex_(self) -> str:
+        return f"$Z(p) = {sp.latex(self.impedance())}$"
+
+    def _latex(self, printer: Any) -> str:
+        return sp.latex(self.impedance())
+
+
+def _check_port(other: Any) -> OnePort:
+    if not isinstance(other, OnePort):
+        raise ParameterError(f"can only connect one-port networks, got {type(other).__name__}")
+    return other
+
+
+def _fmt(value: sp.Expr) -> str:
+    return sp.sstr(value)
+
+
+@dataclass(frozen=True, repr=False)
+class Resistor(OnePort):
+    """Resistor ``Z = R``."""
+
+    R: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "R", element_value(self.R, "R"))
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return self.R
+
+    def _sympystr(self, printer: Any) -> str:
+        return f"R({_fmt(self.R)})"
+
+
+@dataclass(frozen=True, repr=False)
+class Inductor(OnePort):
+    """Inductor ``Z = L p``."""
+
+    L: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "L", element_value(self.L, "L"))
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return self.L * as_symbol(p)
+
+    def _sympystr(self, printer: Any) -> str:
+        return f"L({_fmt(self.L)})"
+
+
+@dataclass(frozen=True, repr=False)
+class Capacitor(OnePort):
+    """Capacitor ``Z = 1/(C p)``."""
+
+    C: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "C", element_value(self.C, "C"))
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return 1 / (self.C * as_symbol(p))
+
+    def _sympystr(self, printer: Any) -> str:
+        return f"C({_fmt(self.C)})"
+
+
+@dataclass(frozen=True, repr=False)
+class Impedance(OnePort):
+    """A generic impedance ``Z``, an expression in the standard symbol ``p`` (or free of it).
+
+    No passivity is assumed: use it for symbolic section formulas such as ``Impedance(sympy.Symbol("Z_A"))``.
+    """
+
+    Z: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "Z", as_expr(self.Z, "Z"))
+        if self.Z == 0:
+            raise ParameterError("Z must not be identically zero (use a short circuit in the enclosing network)")
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return self.Z if p == P else self.Z.xreplace({P: as_symbol(p)})
+
+    def _sympystr(self, printer: Any) -> str:
+        return f"Z({_fmt(self.Z)})"
+
+
+def _flatten(parts: tuple, cls: type) -> tuple:
+    out: list = []
+    for part in parts:
+        _check_port(part)
+        out.extend(part.parts if isinstance(part, cls) else (part,))
+    return tuple(out)
+
+
+@dataclass(frozen=True, repr=False)
+class Series(OnePort):
+    """Series connection: ``Z = Z_1 + Z_2 + ...``."""
+
+    parts: tuple
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Series))
+        if len(self.parts) < 1:
+            raise ParameterError("Series needs at least one part")
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return sp.cancel(sp.Add(*(part.impedance(p) for part in self.parts)))
+
+    def elements(self) -> tuple:
+        return tuple(e for part in self.parts for e in part.elements())
+
+    def _sympystr(self, printer: Any) -> str:
+        return " + ".join(_wrap(part, Parallel) for part in self.parts)
+
+
+@dataclass(frozen=True, repr=False)
+class Parallel(OnePort):
+    """Parallel connection: ``1/Z = 1/Z_1 + 1/Z_2 + ...``."""
+
+    parts: tuple
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Parallel))
+        if len(self.parts) < 1:
+            raise ParameterError("Parallel needs at least one part")
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        return sp.cancel(1 / sp.Add(*(1 / part.impedance(p) for part in self.parts)))
+
+    def elements(self) -> tuple:
+        return tuple(e for part in self.parts for e in part.elements())
+
+    def _sympystr(self, printer: Any) -> str:
+        return " | ".join(_wrap(part, Series) for part in self.parts)
+
+
+def _wrap(part: OnePort, cls: type) -> str:
+    text = part._sympystr(None)
+    return f"({text})" if isinstance(part, (cls, BruneSection)) else text
+
+
+@dataclass(frozen=True, repr=False)
+class BruneSection(OnePort):
+    """Brune's section: perfectly coupled coils ``Lp``, ``Ls`` (mutual ``M``, ``M**2 = Lp*Ls``) and a capacitor.
+
+    Its T equivalent has series arms ``Lp - M`` (input) and ``Ls - M`` (output), one of them negative, and the
+    shunt branch ``M p + 1/(C p)``; the output is closed by ``load``.  All four values are positive, so the
+    section is realisable with a transformer of unit coupling (Brune 1931; Bulgakov (1954), §9.27).
+
+    ``Z = (Lp - M) p + [(M p + 1/(C p)) || ((Ls - M) p + Z_load)]``
+    """
+
+    Lp: Any
+    Ls: Any
+    M: Any
+    C: Any
+    load: OnePort
+
+    def __post_init__(self) -> None:
+        for name in ("Lp", "Ls", "M", "C"):
+            object.__setattr__(self, name, element_value(getattr(self, name), name))
+        _check_port(self.load)
+
+    def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        p = as_symbol(p)
+        shunt = self.M * p + 1 / (self.C * p)
+        out = (self.Ls - self.M) * p + self.load.impedance(p)
+        return sp.cancel((self.Lp - self.M) * p + shunt * out / (shunt + out))
+
+    @property
+    def coupling(self) -> sp.Expr:
+        """Coupling coefficient ``M / sqrt(Lp Ls)`` (1 for Brune's section)."""
+        return sp.simplify(self.M / sp.sqrt(self.Lp * self.Ls))
+
+    def elements(self) -> tuple:
+        return (self, *self.load.elements())
+
+    def _sympystr(self, printer: Any) -> str:
+        return (
+            f"Brune(Lp={_fmt(self.Lp)}, Ls={_fmt(self.Ls)}, M={_fmt(self.M)}, C={_fmt(self.C)}; "
+            f"load={self.load._sympystr(None)})"
+        )
+
+
+def equivalent_two_pole(a: Any, b: Any) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
+    """Coefficients of the equivalent two-pole of Bulgakov (1954), §8.31, eqs. (8.248)–(8.252).
+
+    The two-pole ``(Z1 || Z2) + a Z1 + b Z2`` equals ``(c Z1 + d Z2) || (e Z1 + f Z2)`` for all ``Z1``, ``Z2``
+    when ``B = sqrt((1 + a + b)**2 - 4 a b)`` and
+
+    ``c, e = (B/2) (B ± (1 - a + b))``,  ``d, f = (B/2) (B ∓ (1 + a - b))``
+
+    with the signs coupled ("+" for ``c`` goes with "-" for ``d``); the other two sign combinations fail.
+
+    Parameters
+    ----------
+    a, b : number or SymPy expression
+        Non-negative coefficients of the series arms of network (a).
+
+    Returns
+    -------
+    tuple
+        ``(c, d, e, f)`` as SymPy expressions.
+
+    Examples
+    --------
+    >>> from symosc.networks import equivalent_two_pole
+    >>> equivalent_two_pole(1, 2)
+    (4 - 2*sqrt(2), 4, 2*sqrt(2) + 4, 4)
+
+    See Also
+    --------
+    Series, Parallel
+    """
+    a, b = as_expr(a, "a"), as_expr(b, "b")
+    for name, v in (("a", a), ("b", b)):
+        if v.is_negative:
+            raise ParameterError(f"{name} = {v} must be non-negative (it multiplies an element of the network)")
+    B = sp.sqrt(sp.expand((1 + a + b) ** 2 - 4 * a * b))
+    c = sp.expand(B / 2 * (B - (1 - a + b)))
+    e = sp.expand(B / 2 * (B + (1 - a + b)))
+    d = sp.expand(B / 2 * (B + (1 + a - b)))
+    f = sp.expand(B / 2 * (B - (1 + a - b)))
+    return c, d, e, f

@@ -1,0 +1,192 @@
+"""Products of truncated Fourier series: FLINT integer polynomials (exact and fixed point) and float helpers.
+
+Used by :mod:`symosc.nonlinear._fourier`; the functions take ``flint.fmpz_poly`` as an argument (python-flint is
+optional and imported there).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from ._fourier import Trig
+
+
+def _object_array(values: list) -> np.ndarray:
+    """Python ints in an object array (never converted to a fixed-width integer type)."""
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out
+
+
+def _int_list(p: Any, n: int) -> list:
+    out = [int(c) for c in p.coeffs()]
+    return out + [0] * (n - len(out))
+
+
+def _int_products_flint(P: Any, ac, as_, bc, bs, na: int, nb: int) -> tuple[list, list, list, list]:
+    """The n + m and n - m convolutions of integer numerators by FLINT (6 products, Karatsuba-style).
+
+    Returns (cc - ss, sc + cs, dcc + dss, dsc - dcs) as int lists of length na + nb + 1, the same integers as the
+    eight :func:`numpy.convolve` calls of :meth:`_Arith._products`.
+    """
+    a_c, a_s = P(ac.tolist()), P(as_.tolist())
+    b_c, b_s = P(bc.tolist()), P(bs.tolist())
+    r_c, r_s = P(bc[::-1].tolist()), P(bs[::-1].tolist())
+    a_sum = a_c + a_s
+    p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * (b_c + b_s)
+    p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * (r_c - r_s)
+    n = na + nb + 1
+    return (
+        _int_list(p1 - p2, n),
+        _int_list(p3 - p1 - p2, n),
+        _int_list(p4 + p5, n),
+        _int_list(p6 - p4 + p5, n),
+    )
+
+
+def _parity(t: Trig) -> int | None:
+    """1 when only odd harmonics occur, 0 when only even ones, None for both (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "p" not in cache:
+        if not any(t.cos[0::2].tolist()) and not any(t.sin[0::2].tolist()):
+            cache["p"] = 1
+        elif not any(t.cos[1::2].tolist()) and not any(t.sin[1::2].tolist()):
+            cache["p"] = 0
+        else:
+            cache["p"] = None
+        t.polys = cache
+    return cache["p"]
+
+
+def _forward_polys(P: Any, t: Trig, parity: int | None = None) -> tuple:
+    """(cos, sin, cos + sin) numerators of ``t`` as ``fmpz_poly`` (cached on ``t``).
+
+    With ``parity`` (0 or 1) only the harmonics of that parity are kept, as a polynomial in ``z**2``.
+    """
+    cache = t.polys if t.polys is not None else {}
+    key = ("f", parity)
+    if key not in cache:
+        lo = 0 if parity is None else parity
+        step = 1 if parity is None else 2
+        c, s = P(t.cos[lo::step].tolist()), P(t.sin[lo::step].tolist())
+        cache[key] = (c, s, c + s)
+        t.polys = cache
+    return cache[key]
+
+
+def _reversed_polys(P: Any, t: Trig, n: int, parity: int | None = None) -> tuple:
+    """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms.
+
+    With ``parity`` (of the harmonics of ``t``) the reversed polynomials are taken in ``z**2`` from the offset
+    ``(n - parity) % 2``.
+    """
+    cache = t.polys if t.polys is not None else {}
+    key = ("r", n, parity)
+    if key not in cache:
+        shift = n - (len(t.cos) - 1)
+        pad = [0] * shift
+        rc, rs = pad + t.cos[::-1].tolist(), pad + t.sin[::-1].tolist()
+        if parity is not None:
+            lo = (n - parity) % 2
+            rc, rs = rc[lo::2], rs[lo::2]
+        rc, rs = P(rc), P(rs)
+        c, s, _ = _forward_polys(P, t, parity)
+        cache[key] = (rc, rs, rc - rs, c, s, c + s)
+        t.polys = cache
+    return cache[key]
+
+
+def _spread(p: Any, offset: int, n: int) -> np.ndarray:
+    """Coefficients of ``z**offset * p(z**2)`` as an object array of length ``n``."""
+    out = [0] * n
+    m = len(range(offset, n, 2))
+    out[offset::2] = _int_list(p, m)
+    return _object_array(out)
+
+
+def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tuple[np.ndarray, np.ndarray]:
+    """Twice the numerators of ``sum f * a * b`` (integer numerators; ``f`` in ``factors``) by FLINT products.
+
+    Odd-only or even-only harmonics on each side (odd nonlinearities) are multiplied as polynomials in ``z**2``.
+    """
+    na = max(len(a.cos) for a, _ in pairs) - 1
+    nb = max(len(b.cos) for _, b in pairs) - 1
+    zero = P(0)
+    acc = [zero, zero, zero, zero]
+    par_a = {_parity(a) for a, _ in pairs}
+    par_b = {_parity(b) for _, b in pairs}
+    if len(par_a) == 1 and len(par_b) == 1 and None not in par_a and None not in par_b:
+        pa, pb = par_a.pop(), par_b.pop()
+        q = (nb - pb) % 2
+        offsets: tuple | None = (pa + pb, pa + pb, pa + q, pa + q)
+    else:
+        pa = pb = None
+        offsets = None
+    for (a, b), f in zip(pairs, factors, strict=True):
+        a_c, a_s, a_sum = _forward_polys(P, a, pa)
+        r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
+        p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
+        p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
+        if f == 1:
+            acc[0] += p1 - p2
+            acc[1] += p3 - p1 - p2
+            acc[2] += p4 + p5
+            acc[3] += p6 - p4 + p5
+        else:
+            acc[0] += (p1 - p2) * f
+            acc[1] += (p3 - p1 - p2) * f
+            acc[2] += (p4 + p5) * f
+            acc[3] += (p6 - p4 + p5) * f
+    n = na + nb
+    if offsets is None:
+        out_c, out_s, dc, ds = (_object_array(_int_list(p, n + 1)) for p in acc)
+    else:
+        out_c, out_s, dc, ds = (_spread(p, off, n + 1) for p, off in zip(acc, offsets, strict=True))
+    _fold_differences(out_c, out_s, dc, ds, na, nb)
+    top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
+    return out_c[:top].copy(), out_s[:top].copy()
+
+
+def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
+    """Add the n - m terms (``dc``/``ds`` index j + nb holds n - m = j) into the n + m sums, in place."""
+    out_c[: na + 1] = out_c[: na + 1] + dc[nb : nb + na + 1]
+    out_s[: na + 1] = out_s[: na + 1] + ds[nb : nb + na + 1]
+    if nb > 0:
+        out_c[1 : nb + 1] = out_c[1 : nb + 1] + dc[:nb][::-1]
+        out_s[1 : nb + 1] = out_s[1 : nb + 1] - ds[:nb][::-1]
+    out_s[0] = 0
+
+
+def _float_structure(t: Trig) -> Any:
+    """("c" | "s" | None, parity | None) of a float series, or "0" for the zero series (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "fs" not in cache:
+        c, s = t.cos, t.sin
+        has_c, has_s = bool(c.any()), bool(s.any())
+        if not has_c and not has_s:
+            cache["fs"] = "0"
+        else:
+            kind = None if has_c and has_s else ("c" if has_c else "s")
+            if not c[0::2].any() and not s[0::2].any():
+                parity = 1
+            elif not c[1::2].any() and not s[1::2].any():
+                parity = 0
+            else:
+                parity = None
+            cache["fs"] = (kind, parity)
+        t.polys = cache
+    return cache["fs"]
+
+
+def _float_kind(a: Trig, b: Trig) -> Any:
+    """Which coefficients of ``a * b`` can be nonzero: (kind, parity) as in :func:`_float_structure`, or "0"."""
+    sa, sb = _float_structure(a), _float_structure(b)
+    if sa == "0" or sb == "0":
+        return "0"
+    (ka, pa), (kb, pb) = sa, sb
+    kind = None if ka is None or kb is None else ("c" if ka == kb else "s")
+    parity = None if pa is None or pb is None else (pa + pb) % 2
+    return kind, parity

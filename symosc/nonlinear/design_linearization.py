@@ -1,0 +1,150 @@
+"""Linearization at a design amplitude and the shortened equations (Bulgakov (1954), §5.26–5.27).
+
+For ``q'' + f(q, q') = 0`` the comparison system ``q'' + 2 eps q' + (omega**2 + eps**2)(q - q*) = 0`` is chosen so that
+the first Fourier harmonics of ``f(q* + a cos u, -a (omega sin u + eps cos u))`` match it at the design amplitude
+``a = a*`` (5.333)–(5.334):
+
+    Integral(f, u) = 0,   2 eps = -(1/(pi a* omega)) Integral(f sin u, u),
+    omega**2 - eps**2 = (1/(pi a*)) Integral(f cos u, u)
+
+(integrals over one period), i.e. ``eps = Phi(a*)``, ``omega = Psi(a*)`` (5.335), with the instantaneous damping and
+frequency of the shortened equations (5.330)
+
+    a' = -a Phi(a),   u' = Psi(a),
+    Phi = -(1/(2 pi omega a)) Integral(f sin u, u),
+    Psi = (omega**2 + eps**2)/(2 omega) + (1/(2 pi omega a)) Integral(f cos u, u).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import ConvergenceError, ParameterError
+
+__all__ = ["DesignLinearization", "design_amplitude_linearization"]
+
+_N = 512
+
+
+def _harmonics(f: Callable, q_star: float, a: float, omega: float, eps: float) -> tuple[float, float, float]:
+    u = 2 * np.pi * np.arange(_N) / _N
+    vals = np.broadcast_to(
+        np.asarray(f(q_star + a * np.cos(u), -a * (omega * np.sin(u) + eps * np.cos(u))), dtype=float), u.shape
+    )
+    w = 2 * np.pi / _N
+    return float(vals.sum() * w), float((vals * np.sin(u)).sum() * w), float((vals * np.cos(u)).sum() * w)
+
+
+@dataclass(frozen=True)
+class DesignLinearization:
+    """The linear comparison system chosen at the design amplitude (Bulgakov (1954), §5.27).
+
+    Attributes
+    ----------
+    a_star : float
+        Design amplitude.
+    q_star : float
+        Centre of the oscillation (5.333).
+    eps, omega : float
+        Damping and frequency of the comparison system: roots ``-eps +- i omega``.
+    f : callable
+        The force ``f(q, v)``.
+    """
+
+    a_star: float
+    q_star: float
+    eps: float
+    omega: float
+    f: Callable[..., Any] = field(repr=False, compare=False)  # the user's force (picklable if it is)
+
+    def __repr__(self) -> str:
+        return (
+            f"DesignLinearization(a*={self.a_star:.6g}: q*={self.q_star:.6g}, eps={self.eps:.6g}, "
+            f"omega={self.omega:.6g})"
+        )
+
+    def damping(self, a: float) -> float:
+        """Instantaneous damping ``Phi(a)`` of the shortened equations (5.330): ``a' = -a Phi(a)``."""
+        _, s, _ = _harmonics(self.f, self.q_star, a, self.omega, self.eps)
+        return -s / (2 * np.pi * self.omega * a)
+
+    def frequency(self, a: float) -> float:
+        """Instantaneous frequency ``Psi(a)`` of the shortened equations (5.330): ``u' = Psi(a)``."""
+        _, _, c = _harmonics(self.f, self.q_star, a, self.omega, self.eps)
+        return (self.omega**2 + self.eps**2) / (2 * self.omega) + c / (2 * np.pi * self.omega * a)
+
+
+def design_amplitude_linearization(
+    f: Callable[..., Any], a_star: float, *, omega0: float = 1.0, tol: float = 1e-12
+) -> DesignLinearization:
+    """Linear comparison system of ``q'' + f(q, q') = 0`` at the design amplitude ``a*`` (Bulgakov (1954), §5.27).
+
+    Parameters
+    ----------
+    f : callable
+        ``f(q, v)`` (vectorized over NumPy arrays), the force per unit mass; ``q`` the coordinate, ``v = q'``.
+    a_star : float
+        Design amplitude ``a* > 0``.
+    omega0 : float
+        Starting guess for ``omega``.
+    tol : float
+        Tolerance on the residuals of (5.333)–(5.334).
+
+    Returns
+    -------
+    DesignLinearization
+        ``q*``, ``eps``, ``omega`` and the shortened equations' ``Phi(a)``, ``Psi(a)``.
+
+    Raises
+    ------
+    ConvergenceError
+        If the three conditions cannot be met (e.g. no oscillatory comparison system, ``omega**2 <= 0``).
+
+    See Also
+    --------
+    symosc.nonlinear.averaged_equations : symbolic shortened equations of one oscillator.
+    symosc.nonlinear.harmonic_linearisation : ``J(A)/A`` for a single nonlinearity.
+
+    Examples
+    --------
+    The arctan spring ``q'' + arctan(q) = 0`` (Bulgakov (1954), §5.29): ``omega**2 = 2 (sqrt(1 + a**2) - 1) / a**2``.
+
+    >>> import numpy as np
+    >>> lin = design_amplitude_linearization(lambda q, v: np.arctan(q), 2.0)
+    >>> round(lin.omega, 12), round(float(np.sqrt(2 * (np.sqrt(5) - 1) / 4)), 12), abs(lin.eps) < 1e-12
+    (0.786151377757, 0.786151377757, True)
+    """
+    from scipy.optimize import fsolve
+
+    try:
+        a = float(a_star)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"a_star must be a positive number, got {a_star!r}") from exc
+    if not np.isfinite(a) or a <= 0:
+        raise ParameterError(f"a_star must be a positive finite number, got {a_star!r}")
+    if not callable(f):
+        raise ParameterError(f"f must be a callable f(q, v), got {type(f).__name__}")
+
+    def residual(x: np.ndarray) -> np.ndarray:
+        q_star, eps, omega = x
+        i0, s, c = _harmonics(f, q_star, a, omega, eps)
+        return np.array(
+            [
+                i0 / (2 * np.pi),
+                2 * eps + s / (np.pi * a * omega),
+                omega**2 - eps**2 - c / (np.pi * a),
+            ]
+        )
+
+    x, _info, ier, msg = fsolve(residual, [0.0, 0.0, float(omega0)], full_output=True, xtol=1e-14)
+    res = float(np.max(np.abs(residual(x))))
+    if (ier != 1 and res > tol) or res > tol * max(1.0, abs(x[2]) ** 2) or not np.all(np.isfinite(x)) or x[2] == 0:
+        raise ConvergenceError(
+            f"no linear comparison system at a* = {a}: residual {res:.3g} ({msg.strip()})", achieved=res
+        )
+    q_star, eps, omega = (float(v) for v in x)
+    return DesignLinearization(a_star=a, q_star=q_star, eps=eps, omega=abs(omega), f=f)

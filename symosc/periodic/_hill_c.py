@@ -1,0 +1,119 @@
+"""The per-point Mathieu kernel of :mod:`symosc.periodic._hill_batch` in C (private).
+
+One C function refines a whole batch of seeds (matrix size choice, twisted factorisation, Rayleigh-quotient steps,
+pivot count, error bounds -- the operations of :func:`symosc.periodic._hill_batch.refine_scalar`), and a second one
+computes the gap estimates and the seed rule of :mod:`symosc.periodic._mathieu_auto`.  Scalar calls go through the
+same C code, so scalar and vectorised results have the same bits.  The library is compiled once with the C
+backend's build cache (:mod:`symosc.numeric._build`); without a C compiler (or with ``SYMOSC_MATHIEU_KERNEL=numpy``)
+:func:`kernel` returns None and the NumPy implementation runs instead.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+
+import numpy as np
+
+from ._hill_c_source import SOURCE
+
+_PTR = ctypes.POINTER(ctypes.c_double)
+#: output buffer of the gap estimates of scalar calls that only need the seed rule (its contents are not used)
+SCRATCH = (ctypes.c_double * 2)()
+_state: dict = {}
+
+
+def kernel():
+    """The loaded C library, or None (no C compiler, or ``SYMOSC_MATHIEU_KERNEL=numpy``); decided once."""
+    try:
+        return _state["lib"]
+    except KeyError:
+        pass
+    lib = None
+    if os.environ.get("SYMOSC_MATHIEU_KERNEL", "").lower() != "numpy":
+        from ..numeric._build import CompilerError, load
+
+        try:
+            lib = load(SOURCE)
+        except CompilerError:
+            lib = None
+    if lib is not None:
+        lib.symosc_mathieu_refine.restype = ctypes.c_int
+        lib.symosc_mathieu_refine.argtypes = (
+            [ctypes.c_int] * 4 + [ctypes.c_long] + [ctypes.c_void_p] * 2 + [ctypes.c_double] + [ctypes.c_void_p] * 3
+        )
+        lib.symosc_mathieu_refine1.restype = ctypes.c_double
+        lib.symosc_mathieu_refine1.argtypes = [ctypes.c_int] * 4 + [ctypes.c_double] * 3 + [_PTR]
+        lib.symosc_mathieu_gaps.restype = None
+        lib.symosc_mathieu_gaps.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_long] + [ctypes.c_void_p] * 4
+        lib.symosc_mathieu_auto.restype = ctypes.c_int
+        lib.symosc_mathieu_auto.argtypes = (
+            [ctypes.c_int, ctypes.c_int, ctypes.c_long]
+            + [ctypes.c_void_p] * 2
+            + [ctypes.c_double]
+            + [ctypes.c_void_p] * 3
+        )
+        lib.symosc_mathieu_auto1.restype = ctypes.c_double
+        lib.symosc_mathieu_auto1.argtypes = [ctypes.c_int, ctypes.c_int] + [ctypes.c_double] * 3 + [_PTR]
+        lib.symosc_mathieu_gaps1.restype = ctypes.c_int
+        lib.symosc_mathieu_gaps1.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_void_p]
+    _state["lib"] = lib
+    return lib
+
+
+def reset() -> None:
+    """Forget the decision of :func:`kernel` (the tests switch between the C and NumPy kernels)."""
+    _state.clear()
+
+
+def refine(lib, fam, k: int, q: np.ndarray, x: np.ndarray, tol: float):
+    """(values, errors, accepted) for contiguous float64 arrays q, x."""
+    q = np.ascontiguousarray(q, dtype=float)
+    x = np.ascontiguousarray(x, dtype=float)
+    value = np.empty(q.shape)
+    err = np.empty(q.shape)
+    ok = np.empty(q.shape, dtype=np.uint8)
+    status = lib.symosc_mathieu_refine(
+        fam.offset, fam.q_sign, int(fam.sqrt2), k, q.size, q.ctypes.data, x.ctypes.data, tol,
+        value.ctypes.data, err.ctypes.data, ok.ctypes.data,
+    )  # fmt: skip
+    if status:
+        raise MemoryError("the Mathieu kernel could not allocate its work array")
+    return value, err, ok.view(bool)
+
+
+def refine1(lib, fam, k: int, q: float, x: float, tol: float) -> tuple[float, float, bool]:
+    err = ctypes.c_double()
+    value = lib.symosc_mathieu_refine1(fam.offset, fam.q_sign, fam.sqrt2, k, q, x, tol, err)
+    return value, err.value, value == value
+
+
+def gaps(lib, is_b: bool, n: int, q: np.ndarray):
+    """(log gap below, log gap above, seed rule) for a 1-d float64 array q >= 0."""
+    q = np.ascontiguousarray(q, dtype=float)
+    lo = np.empty(q.shape)
+    hi = np.empty(q.shape)
+    rule = np.empty(q.shape, dtype=np.int8)
+    lib.symosc_mathieu_gaps(int(is_b), n, q.size, q.ctypes.data, lo.ctypes.data, hi.ctypes.data, rule.ctypes.data)
+    return lo, hi, rule
+
+
+def gaps1(lib, is_b: bool, n: int, q: float) -> tuple[float, float, int]:
+    out = (ctypes.c_double * 2)()
+    rule = lib.symosc_mathieu_gaps1(is_b, n, q, out)
+    return out[0], out[1], rule
+
+
+def auto(lib, is_b: bool, n: int, q: np.ndarray, seeds: np.ndarray, tol: float):
+    """(values, errors, done) of the whole "auto" method for the common case; ``done`` False: use the general path."""
+    q = np.ascontiguousarray(q, dtype=float)
+    seeds = np.ascontiguousarray(seeds, dtype=float)
+    value = np.empty(q.shape)
+    err = np.empty(q.shape)
+    ok = np.empty(q.shape, dtype=np.uint8)
+    status = lib.symosc_mathieu_auto(
+        int(is_b), n, q.size, q.ctypes.data, seeds.ctypes.data, tol, value.ctypes.data, err.ctypes.data, ok.ctypes.data
+    )
+    if status:
+        raise MemoryError("the Mathieu kernel could not allocate its work array")
+    return value, err, ok.view(bool)
