@@ -1,11 +1,11 @@
-"""Motor spin-up/brake inertia formula and the Huygens–Steiner transfer to the centre of mass (Belyakov (2005), §3.12).
+"""Motor spin-up/brake inertia formula and the Huygens–Steiner transfer to the center of mass (Belyakov (2005), §3.12).
 
 * :func:`motor_spin_up_brake` — the body sits on a motor shaft; the motor's work ``A1`` spinning it up from
   ``omega0`` to ``omega1`` and its work ``A2`` braking it back to ``omega0`` give
   ``I = (A1 - A2) / (omega1**2 - omega0**2) - J`` (Belyakov (2005), Ch. I §1, ref. [7]); the friction work, the same
   in both runs, cancels.
 * :func:`central_gyration` — Huygens–Steiner ``rho_m**2 = rho**2 - r**2`` and how the relative errors of ``rho``
-  and ``r`` are amplified when the rotation axis is far from the centre of mass (Belyakov (2005), Ch. I §1).
+  and ``r`` are amplified when the rotation axis is far from the center of mass (Belyakov (2005), Ch. I §1).
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ def motor_spin_up_brake() -> InertiaFormula:
     See Also
     --------
     flywheel : falling-weight flywheel, two runs eliminating a constant friction moment.
-    central_gyration : transfer of a measured moment to the centre of mass (Huygens–Steiner).
+    central_gyration : transfer of a measured moment to the center of mass (Huygens–Steiner).
 
     Notes
     -----
@@ -71,7 +71,7 @@ def motor_spin_up_brake() -> InertiaFormula:
 
 @dataclass(frozen=True)
 class CentralGyration:
-    """Radius of gyration about the parallel axis through the centre of mass (Huygens–Steiner).
+    """Radius of gyration about the parallel axis through the center of mass (Huygens–Steiner).
 
     Attributes
     ----------
@@ -100,20 +100,20 @@ class CentralGyration:
 
 
 def central_gyration(rho: float, r: float, *, rel_error_rho: float = 0.0, rel_error_r: float = 0.0) -> CentralGyration:
-    """Radius of gyration about the centre of mass from the one about a parallel axis (Belyakov (2005), §3.12).
+    """Radius of gyration about the center of mass from the one about a parallel axis (Belyakov (2005), §3.12).
 
     Huygens–Steiner: ``rho_m**2 = rho**2 - r**2``, with ``rho`` the radius of gyration about the rotation axis and
-    ``r`` the distance from the centre of mass to that axis.  For large ``r`` this is a difference of large
+    ``r`` the distance from the center of mass to that axis.  For large ``r`` this is a difference of large
     numbers: the relative error of ``rho_m`` is ``(rho**2 delta_rho + r**2 delta_r) / (rho**2 - r**2)`` to first
     order, however small ``delta_rho`` and ``delta_r`` are — the reason rigs should rotate the body about axes
-    passing near its centre of mass.
+    passing near its center of mass.
 
     Parameters
     ----------
     rho : float
         Radius of gyration about the rotation axis (``rho**2 = I_axis / m``), > 0.
     r : float
-        Distance from the centre of mass to the rotation axis, ``0 <= r < rho``.
+        Distance from the center of mass to the rotation axis, ``0 <= r < rho``.
     rel_error_rho, rel_error_r : float, optional
         Relative measurement errors (bounds) of ``rho`` and ``r``.
 

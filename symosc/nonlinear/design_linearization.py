@@ -107,7 +107,7 @@ def design_amplitude_linearization(
     See Also
     --------
     symosc.nonlinear.averaged_equations : symbolic shortened equations of one oscillator.
-    symosc.nonlinear.harmonic_linearisation : ``J(A)/A`` for a single nonlinearity.
+    symosc.nonlinear.harmonic_linearization : ``J(A)/A`` for a single nonlinearity.
 
     Examples
     --------

@@ -156,7 +156,7 @@ def poincare_operator_system(
     See Also
     --------
     symosc.nonlinear.periodic_solution_ndof : higher orders for ``M q'' + K q = eps f``.
-    symosc.nonlinear.harmonic_linearisation : the one-nonlinearity case (§12.7).
+    symosc.nonlinear.harmonic_linearization : the one-nonlinearity case (§12.7).
 
     Examples
     --------

@@ -68,7 +68,7 @@ def relay_regulator_boundary(alpha: float, beta: float, gamma: float, M: float) 
 
     See Also
     --------
-    symosc.nonlinear.harmonic_linearisation : ``J(b)/b`` for other characteristics.
+    symosc.nonlinear.harmonic_linearization : ``J(b)/b`` for other characteristics.
     poincare_operator_system : the first approximation for a general ``f(D)`` system.
 
     Examples

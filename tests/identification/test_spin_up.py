@@ -71,7 +71,7 @@ def test_formula_rederived_from_uniform_acceleration():
 
 
 def test_huygens_steiner_for_offset_disk():
-    """Uniform disk radius a, axis perpendicular to it at distance r from the centre: rho_m^2 = a^2 / 2."""
+    """Uniform disk radius a, axis perpendicular to it at distance r from the center: rho_m^2 = a^2 / 2."""
     a, r = 0.3, 2.0
     area = math.pi * a**2
     moment, _ = dblquad(lambda y, x: (x - r) ** 2 + y**2, -a, a, lambda x: -math.sqrt(a * a - x * x),

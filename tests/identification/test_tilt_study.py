@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symosc.identification import algorithm1, matrix_pencil, refine, simulate_stand
+from symosc.identification import inertia_from_release, matrix_pencil, refine, simulate_stand
 from symosc.models import body_on_springs
 
 STAND = dict(m=15000, rx=2, rz=0.87, Ixx=3000, Iyy=43000, Izz=44000, Ixz=400, Lx=4, Lz=1.74)
@@ -27,8 +27,8 @@ def _identify(deg):
     J = R @ np.diag([3000.0, 43000.0, 44000.0]) @ R.T
     vals = {**STAND, "Ixx": J[0, 0], "Iyy": J[1, 1], "Izz": J[2, 2], "Ixy": -J[0, 1], "Ixz": 0.0, "Iyz": 0.0}
     rec = simulate_stand(body_on_springs(), vals, force=FORCE, dt=4 * 0.002212, n_samples=600)
-    est = refine(matrix_pencil(rec.clean, rec.dt, 3, constant=False, pencil=100), rec.clean)
-    res = algorithm1(est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74))
+    est = refine(matrix_pencil(rec.clean, rec.dt, 3, constant=False, hankel_size=100), rec.clean)
+    res = inertia_from_release(est.undamped_frequencies, est.mode_shapes, FORCE, (4, 1.74))
     return res, J
 
 

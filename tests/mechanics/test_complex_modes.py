@@ -15,8 +15,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from symosc import ModelError, ParameterError, dot, t
-from symosc.mechanics import LagrangianSystem, LinearModel
-from symosc.mechanics import complex_modes
+from symosc.mechanics import LagrangianSystem, LinearModel, complex_modes
 from symosc.periodic import mathieu_a, mathieu_b
 
 
