@@ -246,8 +246,14 @@ class Absorber:
         ax.legend()
         return ax
 
-    def _sympystr(self, printer: Any) -> str:
-        return f"Absorber(mu={self.mu}, f={self.frequency_ratio}, zeta={self.damping_ratio})"
+    def _repr_latex_(self) -> str:
+        """Mass ratio, tuning and damping of the absorber (Bulgakov (1954), eq. (9.596))."""
+        from .._printing import latex_value
+
+        return (
+            rf"$\mu = {latex_value(self.mu)},\ f = \omega_m/\omega_M = {latex_value(self.frequency_ratio)},\ "
+            rf"\zeta = \beta/\omega_M = {latex_value(self.damping_ratio)}$"
+        )
 
 
 @dataclass(frozen=True)

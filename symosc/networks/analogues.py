@@ -44,7 +44,26 @@ _ANALOGIES = ("force-voltage", "force-current")
 
 
 class MechanicalElement:
-    """Base of mechanical one-ports; ``a | b`` in parallel (common velocity), ``a + b`` in series (common force)."""
+    """Base of mechanical one-ports; ``a | b`` in parallel (common velocity), ``a + b`` in series (common force).
+
+    ``sympy.latex`` of an element is its mechanical impedance ``F/v`` as a function of ``p`` (Bulgakov (1954), §9.28).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import Damper, Mass, Spring
+    >>> m, k, c = Mass(2), Spring(8), Damper(1)
+    >>> mount = k | c
+    >>> chain = m + mount
+    >>> mount.mechanical_impedance()
+    (p + 8)/p
+    >>> print(sp.latex(m))
+    2 p
+
+    See Also
+    --------
+    to_electrical, chain_driving_point
+    """
 
     def mechanical_impedance(self, p: sp.Symbol = P) -> sp.Expr:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -57,6 +76,18 @@ class MechanicalElement:
 
     def __repr__(self) -> str:
         return self._sympystr(None)
+
+    def _latex(self, printer: Any) -> str:
+        Z = self.mechanical_impedance()
+        return printer._print(Z) if printer is not None else sp.latex(Z)
+
+    def _repr_latex_(self) -> str:
+        return f"$Z_m(p) = {self._latex(None)}$"
+
+    def _pretty(self, printer: Any) -> Any:
+        from sympy.printing.pretty.stringpict import prettyForm
+
+        return prettyForm(repr(self))
 
 
 def _check(x: Any) -> MechanicalElement:

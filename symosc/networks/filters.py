@@ -70,8 +70,18 @@ class FilterSection:
         ax.legend()
         return ax
 
-    def _sympystr(self, printer: Any) -> str:
+    def __repr__(self) -> str:
         return f"FilterSection({self.kind}, R={self.R}, band={self.band}, elements={self.elements})"
+
+    def _repr_latex_(self) -> str:
+        """The kind and band as text, then the chain matrix of the section."""
+        from .._printing import latex_value
+
+        band = ", ".join(latex_value(b) for b in self.band)
+        return (
+            rf"$\text{{{self.kind}}},\ R = {latex_value(self.R)},\ \text{{band}}\ \left({band}\right):\ "
+            f"{self.four_pole._latex(None)}$"
+        )
 
 
 def frequency_map(kind: str, omega0: Any, band: tuple | None = None, p: sp.Symbol = P) -> sp.Expr:

@@ -42,6 +42,18 @@ def _chain_at(fp: FourPole, at: Any) -> list:
     return [[mpmath.mpc(M[0, 0]), mpmath.mpc(M[0, 1])], [mpmath.mpc(M[1, 0]), mpmath.mpc(M[1, 1])]]
 
 
+def _latex_values(values: dict) -> str:
+    """``$name = value, ...$`` with mpmath/SymPy numbers typeset to six significant digits."""
+    parts = []
+    for name, v in values.items():
+        try:
+            e = sp.N(sp.sympify(v), 6)
+        except (sp.SympifyError, TypeError):
+            e = sp.Symbol(str(v))
+        parts.append(f"{name} = {sp.latex(e)}")
+    return "$" + r",\ ".join(parts) + "$"
+
+
 @dataclass(frozen=True)
 class ImageParameters:
     """Image parameters at one point ``p``: ``Zx = W/q``, ``Zy = W q``, ``e^{gx}``, ``e^{-gy}``, ``g``, ``delta``.
@@ -70,8 +82,12 @@ class ImageParameters:
             ]
         )
 
-    def _sympystr(self, printer: Any) -> str:
+    def __repr__(self) -> str:
         return f"ImageParameters(W={self.W}, q={self.q}, g={self.g}, delta={self.delta})"
+
+    def _repr_latex_(self) -> str:
+        """``W``, ``q``, ``g``, ``delta`` to six digits (Bulgakov (1954), eqs. (8.286)–(8.299))."""
+        return _latex_values({"W": self.W, "q": self.q, "g": self.g, r"\delta": self.delta})
 
 
 def image_parameters(four_pole: FourPole, at: Any) -> ImageParameters:
@@ -153,6 +169,12 @@ class IterativeParameters:
             ]
         )
 
+    def _repr_latex_(self) -> str:
+        """``Z'``, ``Z''``, ``s'``, ``s''``, ``s``, ``delta`` to six digits (Bulgakov (1954), §8.41)."""
+        return _latex_values(
+            {"Z'": self.Z1, "Z''": self.Z2, "s'": self.s1, "s''": self.s2, "s": self.s, r"\delta": self.delta}
+        )
+
 
 def iterative_parameters(four_pole: FourPole, at: Any) -> IterativeParameters:
     """Iterative parameters at ``p = at`` (Bulgakov (1954), §8.41), radical chosen so that ``Re s' > 0``.
@@ -186,15 +208,33 @@ def iterative_parameters(four_pole: FourPole, at: Any) -> IterativeParameters:
 
 @dataclass(frozen=True)
 class TerminatedResponse:
-    """Currents and voltages of a four-pole between a generator ``E`` (internal ``Zr``) and a load ``ZH``."""
+    """Currents and voltages of a four-pole between a generator ``E`` (internal ``Zr``) and a load ``ZH``.
+
+    Examples
+    --------
+    A series resistor 3 between a source 10 with internal resistance 1 and a load 1: ``I = 10/(1 + 3 + 1) = 2``.
+
+    >>> from symosc.networks import series_element, terminated_response
+    >>> response = terminated_response(series_element(3), 10, 1, 1)
+    >>> response.Iy, response.Ey
+    (2, 2)
+
+    See Also
+    --------
+    terminated_response, image_parameters
+    """
 
     Ex: Any
     Ix: Any
     Ey: Any
     Iy: Any
 
-    def _sympystr(self, printer: Any) -> str:
+    def __repr__(self) -> str:
         return f"TerminatedResponse(Ex={self.Ex}, Ix={self.Ix}, Ey={self.Ey}, Iy={self.Iy})"
+
+    def _repr_latex_(self) -> str:
+        """Input and output voltages and currents."""
+        return _latex_values({"E_x": self.Ex, "I_x": self.Ix, "E_y": self.Ey, "I_y": self.Iy})
 
 
 def terminated_response(four_pole: FourPole, E: Any, Zr: Any, ZH: Any) -> TerminatedResponse:

@@ -35,7 +35,32 @@ __all__ = [
 
 
 class OnePort:
-    """Base class of one-port networks: impedance, admittance, series ``+`` and parallel ``|``."""
+    """Base class of one-port networks: impedance, admittance, series ``+`` and parallel ``|``.
+
+    ``sympy.latex`` of a one-port is its impedance ``Z(p)`` (Bulgakov (1954), §9.21).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import BruneSection, Capacitor, Impedance, Inductor, Resistor
+    >>> R, L, C = Resistor(1), Inductor(2), Capacitor(sp.Rational(1, 2))
+    >>> Z = Impedance(sp.Symbol("Z_A"))
+    >>> tank = L | C
+    >>> net = R + tank
+    >>> net
+    R(1) + (L(2) | C(1/2))
+    >>> net.impedance()
+    (p**2 + 2*p + 1)/(p**2 + 1)
+    >>> print(sp.latex(R + Z))
+    Z_{A} + 1
+    >>> brune = BruneSection(1, 4, 2, 1, load=R)
+    >>> brune.coupling
+    1
+
+    See Also
+    --------
+    Series, Parallel, equivalent_two_pole
+    """
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -64,7 +89,15 @@ class OnePort:
         return f"$Z(p) = {sp.latex(self.impedance())}$"
 
     def _latex(self, printer: Any) -> str:
-        return sp.latex(self.impedance())
+        return printer._print(self.impedance()) if printer is not None else sp.latex(self.impedance())
+
+    def _sympystr(self, printer: Any) -> str:  # pragma: no cover - every element defines its own
+        return type(self).__name__
+
+    def _pretty(self, printer: Any) -> Any:
+        from sympy.printing.pretty.stringpict import prettyForm
+
+        return prettyForm(repr(self))
 
 
 def _check_port(other: Any) -> OnePort:

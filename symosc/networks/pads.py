@@ -24,8 +24,15 @@ class MatchingPad:
     loss: sp.Expr
     four_pole: FourPole
 
-    def _sympystr(self, printer: Any) -> str:
+    def __repr__(self) -> str:
         return f"MatchingPad(Ra={self.Ra}, Rb={self.Rb}, loss={self.loss})"
+
+    def _repr_latex_(self) -> str:
+        """``R_a``, ``R_b``, the loss ``a_0`` and the chain matrix (Bulgakov (1954), eqs. (9.514)–(9.517))."""
+        return (
+            f"$R_a = {sp.latex(self.Ra)},\\ R_b = {sp.latex(self.Rb)},\\ a_0 = {sp.latex(self.loss)},\\ "
+            f"{self.four_pole._latex(None)}$"
+        )
 
 
 def matching_l_pad(Rx: Any, Ry: Any) -> MatchingPad:

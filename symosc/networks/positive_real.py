@@ -38,7 +38,25 @@ _DIGITS = 60
 
 @dataclass(frozen=True)
 class PositiveRealReport:
-    """Outcome of the positive-real test: ``failed`` names the violated condition (``None`` when PR)."""
+    """Outcome of the positive-real test: ``failed`` names the violated condition (``None`` when PR).
+
+    The conditions are those of Bulgakov (1954), §9.23, Theorem V.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import positive_real_report
+    >>> p = sp.Symbol("p")
+    >>> passive = positive_real_report((p + 2) / (p + 1), p)
+    >>> passive
+    PositiveRealReport(positive real)
+    >>> print(sp.latex(passive))
+    \\text{positive real}
+
+    See Also
+    --------
+    positive_real_report, is_positive_real
+    """
 
     is_positive_real: bool
     failed: str | None = None
@@ -51,6 +69,14 @@ class PositiveRealReport:
         if self.is_positive_real:
             return "PositiveRealReport(positive real)"
         return f"PositiveRealReport(not positive real: {self.failed}; {self.detail})"
+
+    def _repr_latex_(self) -> str:
+        """The verdict as text; the violated condition and its detail when not positive real."""
+        from .._printing import latex_value
+
+        if self.is_positive_real:
+            return f"${latex_value('positive real')}$"
+        return f"${latex_value('not positive real')}:\\ {latex_value(f'{self.failed}; {self.detail}')}$"
 
 
 def real_part_on_axis(Z: Any, p: sp.Symbol = P) -> tuple[sp.Poly, sp.Poly]:
@@ -219,10 +245,10 @@ def is_positive_real(Z: Any, p: sp.Symbol = P) -> bool:
 
 def require_positive_real(Z: Any, p: sp.Symbol, what: str = "Z") -> None:
     """Raise ParameterError naming the failed condition unless ``Z`` is positive real."""
-    report = positive_real_report(Z, p)
-    if not report:
+    verdict = positive_real_report(Z, p)
+    if not verdict:
         raise ParameterError(
-            f"{what} is not positive real ({report.failed}: {report.detail}); no passive network realises it "
+            f"{what} is not positive real ({verdict.failed}: {verdict.detail}); no passive network realises it "
             "(Bulgakov (1954), §9.23, Theorem V)"
         )
 

@@ -53,6 +53,11 @@ class DesignLinearization:
         Damping and frequency of the comparison system: roots ``-eps +- i omega``.
     f : callable
         The force ``f(q, v)``.
+
+    Notes
+    -----
+    The instance keeps ``f`` to evaluate :meth:`damping` and :meth:`frequency`, so it pickles exactly when ``f``
+    does: a module-level function (or a picklable callable object) works, a lambda or a closure does not.
     """
 
     a_star: float
@@ -87,6 +92,7 @@ def design_amplitude_linearization(
     ----------
     f : callable
         ``f(q, v)`` (vectorized over NumPy arrays), the force per unit mass; ``q`` the coordinate, ``v = q'``.
+        Define it at module level (not as a lambda) if the result is to be pickled.
     a_star : float
         Design amplitude ``a* > 0``.
     omega0 : float

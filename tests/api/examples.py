@@ -199,7 +199,40 @@ def _scene():
     return loads('[system]\nmodel = "mathieu"\n[[questions]]\nkind = "mathieu_values"\nn = 0\nq = 0\n')
 
 
+def arctan_spring(q, v):
+    """Module-level force ``f(q, v) = arctan(q)`` (Bulgakov (1954), §5.29): picklable, unlike a lambda."""
+    return np.arctan(q)
+
+
+def _design_linearization():
+    from symosc.nonlinear import design_amplitude_linearization
+
+    return design_amplitude_linearization(arctan_spring, 2.0)
+
+
+def _implicit_map_cycle():
+    import sympy as sp
+
+    from symosc.nonlinear import implicit_map_cycle
+
+    a, b = sp.symbols("a b")
+    return implicit_map_cycle(a**2 / 2 - b**2 / 2 - sp.Rational(1, 10) * (a + b) + sp.Rational(1, 5), (a, b), 1.0)
+
+
+def _operator_cycle():
+    import sympy as sp
+
+    from symosc.nonlinear import poincare_operator_system
+
+    D, y, v = sp.symbols("D y v")
+    system = poincare_operator_system(sp.Matrix([[D**2 + 1]]), [(1 - y**2) * v], [y], [v], D)
+    return system.cycles(5.0)
+
+
 FACTORIES: dict[str, Callable[[], Any]] = {
+    "DesignLinearization": _design_linearization,
+    "ImplicitMapCycle": _implicit_map_cycle,
+    "OperatorCycle": _operator_cycle,
     "Compatibility": _compatibility,
     "CubicOptimum": _cubic_optimum,
     "Equilibrium": _equilibrium,
