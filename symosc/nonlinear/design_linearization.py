@@ -39,6 +39,53 @@ def _harmonics(f: Callable, q_star: float, a: float, omega: float, eps: float) -
     return float(vals.sum() * w), float((vals * np.sin(u)).sum() * w), float((vals * np.cos(u)).sum() * w)
 
 
+class _ExpressionForce:
+    """``f(q, v)`` given as a SymPy expression: picklable (the compiled NumPy function is rebuilt after loading)."""
+
+    def __init__(self, expr: Any, q: Any, v: Any) -> None:
+        self.expr, self.q, self.v = expr, q, v
+        self._fn: Callable[..., Any] | None = None
+
+    def __call__(self, q: Any, v: Any) -> Any:
+        if self._fn is None:
+            import sympy as sp
+
+            self._fn = sp.lambdify((self.q, self.v), self.expr, "numpy")
+        return self._fn(q, v)
+
+    def __getstate__(self) -> dict[str, Any]:
+        return {"expr": self.expr, "q": self.q, "v": self.v, "_fn": None}
+
+    def __repr__(self) -> str:
+        return f"f({self.q}, {self.v}) = {self.expr}"
+
+
+def _as_force(f: Any, variables: Any) -> Callable[..., Any]:
+    import sympy as sp
+
+    if not isinstance(f, sp.Basic):
+        if not callable(f):
+            raise ParameterError(f"f must be a callable f(q, v) or a SymPy expression, got {type(f).__name__}")
+        return f
+    if variables is None:
+        names = {s.name: s for s in f.free_symbols}
+        extra = set(names) - {"q", "v"}
+        if extra:
+            raise ParameterError(
+                f"f has symbols {sorted(extra)} besides q and v: pass variables=(q, v) naming the coordinate and "
+                "the velocity (and substitute numbers for the parameters)"
+            )
+        variables = (names.get("q", sp.Symbol("q")), names.get("v", sp.Symbol("v")))
+    try:
+        q, v = variables
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"variables must be a pair (q, v) of SymPy symbols, got {variables!r}") from exc
+    extra = f.free_symbols - {q, v}
+    if extra:
+        raise ParameterError(f"f has free symbols {sorted(map(str, extra))} besides {q}, {v}: substitute numbers")
+    return _ExpressionForce(f, q, v)
+
+
 @dataclass(frozen=True)
 class DesignLinearization:
     """The linear comparison system chosen at the design amplitude (Bulgakov (1954), §5.27).
@@ -57,7 +104,8 @@ class DesignLinearization:
     Notes
     -----
     The instance keeps ``f`` to evaluate :meth:`damping` and :meth:`frequency`, so it pickles exactly when ``f``
-    does: a module-level function (or a picklable callable object) works, a lambda or a closure does not.
+    does: a SymPy expression or a module-level function (or a picklable callable object) works, a lambda or a
+    closure does not.
     """
 
     a_star: float
@@ -84,21 +132,29 @@ class DesignLinearization:
 
 
 def design_amplitude_linearization(
-    f: Callable[..., Any], a_star: float, *, omega0: float = 1.0, tol: float = 1e-12
+    f: Callable[..., Any] | Any,
+    a_star: float,
+    *,
+    omega0: float = 1.0,
+    tol: float = 1e-12,
+    variables: Any = None,
 ) -> DesignLinearization:
     """Linear comparison system of ``q'' + f(q, q') = 0`` at the design amplitude ``a*`` (Bulgakov (1954), §5.27).
 
     Parameters
     ----------
-    f : callable
+    f : callable or SymPy expression
         ``f(q, v)`` (vectorized over NumPy arrays), the force per unit mass; ``q`` the coordinate, ``v = q'``.
-        Define it at module level (not as a lambda) if the result is to be pickled.
+        A SymPy expression in ``q`` and ``v`` is evaluated through NumPy and keeps the result picklable; a callable
+        should be defined at module level (not as a lambda) if the result is to be pickled.
     a_star : float
         Design amplitude ``a* > 0``.
     omega0 : float
         Starting guess for ``omega``.
     tol : float
         Tolerance on the residuals of (5.333)–(5.334).
+    variables : pair of Symbol, optional
+        ``(q, v)`` when ``f`` is a SymPy expression in other symbols than ``q`` and ``v``.
 
     Returns
     -------
@@ -123,6 +179,15 @@ def design_amplitude_linearization(
     >>> lin = design_amplitude_linearization(lambda q, v: np.arctan(q), 2.0)
     >>> round(lin.omega, 12), round(float(np.sqrt(2 * (np.sqrt(5) - 1) / 4)), 12), abs(lin.eps) < 1e-12
     (0.786151377757, 0.786151377757, True)
+
+    The same force as a SymPy expression (then the result can be pickled):
+
+    >>> import pickle
+    >>> import sympy as sp
+    >>> q = sp.Symbol("q")
+    >>> symbolic = design_amplitude_linearization(sp.atan(q), 2.0)
+    >>> round(pickle.loads(pickle.dumps(symbolic)).frequency(2.0), 12) == round(symbolic.frequency(2.0), 12)
+    True
     """
     from scipy.optimize import fsolve
 
@@ -132,8 +197,7 @@ def design_amplitude_linearization(
         raise ParameterError(f"a_star must be a positive number, got {a_star!r}") from exc
     if not np.isfinite(a) or a <= 0:
         raise ParameterError(f"a_star must be a positive finite number, got {a_star!r}")
-    if not callable(f):
-        raise ParameterError(f"f must be a callable f(q, v), got {type(f).__name__}")
+    f = _as_force(f, variables)
 
     def residual(x: np.ndarray) -> np.ndarray:
         q_star, eps, omega = x

@@ -72,3 +72,25 @@ def test_bad_input():
         design_amplitude_linearization(lambda q, v: q, -1.0)
     with pytest.raises(ParameterError):
         design_amplitude_linearization("q", 1.0)
+
+
+def test_sympy_expression_force_matches_closed_form_and_pickles():
+    """f = arctan(q) as a SymPy expression: omega**2 = 2 (sqrt(1 + a**2) - 1) / a**2 (Bulgakov (1954), §5.29)."""
+    import pickle
+
+    import sympy as sp
+
+    q = sp.Symbol("q")
+    a = 1.5
+    lin = design_amplitude_linearization(sp.atan(q), a)
+    assert abs(lin.omega - np.sqrt(2 * (np.sqrt(1 + a * a) - 1)) / a) < 1e-10
+    back = pickle.loads(pickle.dumps(lin))
+    assert back.omega == lin.omega and back.frequency(1.0) == lin.frequency(1.0)
+
+
+def test_expression_with_parameters_needs_numbers():
+    import sympy as sp
+
+    q, k = sp.symbols("q k")
+    with pytest.raises(ParameterError, match="variables"):
+        design_amplitude_linearization(k * sp.atan(q), 1.0)
