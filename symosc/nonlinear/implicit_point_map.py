@@ -46,6 +46,15 @@ class ImplicitMapCycle:
             f"ImplicitMapCycle(({amps}), multiplier={self.multiplier:.6g}, {'stable' if self.stable else 'unstable'})"
         )
 
+    def _repr_latex_(self) -> str:
+        """Fixed-point amplitudes, the multiplier and the verdict of Bulgakov (1954), eqs. (5.153)–(5.154)."""
+        from .._printing import latex_value
+
+        names = ("A", "B")
+        amps = r",\ ".join(f"{n} = {latex_value(a)}" for n, a in zip(names, self.amplitudes, strict=False))
+        verdict = r"\text{stable}" if self.stable else r"\text{unstable}"
+        return rf"${amps},\ \lambda = {latex_value(self.multiplier)}\ \left({verdict}\right)$"
+
 
 def _expr(e: Any, name: str) -> sp.Expr:
     try:

@@ -51,6 +51,16 @@ class OperatorCycle:
     slope: float
     stable: bool
 
+    def _repr_latex_(self) -> str:
+        """Amplitude, frequency correction, slope and the verdict."""
+        from .._printing import latex_value
+
+        verdict = r"\text{stable}" if self.stable else r"\text{unstable}"
+        return (
+            rf"$A^* = {latex_value(self.amplitude)},\ b = {latex_value(self.b)},\ "
+            rf"G'(A^*) = {latex_value(self.slope)}\ \left({verdict}\right)$"
+        )
+
     def multiplier(self, mu: float, omega: float) -> float:
         """First-order nontrivial Floquet multiplier ``1 + mu pi G'(A*) / omega**2``."""
         return 1.0 + mu * np.pi * self.slope / omega**2
