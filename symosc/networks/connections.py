@@ -21,6 +21,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_sympy_matrix
 from ..errors import ModelError, ParameterError
 from ._nodal import Netlist, chain_from_netlist, sample_points
 from ._util import as_expr
@@ -53,7 +54,7 @@ def _four_pole(x: Any, name: str) -> FourPole:
 
 
 def cascade(*four_poles: FourPole) -> FourPole:
-    """Cascade (tandem) connection: ``A = A_1 A_2 ... A_n``, Bulgakov (1954), eq. (8.270).
+    """Cascade (tandem) connection, chain matrix A = A_1 A_2 ⋯ A_n (Bulgakov (1954), eq. (8.270)).
 
     Examples
     --------
@@ -319,7 +320,7 @@ def chain_power(section: Any, n: Any) -> sp.Matrix:
     --------
     cascade, image_parameters
     """
-    A = section.chain if isinstance(section, FourPole) else sp.Matrix(section)
+    A = section.chain if isinstance(section, FourPole) else check_sympy_matrix("section", section)
     if A.shape != (2, 2):
         raise ParameterError(f"section must be a FourPole or 2x2 matrix, got shape {A.shape}")
     n = as_expr(n, "n")

@@ -293,7 +293,9 @@ def insertion_loss(four_pole: FourPole, Zr: Any, ZH: Any, at: Any) -> Any:
 
 
 def working_loss(four_pole: FourPole, Zr: Any, ZH: Any, at: Any) -> Any:
-    """Working (operating) propagation: ``e^{g_work} = A'12 / (2 sqrt(Rr RH))`` (Bulgakov (1954), §8.48).
+    """Working (operating) propagation constant between given terminations (Bulgakov (1954), §8.48).
+
+    ``exp(g_work) = A'12 / (2 sqrt(Rr RH))``.
 
     ``Re g_work = ½ ln(P_max/P) >= 0`` for a passive network; ``Rr``, ``RH`` are the real parts of ``Zr``, ``ZH``
     at ``p = at``.
