@@ -147,3 +147,22 @@ def test_special_functions_through_scipy():
         got, [float(mpmath.besselj(1, 2.5)), float(mpmath.besseli(0, 2.5)), float(mpmath.ellipk(0.3))], rtol=1e-14
     )
     assert "scipy.special" in f.source
+
+
+def test_checked_array_call_names_the_bad_argument_and_matches_raw():
+    """Small arrays take a whole-batch check; a single bad entry still gives the argument's name."""
+    x = sp.Symbol("x", real=True)
+    m = sp.Symbol("m", positive=True)
+    f = compile(m * x**2 + sp.sqrt(m), [x, m])
+    xs, ms = np.linspace(-1.0, 1.0, 5), np.linspace(0.5, 2.0, 5)
+    np.testing.assert_array_equal(f(xs, ms), f.raw(xs, ms))
+    np.testing.assert_array_equal(f(xs, 2), f.raw(xs, 2))  # mixed array and int
+    bad = ms.copy()
+    bad[3] = -1.0
+    with pytest.raises(ParameterError, match="m must be positive"):
+        f(xs, bad)
+    bad[3] = np.nan
+    with pytest.raises(ParameterError, match="m must be finite"):
+        f(xs, bad)
+    with pytest.raises(ParameterError, match="x must be finite"):
+        f(np.array([0.0, np.inf]), ms[:2])

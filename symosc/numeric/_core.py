@@ -132,9 +132,27 @@ class _SlowPath:
 
     def __init__(self, fname: str, args: tuple, backend: str, func: Callable) -> None:
         self.fname, self.args, self.backend, self.func = fname, args, backend, func
+        self.positive = [i for i, s in enumerate(args) if s.is_positive]
+        self.nonnegative = [i for i, s in enumerate(args) if s.is_nonnegative and not s.is_positive]
+
+    def _arrays_if_valid(self, values: tuple) -> tuple | None:
+        """Real arrays and scalars checked in a few whole-batch NumPy calls; None sends the call to the naming path."""
+        if self.backend == "mpmath" or len(values) != len(self.args):
+            return None
+        arrs = [np.asarray(v) for v in values]
+        if not arrs or any(a.dtype.kind not in "fiu" or a.size == 0 for a in arrs):
+            return None
+        if not np.isfinite(np.concatenate([a.ravel() for a in arrs])).all():
+            return None
+        for indices, ok in ((self.positive, np.greater), (self.nonnegative, np.greater_equal)):
+            if indices and not ok(np.concatenate([arrs[i].ravel() for i in indices]).min(), 0):
+                return None
+        return tuple(a.item() if a.ndim == 0 else a for a in arrs)
 
     def __call__(self, *values: Any) -> Any:
-        checked = check_all(self.args, values, self.backend)
+        checked = self._arrays_if_valid(values)
+        if checked is None:
+            checked = check_all(self.args, values, self.backend)
         if self.backend in ("c", "llvm"):
             for s, v in zip(self.args, checked, strict=True):
                 if np.iscomplexobj(v):
