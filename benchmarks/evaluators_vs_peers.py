@@ -192,7 +192,19 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--build-only", action="store_true", help="only symosc's build times (numpy and c backends)")
+    ap.add_argument("--checks", action="store_true", help="only checked vs unchecked calls on scalars and small arrays")
     ns = ap.parse_args()
+    if ns.checks:
+        print(f"{'n':>3}{'backend':>8}{'states k':>10}{'checked µs':>12}{'raw µs':>10}{'ratio':>7}")
+        for n in (3, 10):
+            case = Case(n)
+            mf = compile(sp.Matrix.hstack(case.M, case.F), [*case.q, *case.u, *case.params])
+            for k in (1, 4, 16, 64):
+                vals = [float(v) for v in case.y] if k == 1 else list(case.Y[:, :k])
+                vals += list(case.p)
+                checked, raw = per_call(mf, *vals), per_call(mf.raw, *vals)
+                print(f"{n:3d}{'numpy':>8}{k:10d}{checked:12.2f}{raw:10.2f}{checked / raw:7.2f}")
+        return
     sizes = (3, 6) if ns.quick else (3, 6, 10, 20)
     workdir = tempfile.mkdtemp(prefix="symosc_bench_")
     os.environ["SYMOSC_CACHE_DIR"] = os.path.join(workdir, "cache")  # first C builds are really first builds
