@@ -11,6 +11,7 @@
   :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
   :func:`luzin_form`.
+* Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 """
 
 from .block import (
@@ -22,6 +23,7 @@ from .block import (
     triangular_adjugate_series,
     triangular_inverse_series,
 )
+from .cayley import cayley_real_form, real_matrix_function
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
@@ -54,6 +56,7 @@ __all__ = [
     "block_determinant",
     "block_inverse",
     "bordering_inverse",
+    "cayley_real_form",
     "charpoly",
     "cyclic_block_determinant",
     "danilevsky",
@@ -74,6 +77,7 @@ __all__ = [
     "pencil_divisors",
     "pencil_modal_matrix",
     "polymatrix_divmod",
+    "real_matrix_function",
     "series_converges",
     "smith_form",
     "spectral_decomposition",
