@@ -11,9 +11,11 @@
   :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
   :func:`luzin_form`.
+* Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 """
 
+from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
 from .block import (
     BorderingInverse,
     block_determinant,
@@ -52,6 +54,8 @@ __all__ = [
     "SpectralComponent",
     "SpectralDecomposition",
     "TriangularForm",
+    "adjugate_derivative_at_root",
+    "adjugate_derivatives",
     "adjugate_poly",
     "block_determinant",
     "block_inverse",
