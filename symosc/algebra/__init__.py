@@ -13,6 +13,7 @@
   :func:`luzin_form`.
 * Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
+* Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
 """
 
 from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
@@ -42,6 +43,7 @@ from .polynomial_matrices import (
     polymatrix_divmod,
     smith_form,
 )
+from .power_series import matrix_power_series
 from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
 
 __all__ = [
@@ -74,6 +76,7 @@ __all__ = [
     "leverrier",
     "luzin_form",
     "matrix_function",
+    "matrix_power_series",
     "matrizant",
     "matrizant_numeric",
     "minimal_polynomial",
