@@ -11,8 +11,12 @@
   :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
   :func:`luzin_form`.
+* Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
+* Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
+* Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
 """
 
+from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
 from .block import (
     BorderingInverse,
     block_determinant,
@@ -22,6 +26,7 @@ from .block import (
     triangular_adjugate_series,
     triangular_inverse_series,
 )
+from .cayley import cayley_real_form, real_matrix_function
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
@@ -38,6 +43,7 @@ from .polynomial_matrices import (
     polymatrix_divmod,
     smith_form,
 )
+from .power_series import matrix_power_series
 from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
 
 __all__ = [
@@ -50,10 +56,13 @@ __all__ = [
     "SpectralComponent",
     "SpectralDecomposition",
     "TriangularForm",
+    "adjugate_derivative_at_root",
+    "adjugate_derivatives",
     "adjugate_poly",
     "block_determinant",
     "block_inverse",
     "bordering_inverse",
+    "cayley_real_form",
     "charpoly",
     "cyclic_block_determinant",
     "danilevsky",
@@ -67,6 +76,7 @@ __all__ = [
     "leverrier",
     "luzin_form",
     "matrix_function",
+    "matrix_power_series",
     "matrizant",
     "matrizant_numeric",
     "minimal_polynomial",
@@ -74,6 +84,7 @@ __all__ = [
     "pencil_divisors",
     "pencil_modal_matrix",
     "polymatrix_divmod",
+    "real_matrix_function",
     "series_converges",
     "smith_form",
     "spectral_decomposition",
