@@ -28,6 +28,7 @@ from .connections import brune_test, cascade, chain_power, parallel, parallel_se
 from .conversions import PARAMETER_KINDS, convert_parameters
 from .filters import (
     FilterSection,
+    bandpass_attenuation_poles,
     constant_k_section,
     frequency_map,
     image_operating_loss,
@@ -110,6 +111,7 @@ __all__ = [
     "absorber_hinf_optimum",
     "absorber_optimum",
     "amplification_squared",
+    "bandpass_attenuation_poles",
     "biquadratic_is_positive_real",
     "bott_duffin_synthesis",
     "bridged_t_section",

@@ -27,6 +27,7 @@ from .sections import lattice, t_section
 
 __all__ = [
     "FilterSection",
+    "bandpass_attenuation_poles",
     "constant_k_section",
     "frequency_map",
     "image_operating_loss",
@@ -184,7 +185,17 @@ def m_derived_section(
     """m-derived T section: series ``m Z1/2``, shunt ``Z2/m + (1 - m²) Z1/(4m)`` (§9.29, standard forms).
 
     Its image impedance equals the constant-k T's; the low-pass prototype has infinite attenuation at
-    ``ω∞ = ω0/sqrt(1 - m²)`` (``m = sqrt(1 - ω0²/ω∞²)``).
+    ``ω∞ = ω0/sqrt(1 - m²)`` (``m = sqrt(1 - ω0²/ω∞²)``).  High-pass, band-pass and band-stop sections are the
+    low-pass one under ``p/ω0 -> F(p)`` (:func:`frequency_map`, Bulgakov (1954), §9.30–9.32).
+
+    ``elements`` holds the element values of one half-section (series arm ``m Z1/2``, shunt arm of the T):
+
+    * low-pass: series ``L_series``; shunt ``C_shunt`` in series with ``L_shunt``;
+    * high-pass: series ``C_series``; shunt ``L_shunt`` in series with ``C_shunt``;
+    * band-pass: series ``L_series`` + ``C_series`` in series; shunt: the tank ``L_shunt_tank`` ‖
+      ``C_shunt_tank`` in series with ``L_shunt`` + ``C_shunt``;
+    * band-stop: series tank ``L_series`` ‖ ``C_series``; shunt: ``L_shunt`` + ``C_shunt`` in series with the
+      tank ``L_shunt_tank`` ‖ ``C_shunt_tank``.
 
     Examples
     --------
@@ -192,10 +203,12 @@ def m_derived_section(
     >>> sec = m_derived_section("lowpass", 1, 1, 0.6)
     >>> sec.attenuation_phase(1.24)[0] > 4                  # near the pole of attenuation 1/sqrt(1 - 0.36)
     True
+    >>> m_derived_section("highpass", 1, 1, 0.5).elements["C_series"]
+    2.00000000000000
 
     See Also
     --------
-    constant_k_section
+    constant_k_section, frequency_map, bandpass_attenuation_poles
     """
     R, w0 = element_value(R, "R"), element_value(omega0, "omega0")
     m = as_expr(m, "m")
@@ -207,13 +220,84 @@ def m_derived_section(
     za = m * z1 / 2
     zb = z2 / m + (1 - m**2) / (4 * m) * z1
     fp = t_section(za, zb, za, p=p)
-    L, C = R / w0, 1 / (R * w0)
-    elements = {"L_series": m * L, "C_shunt": 2 * m * C, "L_shunt": (1 - m**2) / (2 * m) * L}
-    if kind != "lowpass":
-        elements = {}
+    elements = _m_derived_elements(kind, R, w0, m, band)
     return FilterSection(
         kind, FourPole(fp.chain, p, fp.netlist, name=f"m-derived {kind}"), elements, R, tuple(band) if band else (w0,)
     )
+
+
+def _m_derived_elements(kind: str, R: sp.Expr, w0: sp.Expr, m: sp.Expr, band: tuple | None) -> dict:
+    """Element values of the m-derived half-section: each reactance of the low-pass one mapped by F(p)."""
+    k = (1 - m**2) / (2 * m)  # shunt-arm inductance factor of the low-pass prototype
+    if kind == "lowpass":
+        return {"L_series": m * R / w0, "C_shunt": 2 * m / (R * w0), "L_shunt": k * R / w0}
+    if kind == "highpass":  # s = w0/p: every L -> C and C -> L
+        return {"C_series": 1 / (m * R * w0), "L_shunt": R / (2 * m * w0), "C_shunt": 1 / (k * R * w0)}
+    w1, w2 = (sp.sympify(v) for v in band)
+    bw, w12 = w2 - w1, w1 * w2
+    if kind == "bandpass":  # s = p/bw + w1 w2/(bw p): L -> series LC, C -> parallel LC
+        return {
+            "L_series": m * R / bw,
+            "C_series": bw / (m * R * w12),
+            "L_shunt_tank": R * bw / (2 * m * w12),
+            "C_shunt_tank": 2 * m / (R * bw),
+            "L_shunt": k * R / bw,
+            "C_shunt": bw / (k * R * w12),
+        }
+    # band-stop: s = bw p/(p² + w1 w2): L -> parallel LC, C -> series LC
+    return {
+        "L_series": m * R * bw / w12,
+        "C_series": 1 / (m * R * bw),
+        "L_shunt": R / (2 * m * bw),
+        "C_shunt": 2 * m * bw / (R * w12),
+        "L_shunt_tank": k * R * bw / w12,
+        "C_shunt_tank": 1 / (k * R * bw),
+    }
+
+
+def bandpass_attenuation_poles(m: Any, band: tuple) -> tuple[sp.Expr, sp.Expr]:
+    """Frequencies of infinite attenuation of the m-derived band-pass section (Bulgakov (1954), eq. (9.477)).
+
+    The low-pass prototype's pole ``x∞ = 1/sqrt(1 - m²)`` maps through ``ω² - ω1 ω2 = ± x∞ (ω2 - ω1) ω`` to
+
+    ``ω∞± = sqrt(ω1 ω2 + x∞² (ω2 - ω1)²/4) ± x∞ (ω2 - ω1)/2``,
+
+    one below and one above the pass band, with ``ω∞- ω∞+ = ω1 ω2``.
+
+    Parameters
+    ----------
+    m : number or SymPy expression
+        The m of the section, ``0 < m < 1``.
+    band : (omega1, omega2)
+        Pass-band edges.
+
+    Returns
+    -------
+    (omega_low, omega_high) : tuple of SymPy expressions
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import bandpass_attenuation_poles
+    >>> lo, hi = bandpass_attenuation_poles(sp.Rational(3, 5), (1, 4))
+    >>> lo, hi, sp.simplify(lo * hi)
+    (-15/8 + sqrt(481)/8, 15/8 + sqrt(481)/8, 4)
+
+    See Also
+    --------
+    m_derived_section, frequency_map
+    """
+    m = as_expr(m, "m")
+    if not (m.is_positive and (1 - m).is_positive):
+        raise ParameterError(f"m must satisfy 0 < m < 1 for finite attenuation poles, got {m}")
+    if band is None or len(band) != 2:
+        raise ParameterError("band must be (omega1, omega2)")
+    w1, w2 = element_value(band[0], "omega1"), element_value(band[1], "omega2")
+    if not (w2 - w1).is_positive:
+        raise ParameterError("band must satisfy omega1 < omega2")
+    half = (w2 - w1) / (2 * sp.sqrt(1 - m**2))
+    root = sp.sqrt(w1 * w2 + half**2)
+    return sp.simplify(root - half), sp.simplify(root + half)
 
 
 def image_operating_loss(W: Any, g: Any, n: int, Rg: Any, Rl: Any) -> Any:

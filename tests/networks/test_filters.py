@@ -14,6 +14,7 @@ from symosc.errors import ParameterError
 from symosc.networks import (
     Capacitor,
     Inductor,
+    bandpass_attenuation_poles,
     cascade,
     constant_k_section,
     image_operating_loss,
@@ -112,3 +113,75 @@ def test_lattice_from_transmission():
         assert abs(mpmath.exp(-ip.g) - complex(X.subs(p, 1j * w))) < 1e-12
     with pytest.raises(ParameterError, match="not positive real"):
         lattice_from_transmission(2 * (1 - p) / (1 + p), 1, p)  # |X| = 2 > 1: needs an amplifier
+
+
+def _arm(*parts):
+    """Impedance of elements in series; a part is ("L", v), ("C", v) or ("tank", L, C) (parallel LC)."""
+    z = 0
+    for part in parts:
+        if part[0] == "L":
+            z += part[1] * p
+        elif part[0] == "C":
+            z += 1 / (part[1] * p)
+        else:
+            z += 1 / (1 / (part[1] * p) + part[2] * p)
+    return z
+
+
+def _arms_from_elements(kind, e):
+    """Series half-arm and shunt arm built by hand from the element values (the topology in the docstring)."""
+    if kind == "lowpass":
+        return _arm(("L", e["L_series"])), _arm(("C", e["C_shunt"]), ("L", e["L_shunt"]))
+    if kind == "highpass":
+        return _arm(("C", e["C_series"])), _arm(("L", e["L_shunt"]), ("C", e["C_shunt"]))
+    tank = ("tank", e["L_shunt_tank"], e["C_shunt_tank"])
+    if kind == "bandpass":
+        return _arm(("L", e["L_series"]), ("C", e["C_series"])), _arm(tank, ("L", e["L_shunt"]), ("C", e["C_shunt"]))
+    return _arm(("tank", e["L_series"], e["C_series"])), _arm(("L", e["L_shunt"]), ("C", e["C_shunt"]), tank)
+
+
+@pytest.mark.parametrize("kind", ["lowpass", "highpass", "bandpass", "bandstop"])
+def test_m_derived_elements_and_prototype_mapping(kind):
+    """§9.29-9.32: the element values rebuild the designed chain matrix (cascade of element four-poles); the
+    section is the low-pass m-derived prototype under p/w0 -> F(p); image impedance equals the constant-k one."""
+    R, w0, m, band = 600, 3, sp.Rational(2, 5), (2, 5)
+    sec = m_derived_section(kind, R, w0, m, band)
+    za, zb = _arms_from_elements(kind, sec.elements)
+    built = cascade(series_element(za, p=p), shunt_element(zb, p=p), series_element(za, p=p)).chain
+    assert (built - sec.four_pole.chain).applyfunc(sp.cancel) == sp.zeros(2, 2)
+    # prototype mapping, evaluated directly on the hand-written low-pass T
+    F = {"lowpass": p / w0, "highpass": w0 / p}.get(kind) or (
+        (p**2 + 10) / (3 * p) if kind == "bandpass" else 3 * p / (p**2 + 10)
+    )
+    s = sp.Symbol("s")
+    za0, zb0 = m * R * s, R / (2 * m * s) + (1 - m**2) / (2 * m) * R * s
+    proto = sp.Matrix([[1 + za0 / zb0, 2 * za0 + za0**2 / zb0], [1 / zb0, 1 + za0 / zb0]])
+    assert (proto.subs(s, F) - sec.four_pole.chain).applyfunc(sp.cancel) == sp.zeros(2, 2)
+    k = constant_k_section(kind, R, w0, band)
+    for w in (0.7, 2.9, 4.1, 8.0):
+        Wm = image_parameters(sec.four_pole, 1j * w).W
+        Wk = image_parameters(k.four_pole, 1j * w).W
+        assert abs(Wm - Wk) < 1e-9 * abs(Wk)
+        # image attenuation of the mapped prototype: closed form a + ib = 2 asinh sqrt(za0/zb0 ... ) at s = F(iw)
+        sv = complex(F.subs(p, 1j * w)) if F.has(p) else F
+        z_a, z_b = complex(za0.subs(s, sv)), complex(zb0.subs(s, sv))
+        g = 2 * mpmath.asinh(mpmath.sqrt(z_a / (2 * z_b)))
+        a = sec.attenuation_phase(w)[0]
+        assert abs(a - abs(float(mpmath.re(g)))) < 1e-8
+
+
+def test_bandpass_attenuation_poles_are_transmission_zeros():
+    """Eq. (9.477): the closed-form poles are the imaginary-axis zeros of 1/A of the m-derived band-pass T."""
+    m, band = sp.Rational(3, 5), (2, 7)
+    sec = m_derived_section("bandpass", 75, 1, m, band)
+    num = sp.numer(sp.cancel(1 / sec.four_pole.chain[0, 0]))
+    roots = [complex(r) for r in sp.Poly(num, p).nroots(n=30)]
+    zeros = sorted(r.imag for r in roots if abs(r.real) < 1e-20 and r.imag > 0)
+    lo, hi = bandpass_attenuation_poles(m, band)
+    assert len(zeros) == 2
+    assert abs(zeros[0] - float(lo)) < 1e-12 and abs(zeros[1] - float(hi)) < 1e-12
+    assert float(lo) < 2 < 7 < float(hi)
+    with pytest.raises(ParameterError, match="0 < m < 1"):
+        bandpass_attenuation_poles(1, band)
+    with pytest.raises(ParameterError, match="omega1 < omega2"):
+        bandpass_attenuation_poles(m, (7, 2))
