@@ -125,7 +125,7 @@ def table_4(quick: bool = False) -> None:
     errs = {k: 100 * abs(res.as_dict()[k] - v) / v for k, v in true.items()}
     print("symosc errors vs the true body, %:", {k: round(v, 3) for k, v in errs.items()})
     print(f"(record: {rec.signals.shape[1]} samples at dt = {rec.dt:g} s, sigma = {rec.noise_sigma:.3g} m, "
-          "noise seed 2005;"
+          "random generator state 2005;"
           " matrix pencil + variable-projection refinement)")  # fmt: skip
     _plot_signals(rec)
 

@@ -45,7 +45,7 @@ def _point_chain(m, l, g):
     return M, np.diag([l[i] * tail[i] for i in range(n)])
 
 
-def check_inverted_pendulum_n1():
+def test_example_inverted_pendulum_n1():
     """Kapitza pendulum: the interval ends solve a_0(q) = a and b_1(q) = a (SciPy's Mathieu functions)."""
     _, res = _run("inverted_pendulum_n1")
     m, l, g = 0.01, 0.2, 9.81
@@ -70,7 +70,7 @@ def check_inverted_pendulum_n1():
         assert (lo, hi) == pytest.approx((q_lo * length / 2, q_hi * length / 2), rel=1e-7)
 
 
-def check_inverted_pendulum_n3():
+def test_example_inverted_pendulum_n3():
     """Triple chain: stability interval and Floquet verdicts against the hand-written 6-D system."""
     _, res = _run("inverted_pendulum_n3")
     M, C = _point_chain([0.02] * 3, [0.05] * 3, 9.81)
@@ -94,7 +94,7 @@ def check_inverted_pendulum_n3():
         assert (row["stability"] == "stable") == inside
 
 
-def check_van_der_pol_series():
+def test_example_van_der_pol_series():
     """Amplitude of the cycle at eps = 0.3 from a long SciPy integration, against the series in the report."""
     _, res = _run("van_der_pol_series")
     eps = 0.3
@@ -107,7 +107,7 @@ def check_van_der_pol_series():
     assert res["limit_cycle"].data["validation"][1]["amplitude_error"] < 1e-7
 
 
-def check_duffing_resonance():
+def test_example_duffing_resonance():
     """Every point of the curve solves the textbook equation
     [(w0^2 - nu^2 + 3 mu a^2/4)^2 + (2 zeta w0 nu)^2] a^2 = R^2;
     the number of steady states changes from 1 to 3 across each jump frequency."""
@@ -131,7 +131,7 @@ def check_duffing_resonance():
     assert [n_states(jumps[1] - 1e-3), n_states(jumps[1] + 1e-3)] == [3, 1]
 
 
-def check_carson_solution():
+def test_example_carson_solution():
     """Against sympy.dsolve of y'' + 3y' + 2y = 1, y(0) = y'(0) = 0."""
     _, res = _run("carson_solution")
     t = sp.Symbol("t")
@@ -145,7 +145,7 @@ def check_carson_solution():
         assert val == pytest.approx(float(ref.subs(t, tt)), rel=1e-12)
 
 
-def check_mathieu_values():
+def test_example_mathieu_values():
     _, res = _run("mathieu_values")
     rows = [r for qr in res.results if qr.kind == "mathieu_values" for r in qr.data["values"]]
     kinds = ["a"] * 9 + ["b"] * 4
@@ -155,7 +155,7 @@ def check_mathieu_values():
     assert res["ince_strutt"].figures[0].drawer == "ince_strutt"
 
 
-def check_spring_pendulum():
+def test_example_spring_pendulum():
     """Hand linearisation: M = [[M+m, m l], [m l, m l^2]], K = diag(k, m g l)."""
     _, res = _run("spring_pendulum")
     Mb, m, l, k, g = 2.0, 0.5, 0.4, 200.0, 9.81
@@ -166,7 +166,7 @@ def check_spring_pendulum():
     assert r"\ddot{\phi}" in res["equations_of_motion"].data["latex"]
 
 
-def check_belyakov_identification():
+def test_example_belyakov_identification():
     """The record was simulated from the dissertation's body: Algorithm 1 recovers it."""
     _, res = _run("belyakov_identification")
     est = res["identify"].data["inertia"]
@@ -175,7 +175,7 @@ def check_belyakov_identification():
         assert est[key] == pytest.approx(val, rel=5e-3 if key == "Ixz" else 5e-4), key
 
 
-def check_belyakov_stand():
+def test_example_belyakov_stand():
     """Hand-built 3-DOF stand (springs at the rectangle's corners) and the dissertation's Table 3."""
     _, res = _run("belyakov_stand")
     m, rx, rz, Izz, Ixx, Ixz, k, Lx, Lz = 15000, 2, 0.87, 44000, 3000, 400, 7.4e5, 4, 1.74
@@ -193,7 +193,7 @@ def check_belyakov_stand():
         np.testing.assert_allclose(np.array(hz) * 2 * np.pi, freqs(r), rtol=1e-12)
 
 
-CHECKS = {name[len("check_") :]: fn for name, fn in globals().items() if name.startswith("check_")}
+CHECKS = {name[len("test_example_") :] for name in globals() if name.startswith("test_example_")}
 
 
 # checked in test_scene.py (textbook double pendulum with SciPy; Floquet multipliers at the interval's ends)
@@ -206,8 +206,3 @@ def test_every_example_has_an_independent_check():
     assert hasattr(test_scene, "test_double_pendulum_frequencies_against_the_textbook_model")
     assert hasattr(test_scene, "test_gribkov2015_stability_interval_against_floquet")
     assert sorted({*CHECKS, *CHECKED_ELSEWHERE}) == sorted(p.stem for p in EXAMPLES.glob("*.toml"))
-
-
-@pytest.mark.parametrize("name", sorted(CHECKS))
-def test_example(name):
-    CHECKS[name]()
