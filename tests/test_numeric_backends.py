@@ -39,15 +39,7 @@ EXPRS = [
 ]
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _private_cache(tmp_path_factory):
-    old = os.environ.get("SYMOSC_CACHE_DIR")
-    os.environ["SYMOSC_CACHE_DIR"] = str(tmp_path_factory.mktemp("symosc_cache"))
-    yield
-    if old is None:
-        os.environ.pop("SYMOSC_CACHE_DIR")
-    else:
-        os.environ["SYMOSC_CACHE_DIR"] = old
+pytestmark = pytest.mark.usefixtures("private_symosc_cache")
 
 
 @pytest.fixture(scope="module")

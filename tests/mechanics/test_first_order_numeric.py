@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
 import sympy as sp
@@ -17,15 +15,7 @@ VALUES = {"m1": 1.3, "m2": 0.7, "l1": 0.9, "l2": 1.4, "g": 9.81}
 BACKENDS = ["numpy", "c"]
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _private_cache(tmp_path_factory):
-    old = os.environ.get("SYMOSC_CACHE_DIR")
-    os.environ["SYMOSC_CACHE_DIR"] = str(tmp_path_factory.mktemp("symosc_cache"))
-    yield
-    if old is None:
-        os.environ.pop("SYMOSC_CACHE_DIR")
-    else:
-        os.environ["SYMOSC_CACHE_DIR"] = old
+pytestmark = pytest.mark.usefixtures("private_symosc_cache")
 
 
 @pytest.fixture(scope="module")
