@@ -47,6 +47,8 @@ def _write_api_pages() -> None:
     """One page per subpackage with an autosummary of every name in its ``__all__``."""
     api = Path(__file__).parent / "api"
     api.mkdir(exist_ok=True)
+    for stale in (api / "generated").glob("*.rst"):  # pages of names no longer public are rebuilt, not kept
+        stale.unlink()
     mods = ["symosc", *_subpackages()]
     index = ["API reference", "=============", "", "Every public object, generated from the docstrings.", ""]
     index += [".. toctree::", "   :maxdepth: 1", ""] + [f"   {m}" for m in mods]

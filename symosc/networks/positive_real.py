@@ -21,7 +21,7 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
-from ..operational.integral_square import is_hurwitz
+from ..operational.integral_square import _hurwitz_verdict
 from ._util import P, as_expr, as_symbol, rational_function
 
 __all__ = [
@@ -160,7 +160,7 @@ def positive_real_report(Z: Any, p: sp.Symbol = P) -> PositiveRealReport:
     Dm = sp.Poly(D.as_expr().subs(p, -p), p)
     G = sp.gcd(D, Dm)
     rest = sp.div(D, G)[0]
-    if rest.degree() > 0 and not is_hurwitz(rest.as_expr(), p):
+    if rest.degree() > 0 and not _hurwitz_verdict(rest):
         return _fail("pole in the right half-plane", f"the denominator factor {rest.as_expr()} is not Hurwitz")
     if G.degree() > 0:
         report = _axis_poles(N, D, G, p)

@@ -21,7 +21,7 @@ from .difference import (
     step_image,
 )
 from .heaviside import first_expansion, heaviside_expand, residue_inverse
-from .integral_square import cross_integral, hurwitz_matrix, integral_square, is_hurwitz, pairwise_root_sum_product
+from .integral_square import cross_integral, integral_square, pairwise_root_sum_product
 from .systems import OperationalSolution, solve_operational
 from .table import CARSON_TABLE, TableEntry, carson_by_table, carson_matrix_exp, table_entry
 from .theorems import (
@@ -71,7 +71,6 @@ __all__ = [
     "first_expansion",
     "heaviside_expand",
     "higher_difference",
-    "hurwitz_matrix",
     "indefinite_sum",
     "initial_value",
     "integral_square",
@@ -81,7 +80,6 @@ __all__ = [
     "inverse_carson",
     "inverse_step_image",
     "invert_numeric",
-    "is_hurwitz",
     "multiple_advance",
     "pairwise_root_sum_product",
     "product_of_originals",
@@ -94,6 +92,45 @@ __all__ = [
     "table_entry",
     "to_transfer_function",
 ]
+
+
+
+def _deprecated_hurwitz_matrix(denominator, p):
+    import sympy as sp
+
+    from .integral_square import _hurwitz_rows
+
+    return _hurwitz_rows(sp.Poly(denominator, p))
+
+
+def _deprecated_is_hurwitz(denominator, p):
+    import sympy as sp
+
+    from .integral_square import _hurwitz_verdict
+
+    return _hurwitz_verdict(sp.Poly(denominator, p))
+
+
+# one name per concept: the Hurwitz test lives in symosc.linear
+_DEPRECATED = {
+    "hurwitz_matrix": (
+        _deprecated_hurwitz_matrix,
+        "symosc.linear.hurwitz_matrix(sympy.Poly(denominator, p)) (rows as in Bulgakov (1954), eq. (8.117); "
+        "this old function returned the transpose)",
+    ),
+    "is_hurwitz": (_deprecated_is_hurwitz, "symosc.linear.hurwitz(sympy.Poly(denominator, p)).stable"),
+}
+
+
+def __getattr__(name):
+    if name in _DEPRECATED:
+        from .._deprecation import warn_deprecated
+
+        func, new = _DEPRECATED[name]
+        warn_deprecated(f"symosc.operational.{name}", new)
+        return func
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 from .._validate import guard_public_api as _guard_public_api

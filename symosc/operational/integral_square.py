@@ -21,29 +21,28 @@ import sympy as sp
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots, exactify, has_floats
 
-__all__ = ["cross_integral", "hurwitz_matrix", "integral_square", "is_hurwitz", "pairwise_root_sum_product"]
+__all__ = ["cross_integral", "integral_square", "pairwise_root_sum_product"]
 
 _METHODS = ("auto", "hurwitz", "closed", "residues")
 
 
-def hurwitz_matrix(denominator, p: sp.Symbol) -> sp.Matrix:
-    """The ``s x s`` Hurwitz matrix ``Hw[i, j] = k_(2j - i)`` (1-based) of ``k0 p**s + … + ks``.
+def _hurwitz_rows(polynomial: sp.Poly) -> sp.Matrix:
+    """``Hw_s[i, j] = k_(2j-i)``: the transpose of :func:`symosc.linear.hurwitz_matrix` (Bulgakov (8.117))."""
+    from ..linear import hurwitz_matrix
 
-    >>> import sympy as sp
-    >>> p = sp.Symbol("p")
-    >>> hurwitz_matrix(p**3 + 2 * p**2 + 3 * p + 4, p)
-    Matrix([
-    [2, 4, 0],
-    [1, 3, 0],
-    [0, 2, 4]])
-    """
-    k = sp.Poly(denominator, p).all_coeffs()
-    s = len(k) - 1
+    return sp.Matrix(hurwitz_matrix(polynomial)).T
 
-    def coef(m):
-        return k[m] if 0 <= m <= s else 0
 
-    return sp.Matrix(s, s, lambda i, j: coef(2 * (j + 1) - (i + 1)))
+def _hurwitz_verdict(polynomial: sp.Poly) -> bool | None:
+    """True / False when the Hurwitz conditions are decided, None when they stay symbolic."""
+    from ..linear import hurwitz
+
+    stable = hurwitz(polynomial).stable  # floats are taken exactly
+    if stable in (True, sp.true):
+        return True
+    if stable in (False, sp.false):
+        return False
+    return None
 
 
 def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
@@ -62,7 +61,7 @@ def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
 
     See Also
     --------
-    hurwitz_matrix, integral_square
+    symosc.linear.hurwitz_matrix, integral_square
     """
     poly = sp.Poly(polynomial, p)
     s = poly.degree()
@@ -70,40 +69,8 @@ def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
         raise ModelError(f"the polynomial must have degree >= 1 in {p}, got {polynomial}")
     if s == 1:
         return sp.Integer(1)
-    delta = hurwitz_matrix(polynomial, p)[: s - 1, : s - 1].det()
+    delta = _hurwitz_rows(poly)[: s - 1, : s - 1].det()
     return sp.factor(sp.Integer(-1) ** (s * (s - 1) // 2) * delta / poly.LC() ** (s - 1))
-
-
-def is_hurwitz(denominator, p: sp.Symbol) -> bool | None:
-    """True if every root of the polynomial lies in ``Re p < 0`` (Hurwitz criterion), False if not, None if the
-    signs of the Hurwitz minors cannot be decided (symbolic coefficients).
-
-    >>> import sympy as sp
-    >>> p = sp.Symbol("p")
-    >>> is_hurwitz(p**2 + p + 1, p), is_hurwitz(p**2 - p + 1, p), is_hurwitz(p**2 + 1, p)
-    (True, False, False)
-    """
-    poly = sp.Poly(exactify(sp.sympify(denominator)), p)
-    if poly.degree() < 1:
-        raise ParameterError("a Hurwitz polynomial has degree >= 1")
-    k = poly.all_coeffs()
-    sign = 1 if sp.sympify(k[0]).is_positive else (-1 if sp.sympify(k[0]).is_negative else None)
-    if sign is None:
-        return None
-    hw = hurwitz_matrix(sign * poly.as_expr(), p)
-    verdict: bool | None = True
-    for coeff in [sign * c for c in k]:
-        if coeff.is_positive is False:
-            return False
-        if coeff.is_positive is None:
-            verdict = None
-    for n in range(1, hw.shape[0] + 1):
-        minor = sp.factor(hw[:n, :n].det())
-        if minor.is_positive is False:
-            return False
-        if minor.is_positive is None:
-            verdict = None
-    return verdict
 
 
 def _prepare(numerator, denominator, p, image):
@@ -126,8 +93,7 @@ def _prepare(numerator, denominator, p, image):
 
 
 def _check_hurwitz(den: sp.Poly, p) -> None:
-    verdict = is_hurwitz(den.as_expr(), p)
-    if verdict is False:
+    if _hurwitz_verdict(den) is False:
         raise ModelError(
             f"the denominator {den.as_expr()} is not Hurwitz (roots with Re p >= 0): the integral diverges"
         )
@@ -140,7 +106,7 @@ def _even_coeffs(g: sp.Expr, p, s: int) -> list[sp.Expr]:
 
 def _hurwitz_formula(ls, k, p) -> sp.Expr:
     s = len(k) - 1
-    hw = hurwitz_matrix(sp.Poly(k, p).as_expr(), p)
+    hw = _hurwitz_rows(sp.Poly(k, p))
     m = hw.copy()
     for j in range(s):
         m[0, j] = ls[j]

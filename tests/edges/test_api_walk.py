@@ -34,12 +34,12 @@ def test_public_api_bad_input_walk():
 
 def test_guard_names_the_argument():
     """The boundary guard's message names the offending argument; a valid call is unchanged."""
-    from symosc.operational import heaviside_expand, hurwitz_matrix
+    from symosc.operational import heaviside_expand, pairwise_root_sum_product
 
     with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*p = the number 1.5"):
         heaviside_expand(1.5, 1.5)
     with pytest.raises(ParameterError, match="must not be None"):
-        hurwitz_matrix(None, None)
+        pairwise_root_sum_product(None, None)
     import sympy as sp
 
     p, t = sp.symbols("p t")

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from symosc.errors import ModelError, ParameterError
-from symosc.operational import cross_integral, hurwitz_matrix, integral_square, is_hurwitz
+from symosc.operational import cross_integral, integral_square
 
 p = sp.Symbol("p")
 
@@ -137,11 +137,26 @@ def test_bad_input():
     assert integral_square(0, p + 1, p) == 0
 
 
-def test_hurwitz_helpers():
-    assert hurwitz_matrix(p**2 + 2 * p + 3, p) == sp.Matrix([[2, 0], [1, 3]])
+def test_old_hurwitz_names_warn_and_forward_to_symosc_linear():
+    """One name per concept: symosc.operational.hurwitz_matrix/is_hurwitz are deprecated aliases of symosc.linear."""
+    import symosc.operational as op
+    from symosc._deprecation import reset_warnings
+    from symosc.linear import hurwitz_matrix
+
+    reset_warnings()
+    with pytest.warns(DeprecationWarning, match=r"symosc\.linear\.hurwitz_matrix"):
+        old_matrix = op.hurwitz_matrix
+    # the old function's orientation Hw[i, j] = k_(2j-i), written out by hand for 1 p^3 + 2 p^2 + 3 p + 4
+    assert old_matrix(p**3 + 2 * p**2 + 3 * p + 4, p) == sp.Matrix([[2, 4, 0], [1, 3, 0], [0, 2, 4]])
+    assert hurwitz_matrix([1, 2, 3, 4]) == sp.Matrix([[2, 1, 0], [4, 3, 2], [0, 0, 4]])
+    with pytest.warns(DeprecationWarning, match=r"symosc\.linear\.hurwitz"):
+        is_hurwitz = op.is_hurwitz
     assert is_hurwitz(-(p**2) - p - 1, p) is True
+    assert is_hurwitz(p**2 + 1, p) is False
     k = sp.Symbol("k", real=True)
     assert is_hurwitz(p**2 + k * p + 1, p) is None
+    with pytest.raises(AttributeError):
+        op.no_such_name  # noqa: B018
 
 
 def test_cross_integral_vs_quadrature():
