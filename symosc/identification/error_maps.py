@@ -125,9 +125,9 @@ class ErrorMap(SymPyPrintable):
             f"failures={int(self.failures.sum())})"
         )
         rows = [f"  mean |error| % of {self.names[0]} at noise {100 * self.noise[-1]:.3g} % (rows dx, columns dz)"]
-        rows.append("  " + " " * 8 + " ".join(f"{z:>8.3g}" for z in self.dz))
+        rows.append("  " + " " * 9 + " ".join(f"{z:>9.3g}" for z in self.dz))
         e = 100 * self.mean[-1, :, :, 0]
-        rows += [f"  {x:>8.3g}" + " ".join(f"{v:>8.3g}" for v in row) for x, row in zip(self.dx, e, strict=True)]
+        rows += [f"  {x:>8.3g} " + " ".join(f"{v:>9.3g}" for v in row) for x, row in zip(self.dx, e, strict=True)]
         return "\n".join([head, *rows])
 
 

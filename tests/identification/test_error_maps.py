@@ -73,6 +73,11 @@ def test_error_map_repr_plot_and_bad_input():
     em = error_map([-0.2, 0.2], [-0.1, 0.1], noise=0.02, runs=2, **SHORT)
     assert isinstance(em, ErrorMap)
     assert "ErrorMap(algorithm='1', grid=2x2" in repr(em)
+    table = repr(em).splitlines()[2:]  # header of dz values, then one row per dx: every number stands apart
+    assert [float(v) for v in table[0].split()] == [-0.1, 0.1]
+    for x, line in zip([-0.2, 0.2], table[1:], strict=True):
+        values = [float(v) for v in line.split()]
+        assert values[0] == x and len(values) == 3
     assert em.plot().get_xlabel() == "CM offset along x (m)"
     assert em.plot(energy=True).get_title() == "minimum modal energy of the release"
     with pytest.raises(ParameterError, match="algorithm"):
