@@ -14,6 +14,8 @@
 * Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 * Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
+* Linear pencils (§1.24) — :func:`pencil_equivalence` (strict equivalence with exact u, v) and
+  :func:`pencil_canonical_form` (Weierstrass/Jordan or Cayley real form).
 """
 
 from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
@@ -32,6 +34,7 @@ from .interpolation import function_elementary_divisors, interpolation_basis, in
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
 from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
+from .pencils import PencilCanonicalForm, PencilEquivalence, pencil_canonical_form, pencil_equivalence
 from .polynomial_matrices import (
     PencilDivisors,
     SmithForm,
@@ -51,7 +54,9 @@ __all__ = [
     "MatrixFunction",
     "Matrizant",
     "ModalMatrix",
+    "PencilCanonicalForm",
     "PencilDivisors",
+    "PencilEquivalence",
     "SmithForm",
     "SpectralComponent",
     "SpectralDecomposition",
@@ -81,7 +86,9 @@ __all__ = [
     "matrizant_numeric",
     "minimal_polynomial",
     "modal_matrix",
+    "pencil_canonical_form",
     "pencil_divisors",
+    "pencil_equivalence",
     "pencil_modal_matrix",
     "polymatrix_divmod",
     "real_matrix_function",
