@@ -14,6 +14,7 @@
 * Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 * Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
+* Analytic continuation through expansions about scalar matrices (§1.31) — :func:`analytic_continuation`.
 * Linear pencils (§1.24) — :func:`pencil_equivalence` (strict equivalence with exact u, v) and
   :func:`pencil_canonical_form` (Weierstrass/Jordan or Cayley real form).
 """
@@ -30,6 +31,7 @@ from .block import (
 )
 from .cayley import cayley_real_form, real_matrix_function
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
+from .continuation import AnalyticContinuation, analytic_continuation
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
@@ -50,6 +52,7 @@ from .power_series import matrix_power_series
 from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
 
 __all__ = [
+    "AnalyticContinuation",
     "BorderingInverse",
     "MatrixFunction",
     "Matrizant",
@@ -64,6 +67,7 @@ __all__ = [
     "adjugate_derivative_at_root",
     "adjugate_derivatives",
     "adjugate_poly",
+    "analytic_continuation",
     "block_determinant",
     "block_inverse",
     "bordering_inverse",
