@@ -14,6 +14,7 @@
 * Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 * Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
+* Right/left series with matrix coefficients (§1.30, (1.279)–(1.288)) — :func:`matrix_coefficient_function`.
 * Analytic continuation through expansions about scalar matrices (§1.31) — :func:`analytic_continuation`.
 * Linear pencils (§1.24) — :func:`pencil_equivalence` (strict equivalence with exact u, v) and
   :func:`pencil_canonical_form` (Weierstrass/Jordan or Cayley real form).
@@ -33,6 +34,7 @@ from .cayley import cayley_real_form, real_matrix_function
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
 from .continuation import AnalyticContinuation, analytic_continuation
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
+from .matrix_coefficient_series import matrix_coefficient_function
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
 from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
@@ -84,6 +86,7 @@ __all__ = [
     "krylov",
     "leverrier",
     "luzin_form",
+    "matrix_coefficient_function",
     "matrix_function",
     "matrix_power_series",
     "matrizant",
