@@ -6,7 +6,8 @@
 * Polynomial matrices — :func:`determinantal_divisors`, :func:`invariant_factors`, :func:`elementary_divisors`,
   :func:`smith_form`, :func:`minimal_polynomial`, :func:`polymatrix_divmod`, :func:`pencil_divisors`.
 * Characteristic polynomials — :func:`leverrier`, :func:`krylov`, :func:`danilevsky`, :func:`adjugate_poly`.
-* The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`.
+* The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`, and over long intervals
+  :func:`matrizant_product` (a product of short series, checked against Liouville's formula).
 * Block matrices (§1.5–1.7) — :func:`block_inverse`, :func:`block_determinant`, :func:`bordering_inverse`,
   :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
@@ -37,6 +38,7 @@ from .interpolation import function_elementary_divisors, interpolation_basis, in
 from .matrix_coefficient_series import matrix_coefficient_function
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
+from .matrizant_product import MatrizantProduct, matrizant_product
 from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
 from .pencils import PencilCanonicalForm, PencilEquivalence, pencil_canonical_form, pencil_equivalence
 from .polynomial_matrices import (
@@ -58,6 +60,7 @@ __all__ = [
     "BorderingInverse",
     "MatrixFunction",
     "Matrizant",
+    "MatrizantProduct",
     "ModalMatrix",
     "PencilCanonicalForm",
     "PencilDivisors",
@@ -91,6 +94,7 @@ __all__ = [
     "matrix_power_series",
     "matrizant",
     "matrizant_numeric",
+    "matrizant_product",
     "minimal_polynomial",
     "modal_matrix",
     "pencil_canonical_form",
