@@ -25,11 +25,9 @@ from sympy.polys.matrices import DomainMatrix
 from .._printing import SymPyPrintable
 from ..errors import ModelError, ParameterError
 from ._util import as_square_matrix
-from .polynomial_matrices import invariant_factors
 
 __all__ = ["PencilCanonicalForm", "PencilEquivalence", "pencil_canonical_form", "pencil_equivalence"]
 
-_LAM = sp.Dummy("lambda")
 _MU = sp.Dummy("mu")
 
 
@@ -127,41 +125,94 @@ def _exact_pair(a: Any, b: Any, names: tuple[str, str]) -> tuple[sp.Matrix, sp.M
     return A, B
 
 
-def _divisors(a: sp.Matrix, b: sp.Matrix, which: str) -> tuple[list[sp.Expr], dict, list[int]]:
-    """Invariant factors (finite part), finite and infinite elementary divisors of the regular pencil ``a λ + b``."""
-    P = (a * _LAM + b).applyfunc(sp.expand)
-    if sp.expand(P.det(method="berkowitz")) == 0:
+def _divisors(a: sp.Matrix, b: sp.Matrix, which: str) -> tuple[dict, list[int]]:
+    """Finite and infinite elementary divisors of the regular pencil ``a λ + b``, by exact ranks.
+
+    With ``a c + b`` non-singular, ``a λ + b = (a c + b)(E + (λ - c) K)``, ``K = (a c + b)⁻¹ a``; the Möbius map
+    ``μ = -1/(λ - c)`` sends the elementary divisors of the pencil at ``λ`` to the Jordan blocks of ``K`` at ``μ``
+    (the infinite ones to ``μ = 0``).  For each irreducible factor ``p`` of the characteristic polynomial of ``K``
+    the block sizes follow from the ranks of ``p(K)^k`` (Weyr's characteristic), so no root is needed to decide.
+    """
+    n = a.rows
+    c = None
+    for cand in range(n + 1):
+        for s in (cand, -cand) if cand else (0,):
+            if (a * s + b).det(method="bareiss") != 0:
+                c = s
+                break
+        if c is not None:
+            break
+    if c is None:  # det(a λ + b) vanishes at n + 1 points: identically zero
         raise ModelError(
             f"the pencil {which} is singular: det(a λ + b) ≡ 0; strict equivalence of singular pencils needs the "
             "Kronecker minimal indices, which are not implemented (only regular pencils)"
         )
-    factors = invariant_factors(P, _LAM)
+    base = DomainMatrix.from_Matrix(sp.Matrix.hstack(a * c + b, a), extension=True).to_field()
+    dom = base.domain
+    shifted, lead = base[:, :n], base[:, n:]
+    K = shifted.inv() * lead
+    poly = sp.Poly(K.charpoly(), _MU, domain=dom)
+    lam = sp.Symbol("lambda")
     finite: dict = {}
-    for e in factors:
-        poly = sp.Poly(e, _LAM)
-        if poly.degree() <= 0:
+    infinite: list[int] = []
+    eye = DomainMatrix.eye(n, dom)
+    for factor, mult in poly.factor_list()[1]:
+        coeffs = factor.all_coeffs()
+        pK = DomainMatrix.zeros((n, n), dom)
+        for co in coeffs:  # Horner: p(K)
+            pK = pK * K + eye * dom.convert(co)
+        d = factor.degree()
+        ranks, power = [n], eye
+        for _ in range(mult):
+            power = power * pK
+            ranks.append(power.rank())
+        at_least = [(ranks[k - 1] - ranks[k]) // d for k in range(1, mult + 1)]  # blocks of size >= k
+        sizes = sorted(k for k in range(1, mult + 1) for _ in range(at_least[k - 1] - (at_least[k] if k < mult else 0)))
+        if factor.degree() == 1 and factor.eval(0) == 0:
+            infinite = sizes
             continue
-        found = sp.roots(poly, cubics=False, quartics=False, quintics=False)
-        if sum(found.values()) != poly.degree():  # no radicals: key by the irreducible factor
-            found = {sp.Poly(f, _LAM).monic().as_expr(): m for f, m in sp.factor_list(e, _LAM)[1]}
-        for root, mult in found.items():
-            finite.setdefault(root.subs(_LAM, sp.Symbol("lambda")), []).append(mult)
-    finite = {r: sorted(v) for r, v in finite.items()}
-    rev = (a + _MU * b).applyfunc(sp.expand)
-    infinite = []
-    for e in invariant_factors(rev, _MU):
-        k = 0
-        while sp.expand(e) != 0 and sp.expand(e).subs(_MU, 0) == 0:
-            e, k = sp.cancel(e / _MU), k + 1
-        if k:
-            infinite.append(k)
-    infinite.sort()
-    return factors, finite, infinite
+        # the same factor in λ: p(-1/(λ - c)) (λ - c)^d, monic
+        expr = sp.expand(sp.cancel(factor.as_expr().subs(_MU, -1 / (lam - c)) * (lam - c) ** d))
+        q = sp.Poly(expr, lam)
+        roots = sp.roots(q, cubics=False, quartics=False, quintics=False)
+        if sum(roots.values()) == q.degree():
+            for r in roots:
+                r = sp.radsimp(sp.expand(r))
+                finite[r] = sorted(finite.get(r, []) + sizes)
+        else:
+            key = q.monic().as_expr()
+            finite[key] = sorted(finite.get(key, []) + sizes)
+    return finite, sorted(infinite)
+
+
+def _same_divisors(fin0: dict, fin1: dict) -> bool:
+    """Equal finite divisors: keys matched exactly, or (roots written differently) by value to 30 digits."""
+    if len(fin0) != len(fin1):
+        return False
+    unmatched = dict(fin1)
+    for r, sizes in fin0.items():
+        if r in unmatched:
+            match = r
+        else:
+            match = next(
+                (
+                    k
+                    for k in unmatched
+                    if not k.has(sp.Symbol("lambda"))
+                    and not r.has(sp.Symbol("lambda"))
+                    and abs(complex(sp.N(k - r, 30))) < 1e-25
+                ),
+                None,
+            )
+        if match is None or unmatched.pop(match) != sizes:
+            return False
+    return True
 
 
 def _format(finite: dict, infinite: list[int]) -> str:
     lam = sp.Symbol("λ")
-    parts = [f"({lam - r})^{e}" if e > 1 else f"({lam - r})" for r, es in finite.items() for e in es]
+    names = {r: r.subs(sp.Symbol("lambda"), lam) if r.has(sp.Symbol("lambda")) else lam - r for r in finite}
+    parts = [f"({names[r]})^{e}" if e > 1 else f"({names[r]})" for r, es in finite.items() for e in es]
     parts += [f"∞^{e}" for e in infinite]
     return ", ".join(parts) if parts else "none"
 
@@ -257,10 +308,10 @@ def pencil_equivalence(a: Any, b: Any, a1: Any, b1: Any) -> PencilEquivalence:
     A1, B1 = _exact_pair(a1, b1, ("a1", "b1"))
     if A.shape != A1.shape:
         raise ModelError(f"the two pencils must have the same size, got {A.shape} and {A1.shape}")
-    f0, fin0, inf0 = _divisors(A, B, "a λ + b")
-    f1, fin1, inf1 = _divisors(A1, B1, "a1 λ + b1")
+    fin0, inf0 = _divisors(A, B, "a λ + b")
+    fin1, inf1 = _divisors(A1, B1, "a1 λ + b1")
     divisors, divisors1 = (fin0, inf0), (fin1, inf1)
-    same_finite = len(f0) == len(f1) and all(sp.expand(x - y) == 0 for x, y in zip(f0, f1, strict=True))
+    same_finite = _same_divisors(fin0, fin1)
     if not same_finite or inf0 != inf1:
         reason = f"the elementary divisors differ: {_format(fin0, inf0)} against {_format(fin1, inf1)}"
         return PencilEquivalence(False, None, None, divisors, divisors1, reason)
@@ -367,7 +418,7 @@ def pencil_canonical_form(a: Any, b: Any, *, real: bool = False) -> PencilCanoni
     A, B = _exact_pair(a, b, ("a", "b"))
     if real and any(sp.im(e) != 0 for e in (*A, *B)):
         raise ParameterError("real=True needs real a and b (Bulgakov (1954), eq. (1.192)); got complex entries")
-    _, finite, infinite = _divisors(A, B, "a λ + b")
+    finite, infinite = _divisors(A, B, "a λ + b")
     lam = sp.Symbol("lambda")
     for root in finite:
         if root.has(lam):

@@ -13,7 +13,7 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from symosc.algebra import pencil_canonical_form, pencil_equivalence
+from symosc.algebra import pencil_canonical_form, pencil_divisors, pencil_equivalence
 from symosc.errors import ModelError, ParameterError
 
 lam = sp.Symbol("lam")
@@ -47,7 +47,7 @@ def _structure(J: sp.Matrix) -> list[tuple]:
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.integers(min_value=0, max_value=10**6), st.sampled_from([2, 3]))
+@given(st.integers(min_value=0, max_value=10**6), st.sampled_from([2, 3, 4]))
 def test_random_conjugated_pencils_recover_u_v_exactly(seed, n):
     """§1.24, (1.187): a pencil transformed by random integer unimodular/invertible p, q is equivalent, and the
     returned u, v satisfy u a v = a1 and u b v = b1 by exact multiplication."""
@@ -139,6 +139,22 @@ def test_singular_leading_coefficient_infinite_divisors():
     # same finite part, infinite divisors ∞, ∞ instead of ∞²: not equivalent
     res = pencil_equivalence(a, b, sp.diag(1, 1, 0, 0), b0)
     assert not res and "∞^2 against" in res.reason
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_divisors_agree_with_the_minors_route(seed):
+    """The rank-based divisors (Weyr characteristic of K = (ac + b)⁻¹a) agree with the gcd-of-minors route of
+    pencil_divisors (§1.18, §1.24), finite and infinite, on pencils with a singular leading coefficient."""
+    rng = random.Random(seed)
+    a0 = sp.diag(1, 1, sp.Matrix([[0, 1], [0, 0]]))
+    b0 = sp.diag(-_jordan([(rng.choice([-1, 2]), 1), (3, 1)]), sp.eye(2))
+    p, q = _unimodular(4, rng), _unimodular(4, rng)
+    a, b = p * a0 * q, p * b0 * q
+    res = pencil_equivalence(a, b, a0, b0)
+    ref = pencil_divisors(-b, a, lam)  # λ a - (-b) = a λ + b
+    finite, infinite = res.divisors
+    assert res.equivalent
+    assert {sp.nsimplify(k): v for k, v in finite.items()} == ref.finite and infinite == ref.infinite
 
 
 def test_singular_pencil_refused():
