@@ -6,7 +6,8 @@
 * Polynomial matrices — :func:`determinantal_divisors`, :func:`invariant_factors`, :func:`elementary_divisors`,
   :func:`smith_form`, :func:`minimal_polynomial`, :func:`polymatrix_divmod`, :func:`pencil_divisors`.
 * Characteristic polynomials — :func:`leverrier`, :func:`krylov`, :func:`danilevsky`, :func:`adjugate_poly`.
-* The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`.
+* The matrizant (Peano–Baker series) — :func:`matrizant`, :func:`matrizant_numeric`, and over long intervals
+  :func:`matrizant_product` (a product of short series, checked against Liouville's formula).
 * Block matrices (§1.5–1.7) — :func:`block_inverse`, :func:`block_determinant`, :func:`bordering_inverse`,
   :func:`cyclic_block_determinant`, :func:`triangular_inverse_series`, :func:`triangular_adjugate_series`.
 * Modal matrices from the adjugate — :func:`modal_matrix`, :func:`pencil_modal_matrix`; Luzin's triangular form
@@ -14,6 +15,10 @@
 * Adjugate derivatives (§1.27) — :func:`adjugate_derivatives`, :func:`adjugate_derivative_at_root`.
 * Cayley's real form (§1.16, §1.28) — :func:`cayley_real_form`, :func:`real_matrix_function`.
 * Matrix-argument power series (§1.28, §1.30) — :func:`matrix_power_series`.
+* Right/left series with matrix coefficients (§1.30, (1.279)–(1.288)) — :func:`matrix_coefficient_function`.
+* Analytic continuation through expansions about scalar matrices (§1.31) — :func:`analytic_continuation`.
+* Linear pencils (§1.24) — :func:`pencil_equivalence` (strict equivalence with exact u, v) and
+  :func:`pencil_canonical_form` (Weierstrass/Jordan or Cayley real form).
 """
 
 from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
@@ -28,10 +33,14 @@ from .block import (
 )
 from .cayley import cayley_real_form, real_matrix_function
 from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
+from .continuation import AnalyticContinuation, analytic_continuation
 from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
+from .matrix_coefficient_series import matrix_coefficient_function
 from .matrix_functions import MatrixFunction, matrix_function, series_converges
 from .matrizant import Matrizant, matrizant, matrizant_numeric
+from .matrizant_product import MatrizantProduct, matrizant_product
 from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
+from .pencils import PencilCanonicalForm, PencilEquivalence, pencil_canonical_form, pencil_equivalence
 from .polynomial_matrices import (
     PencilDivisors,
     SmithForm,
@@ -47,11 +56,15 @@ from .power_series import matrix_power_series
 from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
 
 __all__ = [
+    "AnalyticContinuation",
     "BorderingInverse",
     "MatrixFunction",
     "Matrizant",
+    "MatrizantProduct",
     "ModalMatrix",
+    "PencilCanonicalForm",
     "PencilDivisors",
+    "PencilEquivalence",
     "SmithForm",
     "SpectralComponent",
     "SpectralDecomposition",
@@ -59,6 +72,7 @@ __all__ = [
     "adjugate_derivative_at_root",
     "adjugate_derivatives",
     "adjugate_poly",
+    "analytic_continuation",
     "block_determinant",
     "block_inverse",
     "bordering_inverse",
@@ -75,13 +89,17 @@ __all__ = [
     "krylov",
     "leverrier",
     "luzin_form",
+    "matrix_coefficient_function",
     "matrix_function",
     "matrix_power_series",
     "matrizant",
     "matrizant_numeric",
+    "matrizant_product",
     "minimal_polynomial",
     "modal_matrix",
+    "pencil_canonical_form",
     "pencil_divisors",
+    "pencil_equivalence",
     "pencil_modal_matrix",
     "polymatrix_divmod",
     "real_matrix_function",
