@@ -172,8 +172,8 @@ def n_link_pendulum_linearization(
     >>> lin = n_link_pendulum_linearization(2)
     >>> lin.M
     Matrix([
-    [l1**2*(m1 + m2), l1*l2*m2],
-    [       l1*l2*m2, l2**2*m2]])
+    [l1**2*m1 + l1**2*m2, l1*l2*m2],
+    [           l1*l2*m2, l2**2*m2]])
     >>> lin.natural_frequencies({"m1": 1, "m2": 1, "l1": 1, "l2": 1, "g": 1}).round(6).tolist()
     [0.765367, 1.847759]
     >>> long = n_link_pendulum_linearization(200)
