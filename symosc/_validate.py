@@ -7,7 +7,10 @@ expected, so bad input never surfaces as a NumPy/SymPy exception from deep insid
 from __future__ import annotations
 
 import difflib
+import functools
+import inspect
 import numbers
+import re
 from collections.abc import Iterable
 from typing import Any
 
@@ -194,9 +197,9 @@ def _suspicious(value: Any, annotation: str) -> str | None:
         if "int" in ann and "float" not in ann and f.real != int(f.real):
             return f"the non-integer {value}"
         if callable_expected(ann):
-            return f"the number {value} (a callable is expected)"
+            return f"the number {value}"
         if not any(w in ann for w in _NUMERIC_WORDS):
-            return f"the number {value} (expected {ann})"
+            return f"the number {value}"
         return None
     if isinstance(value, np.ndarray):
         if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
@@ -224,6 +227,69 @@ def _parameter_error_like(exc: BaseException) -> type:
     return _MIXED[kind]
 
 
+_SECTION = re.compile(r"^[ \t]*(Parameters|Other Parameters)[ \t]*\n[ \t]*-{3,}[ \t]*\n", re.MULTILINE)
+_NEXT_SECTION = re.compile(r"^[ \t]*[A-Z][A-Za-z ]+[ \t]*\n[ \t]*-{3,}[ \t]*$", re.MULTILINE)
+
+
+def _docstring_parameters(doc: str) -> dict[str, tuple[str, str]]:
+    """``{name: (type, first sentence)}`` from the numpydoc "Parameters" sections of ``doc``."""
+    out: dict[str, tuple[str, str]] = {}
+    if not doc:
+        return out
+    doc = inspect.cleandoc(doc)
+    for match in _SECTION.finditer(doc):
+        body = doc[match.end() :]
+        stop = _NEXT_SECTION.search(body)
+        body = body[: stop.start()] if stop else body
+        entries = re.split(r"^(?=\S)", body, flags=re.MULTILINE)
+        for entry in entries:
+            head, _, rest = entry.partition("\n")
+            if not head.strip():
+                continue
+            names, _, kind = head.partition(" : ")
+            text = " ".join(rest.split()).replace("``", "'")
+            text = re.sub(r":(?:func|class|meth|attr|mod|data|obj):`~?([^`]+)`", r"\1", text)
+            sentence = re.split(r"(?<=[^.]\.)\s(?=[A-Z`(])", text, maxsplit=1)[0] if text else ""
+            sentence = sentence.rstrip(".")
+            if len(sentence) > 160:
+                sentence = sentence[:157] + "..."
+            for name in names.split(","):
+                name = name.strip().lstrip("*")
+                if name.isidentifier():
+                    out[name] = (kind.strip(), sentence)
+    return out
+
+
+def _annotation_text(annotation: Any) -> str:
+    if annotation is inspect.Parameter.empty:
+        return ""
+    text = annotation if isinstance(annotation, str) else getattr(annotation, "__name__", str(annotation))
+    return str(text).replace("typing.", "")
+
+
+@functools.lru_cache(maxsize=4096)
+def expectation(fn: Any, pname: str) -> str:
+    """What argument ``pname`` of ``fn`` must be: the docstring's "Parameters" entry (type and first sentence),
+    else the type hint.  Computed once per function and argument (only on the error path)."""
+    try:
+        params = inspect.signature(fn).parameters
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        params = {}
+    hint = _annotation_text(params[pname].annotation) if pname in params else ""
+    doc = _docstring_parameters(inspect.getdoc(fn) or "")
+    kind, sentence = doc.get(pname, ("", ""))
+    kind = kind or hint or "see the documentation"
+    if pname in params and params[pname].default is not inspect.Parameter.empty and "default" not in kind:
+        kind += f" (default {_show(params[pname].default)})"
+    return f"{kind} — {sentence}" if sentence else kind
+
+
+def describe_argument(fn: Any, pname: str, got: str) -> str:
+    """``"argument 'n' of f got -1; expected: int — number of links"``."""
+    name = getattr(fn, "__name__", "function")
+    return f"argument {pname!r} of {name}() got {got}; expected: {expectation(fn, pname)}"
+
+
 def validates_own_arguments(fn):
     """Mark ``fn`` as checking every argument itself, so :func:`guard_public_api` leaves it unwrapped.
 
@@ -237,9 +303,6 @@ def guard(fn):
     """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
     raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
     of the wrong shape) becomes a :class:`ParameterError` naming those arguments (the original is chained)."""
-    import functools
-    import inspect
-
     if getattr(fn, "__symosc_guarded__", False):
         return fn
     try:
@@ -263,7 +326,7 @@ def guard(fn):
                 ann = str(p.annotation)
                 typed = p.annotation is not inspect.Parameter.empty
                 if typed and not any(k in ann for k in ("None", "Any", "Optional")):
-                    raise ParameterError(f"{name}(): {pname} must not be None (expected {ann})")
+                    raise ParameterError(f"{name}(): {pname} must not be None; {describe_argument(fn, pname, 'None')}")
 
     def translate(exc, args, kwargs):
         bad = []
@@ -277,12 +340,12 @@ def guard(fn):
             if why is None and not isinstance(value, sp_Basic) and named:
                 why = f"a {type(value).__name__} ({_show(value)})"  # the error is about this argument's type
             if why is not None:
-                bad.append(f"{pname} = {why}")
+                bad.append(describe_argument(fn, pname, why))
         if not bad:
             raise exc
         raise _parameter_error_like(exc)(
-            f"{name}(): invalid argument(s): {'; '.join(bad)} ({type(exc).__name__}: {str(exc)[:200]}); "
-            f"see help({name}) for the expected values"
+            f"{name}(): invalid argument: {'; '.join(bad)} (the call failed with {type(exc).__name__}: "
+            f"{str(exc)[:160]})"
         ) from exc
 
     @functools.wraps(fn)
@@ -304,7 +367,6 @@ def guard(fn):
 
 def guard_public_api(package: str) -> None:
     """Wrap every function of ``package.__all__`` with :func:`guard`, in the package and its defining module."""
-    import inspect
     import sys
 
     pkg = sys.modules[package]

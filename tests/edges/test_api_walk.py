@@ -36,9 +36,9 @@ def test_guard_names_the_argument():
     """The boundary guard's message names the offending argument; a valid call is unchanged."""
     from symosc.operational import heaviside_expand, hurwitz_matrix
 
-    with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*p = the number 1.5"):
+    with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*argument 'p' .* got the number 1.5; expected: "):
         heaviside_expand(1.5, 1.5)
-    with pytest.raises(ParameterError, match="must not be None"):
+    with pytest.raises(ParameterError, match="must not be None; argument 'p' of hurwitz_matrix.. got None; expected: "):
         hurwitz_matrix(None, None)
     import sympy as sp
 
@@ -57,5 +57,49 @@ def test_guard_keeps_genuine_bugs_visible():
     assert g(0.0) == 1.0
     with pytest.raises(IndexError):
         g(3.0)
-    with pytest.raises(ParameterError, match="x = the non-finite number nan"):
+    with pytest.raises(ParameterError, match="argument 'x' of f.. got the non-finite number nan; expected: float"):
         g(float("nan"))
+
+
+def test_message_states_the_expectation_from_the_docstring():
+    """The guard's message quotes the numpydoc "Parameters" entry (type and first sentence) of the argument."""
+    from symosc._validate import guard
+
+    def links(n: int, *, kind: str = "point") -> int:
+        """Toy.
+
+        Parameters
+        ----------
+        n : int
+            Number of links (n >= 1). Further text is not quoted.
+        kind : {"point", "rigid"}
+            Link model.
+
+        Returns
+        -------
+        int
+        """
+        return list(range(3))[n]
+
+    g = guard(links)
+    with pytest.raises(ParameterError) as info:
+        g(-7)
+    assert "argument 'n' of links() got the negative number -7; expected: int — Number of links (n >= 1)" in str(
+        info.value
+    )
+    assert "Further" not in str(info.value)
+    with pytest.raises(
+        ParameterError, match=r"argument 'kind' of links\(\) got None; expected: \{\"point\", \"rigid\"\}"
+    ):
+        g(1, kind=None)
+    assert g(2) == 2
+
+
+def test_message_falls_back_to_the_type_hint():
+    from symosc._validate import guard
+
+    def f(count: int) -> float:
+        return 1.0 / count
+
+    with pytest.raises(ParameterError, match="argument 'count' of f.. got zero; expected: int"):
+        guard(f)(0)
