@@ -192,10 +192,19 @@ def relay_regulator_cycles(
     Region 9 of Table 14 (``alpha`` slightly negative, ``M beta > 1``): a small stable cycle and a larger unstable
     one, the case I of §12.13, 5°:
 
-    >>> for c in relay_regulator_cycles(-0.02, 1.5, 1.0, 1.0, dead_zone=0.1):
+    >>> for c in relay_regulator_cycles(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0):
     ...     print(c.stable, round(c.amplitude, 4))
-    True 0.1004
-    False 5.3029
+    True 1.0511
+    False 3.2462
+
+    Notes
+    -----
+    This is the book's first approximation.  A simulation of (12.226)–(12.227) confirms the stability of the
+    cycles it was checked on (regions 7 and 9), and the amplitudes to a few per cent; but the relay acts on ``y``
+    through a first-order path, so the motion can slide on the switching surfaces: the small cycle of region 9 is
+    in fact a sliding relaxation oscillation whose period is several times ``2 pi / omega``.  Close to the dead
+    zone (``b*`` within a few per cent of ``dead_zone``, e.g. region 6 at ``alpha = 0.02``, ``M beta = 0.7``) the
+    approximation is unreliable: there the simulated motion comes to rest in the dead zone.
     """
     vals = _finite_inputs(alpha=alpha, beta=beta, gamma=gamma, M=M, level=level, dead_zone=dead_zone)
     _check_relay(vals)
@@ -269,7 +278,7 @@ def relay_regulator_region(
 
     Examples
     --------
-    >>> relay_regulator_region(-0.02, 1.5, 1.0, 1.0, dead_zone=0.1)
+    >>> relay_regulator_region(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0)
     RelayRegulatorRegion(9: steady oscillations; xi=-0.02, eta=1.5)
     >>> relay_regulator_region(0.5, 0.4, 1.0, 1.0, dead_zone=0.1).number  # inside the parabola
     2
