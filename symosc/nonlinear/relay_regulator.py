@@ -202,9 +202,10 @@ def relay_regulator_cycles(
     This is the book's first approximation.  A simulation of (12.226)–(12.227) confirms the stability of the
     cycles it was checked on (regions 7 and 9), and the amplitudes to a few per cent; but the relay acts on ``y``
     through a first-order path, so the motion can slide on the switching surfaces: the small cycle of region 9 is
-    in fact a sliding relaxation oscillation whose period is several times ``2 pi / omega``.  Close to the dead
-    zone (``b*`` within a few per cent of ``dead_zone``, e.g. region 6 at ``alpha = 0.02``, ``M beta = 0.7``) the
-    approximation is unreliable: there the simulated motion comes to rest in the dead zone.
+    in fact a sliding relaxation oscillation whose period is several times ``2 pi / omega``.  It can also fail
+    outright: in region 6 at ``alpha = 0.02``, ``beta = 0.7``, ``gamma = M = level = dead_zone = 1`` none of the
+    four predicted cycles is seen, the simulated motion comes to rest in the dead zone from each of them.  Check a
+    prediction by simulation before relying on it.
     """
     vals = _finite_inputs(alpha=alpha, beta=beta, gamma=gamma, M=M, level=level, dead_zone=dead_zone)
     _check_relay(vals)
