@@ -18,7 +18,7 @@ import numpy as np
 from sympy import Basic as sp_Basic
 from sympy.polys.polyerrors import BasePolynomialError
 
-from .errors import ParameterError
+from .errors import ModelError, ParameterError
 from .errors import SymoscError as SymoscError_
 
 __all__ = [
@@ -278,10 +278,43 @@ def expectation(fn: Any, pname: str) -> str:
     hint = _annotation_text(params[pname].annotation) if pname in params else ""
     doc = _docstring_parameters(inspect.getdoc(fn) or "")
     kind, sentence = doc.get(pname, ("", ""))
-    kind = kind or hint or "see the documentation"
+    if not kind and hint in ("", "Any"):  # nothing specific: point to what the function does
+        summary = (inspect.getdoc(fn) or "").strip().split("\n", 1)[0].rstrip(".")
+        name = getattr(fn, "__name__", "the function")
+        return f"see help({name}): {summary}" if summary else f"see help({name})"
+    kind = kind or hint
     if pname in params and params[pname].default is not inspect.Parameter.empty and "default" not in kind:
         kind += f" (default {_show(params[pname].default)})"
     return f"{kind} — {sentence}" if sentence else kind
+
+
+#: words that state what an argument must be (or what to do instead)
+_EXPECTATION = re.compile(
+    r"expected|must|should|choose|valid|\buse\b|>=|<=|> 0|< 0|positive|negative|finite|at least|at most|one of|"
+    r"did you mean|need|require|only|cannot|not allowed|\bgive\b|\bpass\b|instead|range|integer|nonzero|"
+    r"non-zero|smaller|larger|greater|less than|substitute",
+    re.IGNORECASE,
+)
+
+
+def names_argument(message: str, pname: str) -> bool:
+    """Whether ``message`` mentions the argument ``pname`` as a word."""
+    return re.search(rf"(?<![A-Za-z0-9_]){re.escape(pname)}(?![A-Za-z0-9_])", message) is not None
+
+
+def message_is_explicit(message: str, params: Any) -> bool:
+    """A message names one of ``params`` and states an expectation (what to give, or what to do)."""
+    return any(names_argument(message, p) for p in params) and _EXPECTATION.search(message) is not None
+
+
+def _shown_in(value: Any, message: str) -> bool:
+    if isinstance(value, bool) or value is None:
+        return False
+    try:
+        text = str(value)
+    except Exception:  # pragma: no cover - a value that cannot print itself
+        return False
+    return 0 < len(text) <= 60 and text in message
 
 
 def describe_argument(fn: Any, pname: str, got: str) -> str:
@@ -348,6 +381,37 @@ def guard(fn):
             f"{str(exc)[:160]})"
         ) from exc
 
+    def explain(exc, args, kwargs):
+        """``exc`` when its message names an argument of ``fn`` and states an expectation; otherwise a copy (same
+        class) that also says which argument is at fault and what it must be (from the docstring or the hint)."""
+        message = str(exc)
+        if message_is_explicit(message, params):
+            return exc
+        try:
+            bound = bind(args, kwargs).arguments
+        except ParameterError:
+            return exc
+        ordinary = {
+            k: v for k, v in bound.items() if params[k].kind not in (params[k].VAR_POSITIONAL, params[k].VAR_KEYWORD)
+        }
+        named = [k for k in ordinary if names_argument(message, k)]
+        if named:  # the argument is named, the expectation is missing: add it
+            extra = "; ".join(f"{k} must be: {expectation(fn, k)}" for k in named[:3])
+            text = f"{message} ({extra})"
+        else:
+            culprits = [(k, why) for k, v in ordinary.items() if (why := _suspicious(v, str(params[k].annotation)))]
+            if not culprits:
+                culprits = [(k, _show(v)) for k, v in ordinary.items() if _shown_in(v, message)]
+            if not culprits:
+                return exc
+            text = f"{name}(): {'; '.join(describe_argument(fn, k, why) for k, why in culprits[:3])}: {message}"
+        try:
+            new = type(exc)(text)
+        except Exception:  # pragma: no cover - an error class with a custom constructor: keep the original
+            return exc
+        new.__dict__.update(exc.__dict__)
+        return new
+
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
         # the signature is bound only when an argument is None or the call fails (a plain call costs ~0.3 us)
@@ -355,6 +419,11 @@ def guard(fn):
             refuse_none(args, kwargs)
         try:
             return fn(*args, **kwargs)
+        except (ParameterError, ModelError) as exc:
+            explained = explain(exc, args, kwargs)
+            if explained is exc:
+                raise
+            raise explained from exc
         except SymoscError_:
             raise
         except _GENERIC as exc:

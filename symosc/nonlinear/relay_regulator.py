@@ -192,10 +192,11 @@ def relay_regulator_cycles(
     Region 9 of Table 14 (``alpha`` slightly negative, ``M beta > 1``): a small stable cycle and a larger unstable
     one, the case I of §12.13, 5°:
 
-    >>> for c in relay_regulator_cycles(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0):
-    ...     print(c.stable, round(c.amplitude, 4))
-    True 1.0511
-    False 3.2462
+    >>> small, large = relay_regulator_cycles(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0)
+    >>> small
+    RelayCycle(stable: amplitude=1.05112, omega=0.189665, gain h=0.0373153, jacobian=(-1.112, -0.0848))
+    >>> large.stable, round(large.amplitude, 4)
+    (False, 3.2462)
 
     Notes
     -----
@@ -279,7 +280,8 @@ def relay_regulator_region(
 
     Examples
     --------
-    >>> relay_regulator_region(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0)
+    >>> region = relay_regulator_region(-0.02, 1.5, 1.0, 1.0, level=0.1, dead_zone=1.0)
+    >>> region
     RelayRegulatorRegion(9: steady oscillations; xi=-0.02, eta=1.5)
     >>> relay_regulator_region(0.5, 0.4, 1.0, 1.0, dead_zone=0.1).number  # inside the parabola
     2

@@ -89,8 +89,8 @@ def vague(fn, message: str) -> str | None:
         return "names no argument"
     if not _EXPECT.search(message):
         return "states no expectation"
-    if "see help(" in message and "expected" not in message:
-        return "only says 'see help'"
+    if re.search(r"expected: see help\(|expected: Any\b", message):
+        return "the expectation only points to help()"
     return None
 
 
