@@ -221,7 +221,11 @@ def _parameter_error_like(exc: BaseException) -> type:
     kind = type(exc)
     if kind not in _MIXED:
         try:
-            _MIXED[kind] = type("ParameterError", (ParameterError, kind), {"__module__": "symosc.errors"})
+            _MIXED[kind] = type(
+                "ParameterError",
+                (ParameterError, kind),
+                {"__module__": "symosc.errors", "__str__": BaseException.__str__},  # the message, not kind's format
+            )
         except TypeError:  # incompatible instance layouts
             _MIXED[kind] = ParameterError
     return _MIXED[kind]
@@ -278,7 +282,10 @@ def expectation(fn: Any, pname: str) -> str:
     hint = _annotation_text(params[pname].annotation) if pname in params else ""
     doc = _docstring_parameters(inspect.getdoc(fn) or "")
     kind, sentence = doc.get(pname, ("", ""))
-    if not kind and hint in ("", "Any"):  # nothing specific: point to what the function does
+    if not kind and hint in ("", "Any"):  # undocumented: show the value a documented example passes
+        example = _example_arguments(fn).get(pname)
+        if example is not None:
+            return f"a value like {example} (as in the documented example {getattr(fn, '__name__', '')}(...))"
         summary = (inspect.getdoc(fn) or "").strip().split("\n", 1)[0].rstrip(".")
         name = getattr(fn, "__name__", "the function")
         return f"see help({name}): {summary}" if summary else f"see help({name})"
@@ -315,6 +322,50 @@ def _shown_in(value: Any, message: str) -> bool:
     except Exception:  # pragma: no cover - a value that cannot print itself
         return False
     return 0 < len(text) <= 60 and text in message
+
+
+def _example_arguments(fn: Any) -> dict[str, str]:
+    """``{parameter: source text}`` of the arguments passed to ``fn`` in its docstring's doctest examples."""
+    import ast
+
+    name = getattr(fn, "__name__", None)
+    doc = inspect.getdoc(fn) or ""
+    try:
+        params = [
+            p.name
+            for p in inspect.signature(fn).parameters.values()
+            if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+        ]
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        return {}
+    statements, current = [], []
+    for line in doc.splitlines():
+        stripped = line.strip()
+        if stripped.startswith(">>> "):
+            if current:
+                statements.append("\n".join(current))
+            current = [stripped[4:]]
+        elif stripped.startswith("... ") or stripped == "...":
+            current.append(stripped[4:])
+    if current:
+        statements.append("\n".join(current))
+    found: dict[str, str] = {}
+    for source in statements:
+        try:
+            tree = ast.parse(source)
+        except SyntaxError:
+            continue
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.Call):
+                continue
+            called = node.func.id if isinstance(node.func, ast.Name) else getattr(node.func, "attr", None)
+            if called != name:
+                continue
+            pairs = list(zip(params, node.args, strict=False)) + [(k.arg, k.value) for k in node.keywords if k.arg]
+            for pname, value in pairs:
+                text = ast.unparse(value)
+                found.setdefault(pname, text if len(text) <= 60 else text[:57] + "...")
+    return found
 
 
 def describe_argument(fn: Any, pname: str, got: str) -> str:
@@ -409,7 +460,8 @@ def guard(fn):
             new = type(exc)(text)
         except Exception:  # pragma: no cover - an error class with a custom constructor: keep the original
             return exc
-        new.__dict__.update(exc.__dict__)
+        for key, value in exc.__dict__.items():  # extra attributes, without undoing the new message
+            new.__dict__.setdefault(key, value)
         return new
 
     @functools.wraps(fn)

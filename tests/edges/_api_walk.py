@@ -74,7 +74,8 @@ def required(fn):
 
 _EXPECT = re.compile(
     r"expected|must|should|choose|valid|\buse\b|>=|<=|> 0|< 0|positive|negative|finite|at least|at most|one of|"
-    r"did you mean|need|require|only|cannot|not allowed|give |pass |instead|range|integer|nonzero|non-zero",
+    r"did you mean|need|require|only|cannot|not allowed|give |pass |instead|range|integer|nonzero|non-zero|"
+    r"smaller|larger|greater|less than|substitute",
     re.IGNORECASE,
 )
 

@@ -3,7 +3,9 @@
 The walk (``tests/edges/_api_walk.py``) discovers every function in the ``__all__`` of every subpackage of
 symosc at run time, so subpackages added later are covered.  Each required argument gets one of None, nan, inf,
 -1, 0, "abc", 1.5 and a 1x3 array (all the same first, then hypothesis-drawn mixtures); each call has a 20 s
-SIGALRM cap and the whole walk runs in a subprocess with an overall cap.
+SIGALRM cap and the whole walk runs in a subprocess with an overall cap.  Every symosc error the walk provokes must
+also be explicit: its message names an argument of the function and states an expectation (what the argument must
+be, or what to do), and the expectation is more than a pointer to ``help()``.
 """
 
 from __future__ import annotations
@@ -38,7 +40,9 @@ def test_guard_names_the_argument():
 
     with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*argument 'p' .* got the number 1.5; expected: "):
         heaviside_expand(1.5, 1.5)
-    with pytest.raises(ParameterError, match="must not be None; argument 'p' of hurwitz_matrix.. got None; expected: "):
+    with pytest.raises(
+        ParameterError, match=r"must not be None; argument 'p' of hurwitz_matrix\(\) got None; expected"
+    ):
         hurwitz_matrix(None, None)
     import sympy as sp
 
@@ -57,7 +61,7 @@ def test_guard_keeps_genuine_bugs_visible():
     assert g(0.0) == 1.0
     with pytest.raises(IndexError):
         g(3.0)
-    with pytest.raises(ParameterError, match="argument 'x' of f.. got the non-finite number nan; expected: float"):
+    with pytest.raises(ParameterError, match=r"argument 'x' of f\(\) got the non-finite number nan; expected: float"):
         g(float("nan"))
 
 
@@ -101,5 +105,44 @@ def test_message_falls_back_to_the_type_hint():
     def f(count: int) -> float:
         return 1.0 / count
 
-    with pytest.raises(ParameterError, match="argument 'count' of f.. got zero; expected: int"):
+    with pytest.raises(ParameterError, match=r"argument 'count' of f\(\) got zero; expected: int"):
         guard(f)(0)
+
+
+def test_vague_error_from_inside_is_completed():
+    """A symosc error raised deep inside that names no argument gets the argument and its expectation added (from
+    the docstring, else from a documented example); the class is kept."""
+    from symosc._validate import guard
+    from symosc.errors import ModelError
+
+    def resonance(stiffness, mass):
+        """Toy.
+
+        Examples
+        --------
+        >>> resonance(4.0, 1.0)
+        2.0
+        """
+        if stiffness != stiffness:
+            raise ModelError("the spring is undefined")
+        return (stiffness / mass) ** 0.5
+
+    g = guard(resonance)
+    with pytest.raises(ModelError) as info:
+        g(float("nan"), 1.0)
+    text = str(info.value)
+    assert text.startswith("resonance(): argument 'stiffness' of resonance() got the non-finite number nan; expected: ")
+    assert "a value like 4.0 (as in the documented example resonance(...))" in text
+    assert text.endswith("the spring is undefined")
+    assert g(4.0, 1.0) == 2.0
+
+
+def test_message_from_a_real_function_names_argument_and_expectation():
+    """relay_regulator_cycles checks its own arguments; the pendulum's n names its range and the alternative."""
+    from symosc.models import n_link_pendulum
+    from symosc.nonlinear import relay_regulator_cycles
+
+    with pytest.raises(ParameterError, match=r"dead_zone must be >= 0"):
+        relay_regulator_cycles(0.1, 1.0, 1.0, 1.0, dead_zone=-1.0)
+    with pytest.raises(ParameterError, match=r"n must be a positive integer"):
+        n_link_pendulum(-1)
