@@ -368,6 +368,18 @@ def _example_arguments(fn: Any) -> dict[str, str]:
     return found
 
 
+def _closest_option(message: str, given: list[str]) -> str:
+    """`` (did you mean 'x'?)`` for the first string in ``given`` close to a word of ``message`` (the message or the
+    expectation lists the valid values)."""
+    words = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]{0,39}", message))
+    words |= set(re.findall(r"['\"]([^'\"\s]{1,40})['\"]", message))
+    for value in given:
+        close = difflib.get_close_matches(value, sorted(words - {value}), n=1, cutoff=0.6)
+        if close:
+            return f" (did you mean {close[0]!r}?)"
+    return ""
+
+
 def describe_argument(fn: Any, pname: str, got: str) -> str:
     """``"argument 'n' of f got -1; expected: int — number of links"``."""
     name = getattr(fn, "__name__", "function")
@@ -427,16 +439,19 @@ def guard(fn):
                 bad.append(describe_argument(fn, pname, why))
         if not bad:
             raise exc
+        strings = [v for k, v in bind(args, kwargs).arguments.items() if isinstance(v, str)]
+        text = f"{name}(): invalid argument: {'; '.join(bad)}"
         raise _parameter_error_like(exc)(
-            f"{name}(): invalid argument: {'; '.join(bad)} (the call failed with {type(exc).__name__}: "
-            f"{str(exc)[:160]})"
+            f"{text}{_closest_option(text, strings)} (the call failed with {type(exc).__name__}: {str(exc)[:160]})"
         ) from exc
 
     def explain(exc, args, kwargs):
         """``exc`` when its message names an argument of ``fn`` and states an expectation; otherwise a copy (same
-        class) that also says which argument is at fault and what it must be (from the docstring or the hint)."""
+        class) that also says which argument is at fault and what it must be (from the docstring or the hint).
+        A misspelt option value named in the message gets the closest of the values the message quotes."""
         message = str(exc)
-        if message_is_explicit(message, params):
+        explicit = message_is_explicit(message, params)
+        if explicit and "did you mean" in message:
             return exc
         try:
             bound = bind(args, kwargs).arguments
@@ -446,7 +461,11 @@ def guard(fn):
             k: v for k, v in bound.items() if params[k].kind not in (params[k].VAR_POSITIONAL, params[k].VAR_KEYWORD)
         }
         named = [k for k in ordinary if names_argument(message, k)]
-        if named:  # the argument is named, the expectation is missing: add it
+        if explicit:
+            text = message + _closest_option(message, [ordinary[k] for k in named if isinstance(ordinary[k], str)])
+            if text == message:
+                return exc
+        elif named:  # the argument is named, the expectation is missing: add it
             extra = "; ".join(f"{k} must be: {expectation(fn, k)}" for k in named[:3])
             text = f"{message} ({extra})"
         else:

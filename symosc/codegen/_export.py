@@ -8,6 +8,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_choice
 from ..errors import ParameterError
 from ..symbols import t as time_symbol
 from . import _languages as L
@@ -125,8 +126,7 @@ def export(
         out[1] = sin(k .* x)
         out[2] = x .^ 2
     """
-    if language not in LANGUAGES:
-        raise ParameterError(f"language must be one of {LANGUAGES}, got {language!r}")
+    check_choice("language", language, LANGUAGES)
     if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
         raise ParameterError(f"name must be an identifier, got {name!r}")
     from ..mechanics import FirstOrderSystem, LagrangianSystem

@@ -146,3 +146,23 @@ def test_message_from_a_real_function_names_argument_and_expectation():
         relay_regulator_cycles(0.1, 1.0, 1.0, 1.0, dead_zone=-1.0)
     with pytest.raises(ParameterError, match=r"n must be a positive integer"):
         n_link_pendulum(-1)
+
+
+#: string parameters that are free text (a name for generated code), not a choice among values
+FREE_TEXT = {("symosc.codegen.export", "name")}
+
+
+def test_misspelt_options_get_the_closest_valid_value():
+    """Every string option of every public function with a documented example: the example called again with the
+    option misspelt (default + "x") raises a symosc error that names the option and the closest valid value."""
+    script = WALK.with_name("_option_typos.py")
+    env = {**os.environ, "PYTHONPATH": str(Path(symosc.__file__).parents[1])}
+    proc = subprocess.run(
+        [sys.executable, str(script)], capture_output=True, text=True, timeout=600, env=env, check=False
+    )
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    rows = [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
+    checked = [r for r in rows if ": " in r[1]]
+    assert len(checked) >= 25  # the probe reached the options (not just "no example")
+    bad = [r for r in checked if not r[1].endswith(": ok") and (r[0], r[1].split(":")[0]) not in FREE_TEXT]
+    assert bad == [], "\n".join(map(str, bad))
