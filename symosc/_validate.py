@@ -386,6 +386,56 @@ def describe_argument(fn: Any, pname: str, got: str) -> str:
     return f"argument {pname!r} of {name}() got {got}; expected: {expectation(fn, pname)}"
 
 
+def _tolerance(fname: str, pname: str, value: Any, *, allow_zero: bool = False) -> None:
+    if value is None:
+        return
+    try:
+        check_positive(pname, value, allow_zero=allow_zero)
+    except ParameterError as exc:
+        raise ParameterError(
+            f"{fname}(): {exc} (a tolerance: a finite number {'>=' if allow_zero else '>'} 0)"
+        ) from None
+
+
+def _count(fname: str, pname: str, value: Any, *, minimum: int = 1) -> None:
+    if value is None:
+        return
+    try:
+        check_int(pname, value, minimum=minimum)
+    except ParameterError as exc:
+        raise ParameterError(f"{fname}(): {exc} (a count or a limit: an integer >= {minimum})") from None
+
+
+def _seed(fname: str, pname: str, value: Any) -> None:
+    bad = isinstance(value, str | bytes | float | bool) or (isinstance(value, numbers.Integral) and value < 0)
+    if bad:
+        raise ParameterError(
+            f"{fname}(): {pname} must be None, an integer >= 0 or a numpy.random.Generator, got {_show(value)}"
+        )
+
+
+def _conventional_parameters(params: Any) -> dict[str, Any]:
+    """Checks for parameters whose meaning the name fixes across symosc: tolerances ``rtol``/``tol`` (> 0),
+    ``atol`` (>= 0), ``dps`` and integer limits ``max_*`` (integers >= 1), ``seed``.  Applied up front, only to
+    values the caller passes (defaults are trusted)."""
+    out: dict[str, Any] = {}
+    for pname, p in params.items():
+        default = p.default
+        if pname in ("rtol", "tol") and (default is None or isinstance(default, float)):
+            out[pname] = _tolerance
+        elif pname == "atol" and isinstance(default, float):
+            out[pname] = functools.partial(_tolerance, allow_zero=True)
+        elif pname == "dps" and (default is None or isinstance(default, int)):
+            out[pname] = _count
+        elif pname.startswith("max_") and isinstance(default, int) and not isinstance(default, bool):
+            out[pname] = _count
+        elif pname.startswith("max_") and isinstance(default, float):
+            out[pname] = _tolerance
+        elif pname == "seed" and (default is None or isinstance(default, int)):
+            out[pname] = _seed
+    return out
+
+
 def validates_own_arguments(fn):
     """Mark ``fn`` as checking every argument itself, so :func:`guard_public_api` leaves it unwrapped.
 
@@ -408,6 +458,9 @@ def guard(fn):
     params = sig.parameters
     name = fn.__name__
     renames = getattr(fn, "__symosc_renamed_keywords__", {})  # deprecated keyword -> new (forwarded with a warning)
+    conventional = _conventional_parameters(params)
+    positions = [i for i, p in enumerate(params) if p in conventional]
+    first_position = min(positions) if positions else None
 
     def bind(args, kwargs):
         try:
@@ -488,6 +541,12 @@ def guard(fn):
         # the signature is bound only when an argument is None or the call fails (a plain call costs ~0.3 us)
         if any(value is None for value in args) or any(value is None for value in kwargs.values()):
             refuse_none(args, kwargs)
+        if conventional and (
+            not conventional.keys().isdisjoint(kwargs) or (first_position is not None and len(args) > first_position)
+        ):
+            for pname, value in bind(args, kwargs).arguments.items():
+                if pname in conventional:
+                    conventional[pname](name, pname, value)
         try:
             return fn(*args, **kwargs)
         except (ParameterError, ModelError) as exc:
