@@ -459,8 +459,9 @@ def guard(fn):
     name = fn.__name__
     renames = getattr(fn, "__symosc_renamed_keywords__", {})  # deprecated keyword -> new (forwarded with a warning)
     conventional = _conventional_parameters(params)
-    positions = [i for i, p in enumerate(params) if p in conventional]
-    first_position = min(positions) if positions else None
+    conventional_names = frozenset(conventional)
+    # positional index from which a conventional parameter can be given positionally (never, if none)
+    first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)
 
     def bind(args, kwargs):
         try:
@@ -538,12 +539,17 @@ def guard(fn):
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
-        # the signature is bound only when an argument is None or the call fails (a plain call costs ~0.3 us)
-        if any(value is None for value in args) or any(value is None for value in kwargs.values()):
-            refuse_none(args, kwargs)
-        if conventional and (
-            not conventional.keys().isdisjoint(kwargs) or (first_position is not None and len(args) > first_position)
-        ):
+        # the signature is bound only when an argument is None, a tolerance/limit is passed or the call fails
+        for value in args:
+            if value is None:
+                refuse_none(args, kwargs)
+                break
+        if kwargs:
+            for value in kwargs.values():
+                if value is None:
+                    refuse_none(args, kwargs)
+                    break
+        if len(args) > first_position or (kwargs and not conventional_names.isdisjoint(kwargs)):
             for pname, value in bind(args, kwargs).arguments.items():
                 if pname in conventional:
                     conventional[pname](name, pname, value)
