@@ -7,7 +7,10 @@ expected, so bad input never surfaces as a NumPy/SymPy exception from deep insid
 from __future__ import annotations
 
 import difflib
+import functools
+import inspect
 import numbers
+import re
 from collections.abc import Iterable
 from typing import Any
 
@@ -15,7 +18,7 @@ import numpy as np
 from sympy import Basic as sp_Basic
 from sympy.polys.polyerrors import BasePolynomialError
 
-from .errors import ParameterError
+from .errors import ModelError, ParameterError
 from .errors import SymoscError as SymoscError_
 
 __all__ = [
@@ -194,9 +197,9 @@ def _suspicious(value: Any, annotation: str) -> str | None:
         if "int" in ann and "float" not in ann and f.real != int(f.real):
             return f"the non-integer {value}"
         if callable_expected(ann):
-            return f"the number {value} (a callable is expected)"
+            return f"the number {value}"
         if not any(w in ann for w in _NUMERIC_WORDS):
-            return f"the number {value} (expected {ann})"
+            return f"the number {value}"
         return None
     if isinstance(value, np.ndarray):
         if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
@@ -218,10 +221,219 @@ def _parameter_error_like(exc: BaseException) -> type:
     kind = type(exc)
     if kind not in _MIXED:
         try:
-            _MIXED[kind] = type("ParameterError", (ParameterError, kind), {"__module__": "symosc.errors"})
+            _MIXED[kind] = type(
+                "ParameterError",
+                (ParameterError, kind),
+                {"__module__": "symosc.errors", "__str__": BaseException.__str__},  # the message, not kind's format
+            )
         except TypeError:  # incompatible instance layouts
             _MIXED[kind] = ParameterError
     return _MIXED[kind]
+
+
+_SECTION = re.compile(r"^[ \t]*(Parameters|Other Parameters)[ \t]*\n[ \t]*-{3,}[ \t]*\n", re.MULTILINE)
+_NEXT_SECTION = re.compile(r"^[ \t]*[A-Z][A-Za-z ]+[ \t]*\n[ \t]*-{3,}[ \t]*$", re.MULTILINE)
+
+
+def _docstring_parameters(doc: str) -> dict[str, tuple[str, str]]:
+    """``{name: (type, first sentence)}`` from the numpydoc "Parameters" sections of ``doc``."""
+    out: dict[str, tuple[str, str]] = {}
+    if not doc:
+        return out
+    doc = inspect.cleandoc(doc)
+    for match in _SECTION.finditer(doc):
+        body = doc[match.end() :]
+        stop = _NEXT_SECTION.search(body)
+        body = body[: stop.start()] if stop else body
+        entries = re.split(r"^(?=\S)", body, flags=re.MULTILINE)
+        for entry in entries:
+            head, _, rest = entry.partition("\n")
+            if not head.strip():
+                continue
+            names, _, kind = head.partition(" : ")
+            text = " ".join(rest.split()).replace("``", "'")
+            text = re.sub(r":(?:func|class|meth|attr|mod|data|obj):`~?([^`]+)`", r"\1", text)
+            sentence = re.split(r"(?<=[^.]\.)\s(?=[A-Z`(])", text, maxsplit=1)[0] if text else ""
+            sentence = sentence.rstrip(".")
+            if len(sentence) > 160:
+                sentence = sentence[:157] + "..."
+            for name in names.split(","):
+                name = name.strip().lstrip("*")
+                if name.isidentifier():
+                    out[name] = (kind.strip(), sentence)
+    return out
+
+
+def _annotation_text(annotation: Any) -> str:
+    if annotation is inspect.Parameter.empty:
+        return ""
+    text = annotation if isinstance(annotation, str) else getattr(annotation, "__name__", str(annotation))
+    return str(text).replace("typing.", "")
+
+
+@functools.lru_cache(maxsize=4096)
+def expectation(fn: Any, pname: str) -> str:
+    """What argument ``pname`` of ``fn`` must be: the docstring's "Parameters" entry (type and first sentence),
+    else the type hint.  Computed once per function and argument (only on the error path)."""
+    try:
+        params = inspect.signature(fn).parameters
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        params = {}
+    hint = _annotation_text(params[pname].annotation) if pname in params else ""
+    doc = _docstring_parameters(inspect.getdoc(fn) or "")
+    kind, sentence = doc.get(pname, ("", ""))
+    if not kind and hint in ("", "Any"):  # undocumented: show the value a documented example passes
+        example = _example_arguments(fn).get(pname)
+        if example is not None:
+            return f"a value like {example} (as in the documented example {getattr(fn, '__name__', '')}(...))"
+        summary = (inspect.getdoc(fn) or "").strip().split("\n", 1)[0].rstrip(".")
+        name = getattr(fn, "__name__", "the function")
+        return f"see help({name}): {summary}" if summary else f"see help({name})"
+    kind = kind or hint
+    if pname in params and params[pname].default is not inspect.Parameter.empty and "default" not in kind:
+        kind += f" (default {_show(params[pname].default)})"
+    return f"{kind} — {sentence}" if sentence else kind
+
+
+#: words that state what an argument must be (or what to do instead)
+_EXPECTATION = re.compile(
+    r"expected|must|should|choose|valid|\buse\b|>=|<=|> 0|< 0|positive|negative|finite|at least|at most|one of|"
+    r"did you mean|need|require|only|cannot|not allowed|\bgive\b|\bpass\b|instead|range|integer|nonzero|"
+    r"non-zero|smaller|larger|greater|less than|substitute",
+    re.IGNORECASE,
+)
+
+
+def names_argument(message: str, pname: str) -> bool:
+    """Whether ``message`` mentions the argument ``pname`` as a word."""
+    return re.search(rf"(?<![A-Za-z0-9_]){re.escape(pname)}(?![A-Za-z0-9_])", message) is not None
+
+
+def message_is_explicit(message: str, params: Any) -> bool:
+    """A message names one of ``params`` and states an expectation (what to give, or what to do)."""
+    return any(names_argument(message, p) for p in params) and _EXPECTATION.search(message) is not None
+
+
+def _shown_in(value: Any, message: str) -> bool:
+    if isinstance(value, bool) or value is None:
+        return False
+    try:
+        text = str(value)
+    except Exception:  # pragma: no cover - a value that cannot print itself
+        return False
+    return 0 < len(text) <= 60 and text in message
+
+
+def _example_arguments(fn: Any) -> dict[str, str]:
+    """``{parameter: source text}`` of the arguments passed to ``fn`` in its docstring's doctest examples."""
+    import ast
+
+    name = getattr(fn, "__name__", None)
+    doc = inspect.getdoc(fn) or ""
+    try:
+        params = [
+            p.name
+            for p in inspect.signature(fn).parameters.values()
+            if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+        ]
+    except (TypeError, ValueError):  # pragma: no cover - builtins
+        return {}
+    statements, current = [], []
+    for line in doc.splitlines():
+        stripped = line.strip()
+        if stripped.startswith(">>> "):
+            if current:
+                statements.append("\n".join(current))
+            current = [stripped[4:]]
+        elif stripped.startswith("... ") or stripped == "...":
+            current.append(stripped[4:])
+    if current:
+        statements.append("\n".join(current))
+    found: dict[str, str] = {}
+    for source in statements:
+        try:
+            tree = ast.parse(source)
+        except SyntaxError:
+            continue
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.Call):
+                continue
+            called = node.func.id if isinstance(node.func, ast.Name) else getattr(node.func, "attr", None)
+            if called != name:
+                continue
+            pairs = list(zip(params, node.args, strict=False)) + [(k.arg, k.value) for k in node.keywords if k.arg]
+            for pname, value in pairs:
+                text = ast.unparse(value)
+                found.setdefault(pname, text if len(text) <= 60 else text[:57] + "...")
+    return found
+
+
+def _closest_option(message: str, given: list[str]) -> str:
+    """`` (did you mean 'x'?)`` for the first string in ``given`` close to a word of ``message`` (the message or the
+    expectation lists the valid values)."""
+    words = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]{0,39}", message))
+    words |= set(re.findall(r"['\"]([^'\"\s]{1,40})['\"]", message))
+    for value in given:
+        close = difflib.get_close_matches(value, sorted(words - {value}), n=1, cutoff=0.6)
+        if close:
+            return f" (did you mean {close[0]!r}?)"
+    return ""
+
+
+def describe_argument(fn: Any, pname: str, got: str) -> str:
+    """``"argument 'n' of f got -1; expected: int — number of links"``."""
+    name = getattr(fn, "__name__", "function")
+    return f"argument {pname!r} of {name}() got {got}; expected: {expectation(fn, pname)}"
+
+
+def _tolerance(fname: str, pname: str, value: Any, *, allow_zero: bool = False) -> None:
+    if value is None:
+        return
+    try:
+        check_positive(pname, value, allow_zero=allow_zero)
+    except ParameterError as exc:
+        raise ParameterError(
+            f"{fname}(): {exc} (a tolerance: a finite number {'>=' if allow_zero else '>'} 0)"
+        ) from None
+
+
+def _count(fname: str, pname: str, value: Any, *, minimum: int = 1) -> None:
+    if value is None:
+        return
+    try:
+        check_int(pname, value, minimum=minimum)
+    except ParameterError as exc:
+        raise ParameterError(f"{fname}(): {exc} (a count or a limit: an integer >= {minimum})") from None
+
+
+def _seed(fname: str, pname: str, value: Any) -> None:
+    bad = isinstance(value, str | bytes | float | bool) or (isinstance(value, numbers.Integral) and value < 0)
+    if bad:
+        raise ParameterError(
+            f"{fname}(): {pname} must be None, an integer >= 0 or a numpy.random.Generator, got {_show(value)}"
+        )
+
+
+def _conventional_parameters(params: Any) -> dict[str, Any]:
+    """Checks for parameters whose meaning the name fixes across symosc: tolerances ``rtol``/``tol`` (> 0),
+    ``atol`` (>= 0), ``dps`` and integer limits ``max_*`` (integers >= 1), ``seed``.  Applied up front, only to
+    values the caller passes (defaults are trusted)."""
+    out: dict[str, Any] = {}
+    for pname, p in params.items():
+        default = p.default
+        if pname in ("rtol", "tol") and (default is None or isinstance(default, float)):
+            out[pname] = _tolerance
+        elif pname == "atol" and isinstance(default, float):
+            out[pname] = functools.partial(_tolerance, allow_zero=True)
+        elif pname == "dps" and (default is None or isinstance(default, int)):
+            out[pname] = _count
+        elif pname.startswith("max_") and isinstance(default, int) and not isinstance(default, bool):
+            out[pname] = _count
+        elif pname.startswith("max_") and isinstance(default, float):
+            out[pname] = _tolerance
+        elif pname == "seed" and (default is None or isinstance(default, int)):
+            out[pname] = _seed
+    return out
 
 
 def validates_own_arguments(fn):
@@ -237,9 +449,6 @@ def guard(fn):
     """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
     raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
     of the wrong shape) becomes a :class:`ParameterError` naming those arguments (the original is chained)."""
-    import functools
-    import inspect
-
     if getattr(fn, "__symosc_guarded__", False):
         return fn
     try:
@@ -249,6 +458,10 @@ def guard(fn):
     params = sig.parameters
     name = fn.__name__
     renames = getattr(fn, "__symosc_renamed_keywords__", {})  # deprecated keyword -> new (forwarded with a warning)
+    conventional = _conventional_parameters(params)
+    conventional_names = frozenset(conventional)
+    # positional index from which a conventional parameter can be given positionally (never, if none)
+    first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)
 
     def bind(args, kwargs):
         try:
@@ -263,7 +476,7 @@ def guard(fn):
                 ann = str(p.annotation)
                 typed = p.annotation is not inspect.Parameter.empty
                 if typed and not any(k in ann for k in ("None", "Any", "Optional")):
-                    raise ParameterError(f"{name}(): {pname} must not be None (expected {ann})")
+                    raise ParameterError(f"{name}(): {pname} must not be None; {describe_argument(fn, pname, 'None')}")
 
     def translate(exc, args, kwargs):
         bad = []
@@ -277,21 +490,76 @@ def guard(fn):
             if why is None and not isinstance(value, sp_Basic) and named:
                 why = f"a {type(value).__name__} ({_show(value)})"  # the error is about this argument's type
             if why is not None:
-                bad.append(f"{pname} = {why}")
+                bad.append(describe_argument(fn, pname, why))
         if not bad:
             raise exc
+        strings = [v for k, v in bind(args, kwargs).arguments.items() if isinstance(v, str)]
+        text = f"{name}(): invalid argument: {'; '.join(bad)}"
         raise _parameter_error_like(exc)(
-            f"{name}(): invalid argument(s): {'; '.join(bad)} ({type(exc).__name__}: {str(exc)[:200]}); "
-            f"see help({name}) for the expected values"
+            f"{text}{_closest_option(text, strings)} (the call failed with {type(exc).__name__}: {str(exc)[:160]})"
         ) from exc
+
+    def explain(exc, args, kwargs):
+        """``exc`` when its message names an argument of ``fn`` and states an expectation; otherwise a copy (same
+        class) that also says which argument is at fault and what it must be (from the docstring or the hint).
+        A misspelt option value named in the message gets the closest of the values the message quotes."""
+        message = str(exc)
+        explicit = message_is_explicit(message, params)
+        if explicit and "did you mean" in message:
+            return exc
+        try:
+            bound = bind(args, kwargs).arguments
+        except ParameterError:
+            return exc
+        ordinary = {
+            k: v for k, v in bound.items() if params[k].kind not in (params[k].VAR_POSITIONAL, params[k].VAR_KEYWORD)
+        }
+        named = [k for k in ordinary if names_argument(message, k)]
+        if explicit:
+            text = message + _closest_option(message, [ordinary[k] for k in named if isinstance(ordinary[k], str)])
+            if text == message:
+                return exc
+        elif named:  # the argument is named, the expectation is missing: add it
+            extra = "; ".join(f"{k} must be: {expectation(fn, k)}" for k in named[:3])
+            text = f"{message} ({extra})"
+        else:
+            culprits = [(k, why) for k, v in ordinary.items() if (why := _suspicious(v, str(params[k].annotation)))]
+            if not culprits:
+                culprits = [(k, _show(v)) for k, v in ordinary.items() if _shown_in(v, message)]
+            if not culprits:
+                return exc
+            text = f"{name}(): {'; '.join(describe_argument(fn, k, why) for k, why in culprits[:3])}: {message}"
+        try:
+            new = type(exc)(text)
+        except Exception:  # pragma: no cover - an error class with a custom constructor: keep the original
+            return exc
+        for key, value in exc.__dict__.items():  # extra attributes, without undoing the new message
+            new.__dict__.setdefault(key, value)
+        return new
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
-        # the signature is bound only when an argument is None or the call fails (a plain call costs ~0.3 us)
-        if any(value is None for value in args) or any(value is None for value in kwargs.values()):
-            refuse_none(args, kwargs)
+        # the signature is bound only when an argument is None, a tolerance/limit is passed or the call fails
+        for value in args:
+            if value is None:
+                refuse_none(args, kwargs)
+                break
+        if kwargs:
+            for value in kwargs.values():
+                if value is None:
+                    refuse_none(args, kwargs)
+                    break
+        if len(args) > first_position or (kwargs and not conventional_names.isdisjoint(kwargs)):
+            for pname, value in bind(args, kwargs).arguments.items():
+                if pname in conventional:
+                    conventional[pname](name, pname, value)
         try:
             return fn(*args, **kwargs)
+        except (ParameterError, ModelError) as exc:
+            explained = explain(exc, args, kwargs)
+            if explained is exc:
+                raise
+            raise explained from exc
         except SymoscError_:
             raise
         except _GENERIC as exc:
@@ -304,7 +572,6 @@ def guard(fn):
 
 def guard_public_api(package: str) -> None:
     """Wrap every function of ``package.__all__`` with :func:`guard`, in the package and its defining module."""
-    import inspect
     import sys
 
     pkg = sys.modules[package]

@@ -8,6 +8,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import _suggest
 from ..errors import ParameterError
 from ..symbols import t as time_symbol
 from . import _languages as L
@@ -126,7 +127,7 @@ def export(
         out[2] = x .^ 2
     """
     if language not in LANGUAGES:
-        raise ParameterError(f"language must be one of {LANGUAGES}, got {language!r}")
+        raise ParameterError(f"language must be one of {LANGUAGES}, got {language!r}{_suggest(language, LANGUAGES)}")
     if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
         raise ParameterError(f"name must be an identifier, got {name!r}")
     from ..mechanics import FirstOrderSystem, LagrangianSystem

@@ -239,7 +239,24 @@ def stand_system(
 ) -> _Stand:
     """Numeric 6-DOF stand: ``.rhs(y, P)``, ``.heights(states)``, ``.energy(y)``; state ``(K, theta, v, x)``.
 
-    ``P`` are vertical forces at the attachment points.  At rest in the undeformed pose only gravity acts:
+    ``P`` are vertical forces at the attachment points.
+
+    Parameters
+    ----------
+    model : BodyOnSprings
+        From :func:`symosc.models.body_on_springs`.
+    values : dict
+        Parameter values of the model (by symbol or name).
+    damping : float or sequence of float
+        Viscous damping of the springs (>= 0; one value or one per spring).
+    spring_length : float
+        Free length of the springs (m, > 0).
+    g : float
+        Gravity (m/s**2).
+    spring_law : {"belyakov", "linear"}
+        Spring force law.
+
+    At rest in the undeformed pose only gravity acts:
 
     >>> import numpy as np
     >>> from symosc.models import body_on_springs

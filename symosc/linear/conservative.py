@@ -172,6 +172,9 @@ def conservative_modes(A: Any, H: Any) -> ModalAnalysis:
         H = np.array(H.evalf(), dtype=float)
     from scipy.linalg import eigh
 
+    for name, X in (("A", A), ("H", H)):
+        if np.ndim(X) != 2:
+            raise ParameterError(f"{name} must be a square matrix (array_like or sympy.Matrix), got {X!r:.60}")
     M, K = as_spd_pair(A, H)
     w, V = eigh(K, M)
     scale = max(abs(w).max(), 1e-300)

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from .._validate import check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = ["NyquistResult", "StabilityMargins", "nyquist", "stability_margins"]
@@ -168,6 +169,9 @@ def nyquist(
     --------
     stability_margins, hurwitz
     """
+    if indentation is not None:
+        check_positive("indentation (radius of the detour around poles on the contour; None or 0 forbids it)",
+                       indentation, allow_zero=True)  # fmt: skip
     M = _poly(numerator, "numerator")
     D0 = _poly(denominator, "denominator")
     if M.size > D0.size:

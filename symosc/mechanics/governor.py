@@ -88,6 +88,15 @@ def vyshnegradsky_cubic(U: Any, V2: Any, W: Any, delta: Any, N: Any = 0, symbol:
     Returns ``(polynomial, condition)``: ``U V^2 l^3 + U W l^2 + (U delta + N) l + 1`` and
     ``U W (U delta + N) - U V^2 > 0`` (with positive coefficients, the cubic's Hurwitz condition).
 
+    Parameters
+    ----------
+    U, V2, W, delta : Expr or float
+        Vyshnegradsky's parameters of the machine and the governor (positive numbers or symbols).
+    N : Expr or float
+        The added damping term of the governor (default 0).
+    symbol : Symbol, optional
+        The variable ``l`` of the polynomial.
+
     Examples
     --------
     >>> import sympy as sp

@@ -4,9 +4,16 @@
 """
 
 from .body_on_springs import BodyOnSprings, body_on_springs
-from .pendulum import gribkov_khokhlov_table1, n_link_pendulum, pendulum_symbols
+from .pendulum import gribkov_khokhlov_table1, n_link_pendulum, n_link_pendulum_linearization, pendulum_symbols
 
-__all__ = ["BodyOnSprings", "body_on_springs", "gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]
+__all__ = [
+    "BodyOnSprings",
+    "body_on_springs",
+    "gribkov_khokhlov_table1",
+    "n_link_pendulum",
+    "n_link_pendulum_linearization",
+    "pendulum_symbols",
+]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 from .._validate import guard_public_api as _guard_public_api

@@ -2,14 +2,49 @@
 
 from __future__ import annotations
 
+import numpy as np
 import sympy as sp
 
-from .._validate import check_bool
-from ..errors import ModelError
-from ..mechanics import LagrangianSystem
+from .._validate import check_bool, check_choice
+from ..errors import ModelError, ParameterError
+from ..mechanics import LagrangianSystem, LinearModel
 from ..symbols import dot, t
 
-__all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "pendulum_symbols"]
+__all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "n_link_pendulum_linearization", "pendulum_symbols"]
+
+#: Largest chain for the full symbolic model.  Building the Lagrangian system costs about 0.7 s at n = 20, 8 s at
+#: n = 40 and 17 s at n = 50 (growth about n**3.6; measured on a loaded 2-core machine), so n = 200 would take
+#: roughly 45 minutes before a single equation is used.
+MAX_SYMBOLIC_LINKS = 40
+_COST_AT_MAX_S = 8.0
+_COST_EXPONENT = 3.6
+
+
+def _check_chain_arguments(n, links, inverted, pivot, *, max_links=None):
+    """Validated ``(n, inverted)``; the errors are ParameterErrors that are also ModelErrors (callers such as the
+    scene loader catch ModelError for a bad catalogue entry)."""
+    try:
+        if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
+            raise ParameterError(f"n must be a positive integer (the number of links, n >= 1), got {n!r}")
+        n = int(n)
+        if max_links is not None and n > max_links:
+            estimate = _COST_AT_MAX_S * (n / MAX_SYMBOLIC_LINKS) ** _COST_EXPONENT
+            raise ParameterError(
+                f"n_link_pendulum(n={n}) is beyond the supported size n <= {max_links}: building the symbolic "
+                f"model costs about {_COST_AT_MAX_S:.0f} s at n = {MAX_SYMBOLIC_LINKS} and grows like "
+                f"n**{_COST_EXPONENT} (measured), so n = {n} would take about {estimate:.0f} s. For small "
+                f"oscillations of a long chain use n_link_pendulum_linearization({n}, ...) (closed-form M and K, "
+                "built in O(n**2)); for large motions integrate a shorter chain's compiled equations"
+            )
+        check_choice("links", links, ("point", "rigid"))
+        check_choice("pivot", pivot, ("fixed", "vertical"))
+        return n, check_bool("inverted", inverted)
+    except ParameterError as exc:
+        raise _CatalogueError(str(exc)) from None
+
+
+class _CatalogueError(ParameterError, ModelError):
+    """A bad argument of a catalogue model: a ParameterError, and a ModelError for callers that catch those."""
 
 
 def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
@@ -38,7 +73,8 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     Parameters
     ----------
     n : int
-        Number of links (>= 1), numbered from the pivot.
+        Number of links, numbered from the pivot (1 <= n <= 40; the symbolic model's cost grows like n**3.6,
+        about 8 s at n = 40: for longer chains use :func:`n_link_pendulum_linearization`).
     links : {"point", "rigid"}
         ``"point"``: massless link ``i`` of length ``l_i`` with a point mass ``m_i`` at its end.
         ``"rigid"``: physical link with mass ``m_i``, hinge-to-hinge length ``l_i``, distance ``lc_i``
@@ -57,6 +93,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
 
     See Also
     --------
+    n_link_pendulum_linearization : closed-form small-oscillation model, for chains of any length.
     pendulum_symbols
     gribkov_khokhlov_table1
 
@@ -72,13 +109,7 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     [0, 0],
     [0, 0]])
     """
-    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-        raise ModelError(f"n must be a positive integer, got {n!r}")
-    if links not in ("point", "rigid"):
-        raise ModelError(f"links must be 'point' or 'rigid', got {links!r}")
-    if pivot not in ("fixed", "vertical"):
-        raise ModelError(f"pivot must be 'fixed' or 'vertical', got {pivot!r}")
-    inverted = check_bool("inverted", inverted)
+    n, inverted = _check_chain_arguments(n, links, inverted, pivot, max_links=MAX_SYMBOLIC_LINKS)
     s = pendulum_symbols(n)
     phi, m, l, lc, inertia, g = s["phi"], s["m"], s["l"], s["lc"], s["I"], s["g"]
     up = 1 if inverted else -1
@@ -98,6 +129,77 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
             T += inertia[k] * dot(phi[k]) ** 2 / 2
         V += m[k] * g * y
     return LagrangianSystem(T, V, list(phi))
+
+
+def n_link_pendulum_linearization(
+    n: int, *, links: str = "point", inverted: bool = False, pivot: str = "fixed"
+) -> LinearModel:
+    """The n-link pendulum linearized about ``phi = 0`` in closed form (no Lagrangian derivation), for any ``n``.
+
+    With ``S_i = m_i lc_i + l_i (m_{i+1} + ... + m_n)`` (``lc_i = l_i`` for point links) the kinetic and potential
+    energies give
+
+    ``M_ii = I_i + m_i lc_i**2 + l_i**2 (m_{i+1} + ... + m_n)``, ``M_ij = l_i S_j`` for ``i < j``,
+    ``K = diag(S_i) * s * (g - a p**2 cos(p t))``,
+
+    with ``s = 1`` hanging and ``s = -1`` inverted (``a = 0`` for a fixed pivot); the terms ``I_i`` are absent for
+    point links.  The result equals ``n_link_pendulum(n, ...).linearize()`` (same symbols), but costs O(n**2)
+    instead of the full model's roughly n**3.6.
+
+    Parameters
+    ----------
+    n : int
+        Number of links (n >= 1).
+    links : {"point", "rigid"}
+        As in :func:`n_link_pendulum`.
+    inverted : bool
+        Hanging (``False``) or inverted (``True``) equilibrium.
+    pivot : {"fixed", "vertical"}
+        ``"vertical"``: the pivot moves as ``y = a*cos(p*t)``; K then has the periodic part.
+
+    Returns
+    -------
+    LinearModel
+        ``M q'' + K q = 0`` with ``D = 0`` and ``f = 0``; coordinates ``phi1..phiN``.
+
+    See Also
+    --------
+    n_link_pendulum : the full nonlinear model (n <= 40).
+    symosc.mechanics.LinearModel.natural_frequencies
+
+    Examples
+    --------
+    >>> lin = n_link_pendulum_linearization(2)
+    >>> lin.M
+    Matrix([
+    [l1**2*m1 + l1**2*m2, l1*l2*m2],
+    [           l1*l2*m2, l2**2*m2]])
+    >>> lin.natural_frequencies({"m1": 1, "m2": 1, "l1": 1, "l2": 1, "g": 1}).round(6).tolist()
+    [0.765367, 1.847759]
+    >>> long = n_link_pendulum_linearization(200)
+    >>> long.M.shape
+    (200, 200)
+    """
+    n, inverted = _check_chain_arguments(n, links, inverted, pivot)
+    s = pendulum_symbols(n)
+    m, l = s["m"], s["l"]
+    lc = l if links == "point" else s["lc"]
+    outboard = [sp.Add(*m[i + 1 :]) for i in range(n)]  # mass beyond hinge i+1
+    S = [m[i] * lc[i] + l[i] * outboard[i] for i in range(n)]
+    M = sp.zeros(n, n)
+    for i in range(n):
+        M[i, i] = m[i] * lc[i] ** 2 + l[i] ** 2 * outboard[i] + (s["I"][i] if links == "rigid" else 0)
+        for j in range(i + 1, n):
+            M[i, j] = M[j, i] = l[i] * S[j]
+    sign = -1 if inverted else 1
+    factors = [sign * s["g"]] + ([-sign * s["a"] * s["p"] ** 2 * sp.cos(s["p"] * t)] if pivot == "vertical" else [])
+    # K_ii = S_i * factor, written out term by term (sympy.expand of these products costs O(n**3) in total)
+    terms = [[m[i] * lc[i]] + [l[i] * mk for mk in m[i + 1 :]] for i in range(n)]
+    K = sp.diag(*[sp.Add(*[f * x for f in factors for x in terms[i]]) for i in range(n)])
+    zero = sp.zeros(n, n)
+    return LinearModel(
+        M=M, D=zero, K=K, f=sp.zeros(n, 1), coordinates=tuple(s["phi"]), point=dict.fromkeys(s["phi"], 0)
+    )
 
 
 def gribkov_khokhlov_table1() -> dict[str, float]:

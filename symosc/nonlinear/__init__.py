@@ -74,7 +74,14 @@ from .poincare import LimitCycleSeries, limit_cycle
 from .poincare_fd import OperatorCycle, PoincareOperatorSystem, poincare_operator_system
 from .poincare_ndof import NDofPeriodicSolution, periodic_solution_ndof
 from .point_map import PointMapFixedPoint, point_map_fixed_point
-from .relay_regulator import RelayRegulatorBoundary, relay_regulator_boundary
+from .relay_regulator import (
+    RelayCycle,
+    RelayRegulatorBoundary,
+    RelayRegulatorRegion,
+    relay_regulator_boundary,
+    relay_regulator_cycles,
+    relay_regulator_region,
+)
 from .special_systems import (
     ClockEscapement,
     FlywheelDesign,
@@ -126,7 +133,9 @@ __all__ = [
     "PointMapFixedPoint",
     "QuasiPolynomial",
     "RadiusEstimate",
+    "RelayCycle",
     "RelayRegulatorBoundary",
+    "RelayRegulatorRegion",
     "SeriesValidation",
     "StationaryRegime",
     "SteadyState",
@@ -172,6 +181,8 @@ __all__ = [
     "quasi_polynomial_roots",
     "radinger_flywheel",
     "relay_regulator_boundary",
+    "relay_regulator_cycles",
+    "relay_regulator_region",
     "rotation_period",
     "self_oscillations",
     "servo_characteristic",

@@ -104,6 +104,21 @@ def libration_period(V: Any, q: sp.Symbol, energy: float, center: float, *, m: A
 
     The turning points are the nearest zeros of ``E - V`` on each side of the center.
 
+    Parameters
+    ----------
+    V : Expr
+        Potential energy ``V(q)``.
+    q : Symbol
+        The coordinate.
+    energy : float
+        Total energy ``E`` (above ``V(center)``).
+    center : float
+        The center (a minimum of ``V``) around which the libration takes place.
+    m : Expr or float
+        Inertia coefficient ``m(q) > 0`` (default 1).
+    dps : int
+        mpmath working digits of the quadrature.
+
     Examples
     --------
     Pendulum ``V = -cos q`` with amplitude 1 rad: ``T = 4 K(sin^2(1/2))`` (K of parameter m):
@@ -141,6 +156,21 @@ def libration_period(V: Any, q: sp.Symbol, energy: float, center: float, *, m: A
 
 def rotation_period(V: Any, q: sp.Symbol, energy: float, period: Any, *, m: Any = 1, dps: int = 30) -> float:
     """Time to advance ``q`` by one period ``L`` of V at energy ``E > max V`` (a rotation, Bulgakov §5.2).
+
+    Parameters
+    ----------
+    V : Expr
+        Periodic potential energy ``V(q)``.
+    q : Symbol
+        The coordinate.
+    energy : float
+        Total energy ``E > max V``.
+    period : float or Expr
+        The period ``L > 0`` of ``V``.
+    m : Expr or float
+        Inertia coefficient ``m(q) > 0`` (default 1).
+    dps : int
+        mpmath working digits of the quadrature.
 
     Examples
     --------

@@ -28,6 +28,7 @@ import sympy as sp
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
+from .._validate import check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
 
@@ -313,6 +314,7 @@ def quasi_polynomial_roots(
     >>> r.count, [mpmath.nstr(z, 6) for z in r.roots]
     (2, ['(-0.318132 + 1.33724j)', '(-2.06228 + 7.58863j)'])
     """
+    check_positive("cluster (the distance below which roots count as one multiple root)", cluster)
     q = f if isinstance(f, QuasiPolynomial) else quasi_polynomial(f, variable)
     total, n_eval = _winding(q, _rect_contour(region))
     with mpmath.workdps(dps):

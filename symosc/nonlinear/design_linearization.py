@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from .._validate import check_positive
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = ["DesignLinearization", "design_amplitude_linearization"]
@@ -197,6 +198,7 @@ def design_amplitude_linearization(
         raise ParameterError(f"a_star must be a positive number, got {a_star!r}") from exc
     if not np.isfinite(a) or a <= 0:
         raise ParameterError(f"a_star must be a positive finite number, got {a_star!r}")
+    omega0 = check_positive("omega0 (the starting guess for the frequency)", omega0)
     f = _as_force(f, variables)
 
     def residual(x: np.ndarray) -> np.ndarray:

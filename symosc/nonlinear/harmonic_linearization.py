@@ -312,6 +312,17 @@ def servo_equations(
 
     Returns ``(rhs, state, sigma_expr)``: ``state = (phi, phi', phi'' [, phi'''])`` (three states when ``V = 0``),
     ``rhs`` its derivative and ``sigma_expr = -(x phi'' + y phi' + phi)``.
+
+    Parameters
+    ----------
+    T, U, V : float
+        Time constants of (12.89): ``T > 0``, ``U > 0``, ``V >= 0``.
+    L, M, n : float
+        Feedback parameters: ``x = L**2 + T U n`` and ``y = M + T n``.
+    g : Expr
+        The nonlinear characteristic, a SymPy expression in ``sigma``.
+    sigma : Symbol
+        The characteristic's argument.
     """
     if T <= 0 or U <= 0 or V < 0:
         raise ParameterError("the servo needs T > 0, U > 0 and V >= 0 (time constants)")

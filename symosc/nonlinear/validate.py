@@ -189,7 +189,7 @@ def numeric_limit_cycle(
 
     # Newton-like iteration on P(x0) = x0 with the Floquet multiplier as the slope estimate; a strongly
     # contracting map (relaxation regime) converges in a couple of steps, a weakly contracting one needs the slope
-    a = float(guess)
+    a = check_positive("guess (the amplitude guess, e.g. the series value)", guess)
     T, xr, integral = ret(a)
     prev = None
     for _ in range(60):

@@ -334,7 +334,20 @@ def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:
 
 
 def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
-    """Image of ``d/dt Integral(x(u) y(t - u), (u, 0, t))`` (2.45, Duhamel): ``X(p) Y(p)``."""
+    """Image of ``d/dt Integral(x(u) y(t - u), (u, 0, t))`` (2.45, Duhamel): ``X(p) Y(p)``.
+
+    Parameters
+    ----------
+    image_x, image_y : Expr
+        Carson images ``X(p)`` and ``Y(p)`` of the two originals.
+    p : Symbol
+        The image variable.
+
+    >>> import sympy as sp
+    >>> p = sp.Symbol("p")
+    >>> duhamel(p / (p + 1), sp.Integer(1), p)      # x = exp(-t), y = 1: d/dt of the convolution is exp(-t)
+    p/(p + 1)
+    """
     return sp.sympify(image_x) * sp.sympify(image_y)
 
 

@@ -92,7 +92,7 @@ def _linear_model(system: Any) -> Any:
     if isinstance(system, LagrangianSystem):
         return system.linearize()
     raise ModelError(
-        f"stability_region needs a LagrangianSystem or a LinearModel, got {type(system).__name__}; "
+        f"system must be a LagrangianSystem or a LinearModel, got {type(system).__name__}; "
         "build one with e.g. symosc.models.n_link_pendulum(N, inverted=True, pivot='vertical')"
     )
 

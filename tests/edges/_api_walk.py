@@ -12,6 +12,7 @@ import importlib
 import inspect
 import json
 import pkgutil
+import re
 import signal
 import sys
 import warnings
@@ -27,6 +28,8 @@ BAD = [None, float("nan"), float("inf"), -1, 0, "abc", 1.5, np.array([[1.0, 2.0,
 BAD_NAMES = ["None", "nan", "inf", "-1", "0", "'abc'", "1.5", "array(1x3)"]
 #: valid-but-expensive requests for any numeric arguments (a Monte Carlo map per call); covered by their own tests
 SKIP_FUNCTIONS = {"symosc.identification.error_map"}
+#: also report symosc errors whose message names no argument or states no expectation
+CHECK_MESSAGES = True
 SKIP_MODULES = {"symosc.cli", "symosc.sweep", "symosc.scene", "symosc.numeric"}  # validated by their own tests
 
 
@@ -69,6 +72,29 @@ def required(fn):
     ]
 
 
+_EXPECT = re.compile(
+    r"expected|must|should|choose|valid|\buse\b|>=|<=|> 0|< 0|positive|negative|finite|at least|at most|one of|"
+    r"did you mean|need|require|only|cannot|not allowed|give |pass |instead|range|integer|nonzero|non-zero|"
+    r"smaller|larger|greater|less than|substitute",
+    re.IGNORECASE,
+)
+
+
+def vague(fn, message: str) -> str | None:
+    """Why a symosc error message is vague: it names no argument of ``fn`` or states no expectation."""
+    try:
+        names = list(inspect.signature(fn).parameters)
+    except (TypeError, ValueError):
+        names = []
+    if names and not any(re.search(rf"(?<![A-Za-z0-9_]){re.escape(p)}(?![A-Za-z0-9_])", message) for p in names):
+        return "names no argument"
+    if not _EXPECT.search(message):
+        return "states no expectation"
+    if re.search(r"expected: see help\(|expected: Any\b", message):
+        return "the expectation only points to help()"
+    return None
+
+
 def call(fn, args, cap):
     signal.alarm(cap)
     try:
@@ -76,8 +102,9 @@ def call(fn, args, cap):
             warnings.simplefilter("ignore")
             fn(*args)
         return None
-    except SymoscError:
-        return None
+    except SymoscError as exc:
+        why = vague(fn, str(exc)) if CHECK_MESSAGES else None
+        return f"vague {type(exc).__name__} ({why}): {str(exc)[:300]}" if why else None
     except _Timeout:
         return "timeout"
     except RecursionError as exc:

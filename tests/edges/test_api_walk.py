@@ -3,7 +3,9 @@
 The walk (``tests/edges/_api_walk.py``) discovers every function in the ``__all__`` of every subpackage of
 symosc at run time, so subpackages added later are covered.  Each required argument gets one of None, nan, inf,
 -1, 0, "abc", 1.5 and a 1x3 array (all the same first, then hypothesis-drawn mixtures); each call has a 20 s
-SIGALRM cap and the whole walk runs in a subprocess with an overall cap.
+SIGALRM cap and the whole walk runs in a subprocess with an overall cap.  Every symosc error the walk provokes must
+also be explicit: its message names an argument of the function and states an expectation (what the argument must
+be, or what to do), and the expectation is more than a pointer to ``help()``.
 """
 
 from __future__ import annotations
@@ -36,9 +38,11 @@ def test_guard_names_the_argument():
     """The boundary guard's message names the offending argument; a valid call is unchanged."""
     from symosc.operational import heaviside_expand, pairwise_root_sum_product
 
-    with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*p = the number 1.5"):
+    with pytest.raises(ParameterError, match=r"heaviside_expand\(\): .*argument 'p' .* got the number 1.5; expected: "):
         heaviside_expand(1.5, 1.5)
-    with pytest.raises(ParameterError, match="must not be None"):
+    with pytest.raises(
+        ParameterError, match=r"must not be None; argument 'p' of pairwise_root_sum_product\(\) got None; expected"
+    ):
         pairwise_root_sum_product(None, None)
     import sympy as sp
 
@@ -57,5 +61,123 @@ def test_guard_keeps_genuine_bugs_visible():
     assert g(0.0) == 1.0
     with pytest.raises(IndexError):
         g(3.0)
-    with pytest.raises(ParameterError, match="x = the non-finite number nan"):
+    with pytest.raises(ParameterError, match=r"argument 'x' of f\(\) got the non-finite number nan; expected: float"):
         g(float("nan"))
+
+
+def test_message_states_the_expectation_from_the_docstring():
+    """The guard's message quotes the numpydoc "Parameters" entry (type and first sentence) of the argument."""
+    from symosc._validate import guard
+
+    def links(n: int, *, kind: str = "point") -> int:
+        """Toy.
+
+        Parameters
+        ----------
+        n : int
+            Number of links (n >= 1). Further text is not quoted.
+        kind : {"point", "rigid"}
+            Link model.
+
+        Returns
+        -------
+        int
+        """
+        return list(range(3))[n]
+
+    g = guard(links)
+    with pytest.raises(ParameterError) as info:
+        g(-7)
+    assert "argument 'n' of links() got the negative number -7; expected: int — Number of links (n >= 1)" in str(
+        info.value
+    )
+    assert "Further" not in str(info.value)
+    with pytest.raises(
+        ParameterError, match=r"argument 'kind' of links\(\) got None; expected: \{\"point\", \"rigid\"\}"
+    ):
+        g(1, kind=None)
+    assert g(2) == 2
+
+
+def test_message_falls_back_to_the_type_hint():
+    from symosc._validate import guard
+
+    def f(count: int) -> float:
+        return 1.0 / count
+
+    with pytest.raises(ParameterError, match=r"argument 'count' of f\(\) got zero; expected: int"):
+        guard(f)(0)
+
+
+def test_vague_error_from_inside_is_completed():
+    """A symosc error raised deep inside that names no argument gets the argument and its expectation added (from
+    the docstring, else from a documented example); the class is kept."""
+    from symosc._validate import guard
+    from symosc.errors import ModelError
+
+    def resonance(stiffness, mass):
+        """Toy.
+
+        Examples
+        --------
+        >>> resonance(4.0, 1.0)
+        2.0
+        """
+        if stiffness != stiffness:
+            raise ModelError("the spring is undefined")
+        return (stiffness / mass) ** 0.5
+
+    g = guard(resonance)
+    with pytest.raises(ModelError) as info:
+        g(float("nan"), 1.0)
+    text = str(info.value)
+    assert text.startswith("resonance(): argument 'stiffness' of resonance() got the non-finite number nan; expected: ")
+    assert "a value like 4.0 (as in the documented example resonance(...))" in text
+    assert text.endswith("the spring is undefined")
+    assert g(4.0, 1.0) == 2.0
+
+
+def test_message_from_a_real_function_names_argument_and_expectation():
+    """relay_regulator_cycles checks its own arguments; the pendulum's n names its range and the alternative."""
+    from symosc.models import n_link_pendulum
+    from symosc.nonlinear import relay_regulator_cycles
+
+    with pytest.raises(ParameterError, match=r"dead_zone must be >= 0"):
+        relay_regulator_cycles(0.1, 1.0, 1.0, 1.0, dead_zone=-1.0)
+    with pytest.raises(ParameterError, match=r"n must be a positive integer"):
+        n_link_pendulum(-1)
+
+
+#: string parameters that are free text (a name for generated code), not a choice among values
+FREE_TEXT = {("symosc.codegen.export", "name")}
+
+
+def _probe(mode: str) -> list[list[str]]:
+    script = WALK.with_name("_example_probe.py")
+    env = {**os.environ, "PYTHONPATH": str(Path(symosc.__file__).parents[1])}
+    proc = subprocess.run(
+        [sys.executable, str(script), mode], capture_output=True, text=True, timeout=900, env=env, check=False
+    )
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    return [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
+
+
+def test_misspelt_options_get_the_closest_valid_value():
+    """Every string option of every public function with a documented example: the example called again with the
+    option misspelt (default + "x") raises a symosc error that names the option and the closest valid value."""
+    checked = [r for r in _probe("options") if ": " in r[1]]
+    assert len(checked) >= 25  # the probe reached the options (not just "no example")
+    bad = [r for r in checked if not r[1].endswith(": ok") and (r[0], r[1].split(":")[0]) not in FREE_TEXT]
+    assert bad == [], "\n".join(map(str, bad))
+
+
+@pytest.mark.slow
+def test_bad_numeric_options_are_refused_explicitly():
+    """Every numeric keyword of every public function with a documented example set to -1, nan, inf, "abc" (and 1.5
+    for integers): the call returns, or raises a symosc error that names an argument and states an expectation;
+    never a generic exception, never a hang (20 s cap per call).  Tolerances, limits and seeds used to hang or
+    return nonsense (``rtol=nan`` integrated forever, ``tol=-1`` ran to the iteration cap)."""
+    checked = [r for r in _probe("numbers") if ": " in r[1]]
+    assert len(checked) >= 400
+    bad = [r for r in checked if not (r[1].endswith(": ok") or r[1].endswith(": ACCEPTED"))]
+    assert bad == [], "\n".join(map(str, bad))

@@ -53,4 +53,4 @@ def test_relay_amplitude_from_first_harmonic():
     for h, b in zip(res.gains, res.relay_amplitudes(), strict=True):
         assert h * b == pytest.approx(J, rel=1e-10)
     with pytest.raises(ParameterError):
-        relay_regulator_boundary(0.2, -0.5, 1.0, 0.3)
+        relay_regulator_boundary(0.2, 0.5, -1.0, 0.3)
