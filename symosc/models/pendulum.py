@@ -34,7 +34,8 @@ def _check_chain_arguments(n, links, inverted, pivot, *, max_links=None):
                 f"model costs about {_COST_AT_MAX_S:.0f} s at n = {MAX_SYMBOLIC_LINKS} and grows like "
                 f"n**{_COST_EXPONENT} (measured), so n = {n} would take about {estimate:.0f} s. For small "
                 f"oscillations of a long chain use n_link_pendulum_linearization({n}, ...) (closed-form M and K, "
-                "built in O(n**2)); for large motions integrate a shorter chain's compiled equations"
+                "built in O(n**2)); for large motions integrate a shorter chain's compiled equations, or pass "
+                "max_links=None to build it anyway"
             )
         check_choice("links", links, ("point", "rigid"))
         check_choice("pivot", pivot, ("fixed", "vertical"))
@@ -67,7 +68,14 @@ def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
     }
 
 
-def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, pivot: str = "fixed") -> LagrangianSystem:
+def n_link_pendulum(
+    n: int,
+    *,
+    links: str = "point",
+    inverted: bool = False,
+    pivot: str = "fixed",
+    max_links: int | None = MAX_SYMBOLIC_LINKS,
+) -> LagrangianSystem:
     """A planar chain of ``n`` links in a uniform gravity field (full nonlinear model).
 
     Parameters
@@ -84,6 +92,9 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
         upward vertical (``True``); in both cases ``phi = 0`` is an equilibrium.
     pivot : {"fixed", "vertical"}
         ``"vertical"``: the pivot moves as ``y = a*cos(p*t)`` (a rheonomic system).
+    max_links : int or None
+        Refuse chains longer than this up front (default 40) with the estimated cost; ``None`` builds any
+        length (minutes from n of about 60 on).
 
     Returns
     -------
@@ -109,7 +120,9 @@ def n_link_pendulum(n: int, *, links: str = "point", inverted: bool = False, piv
     [0, 0],
     [0, 0]])
     """
-    n, inverted = _check_chain_arguments(n, links, inverted, pivot, max_links=MAX_SYMBOLIC_LINKS)
+    if max_links is not None and (isinstance(max_links, bool) or not isinstance(max_links, int) or max_links < 1):
+        raise ParameterError(f"max_links must be a positive integer or None, got {max_links!r}")
+    n, inverted = _check_chain_arguments(n, links, inverted, pivot, max_links=max_links)
     s = pendulum_symbols(n)
     phi, m, l, lc, inertia, g = s["phi"], s["m"], s["l"], s["lc"], s["I"], s["g"]
     up = 1 if inverted else -1

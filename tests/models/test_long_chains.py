@@ -74,6 +74,10 @@ def test_two_hundred_links_refused_up_front_with_the_alternative():
     with pytest.raises(ParameterError, match=r"n <= 40.*n\*\*3\.6.*n_link_pendulum_linearization\(200") as info:
         n_link_pendulum(200)
     assert isinstance(info.value, ModelError)  # the scene loader catches ModelError for bad catalogue entries
+    assert "max_links=None" in str(info.value)
+    with pytest.raises(ParameterError, match="n <= 3"):
+        n_link_pendulum(4, max_links=3)
+    assert n_link_pendulum(4, max_links=None).coordinates[-1] == sp.Symbol("phi4", real=True)  # the limit is lifted
     lin = n_link_pendulum_linearization(200)
     assert lin.M.shape == (200, 200) and lin.K[199, 199] == sp.Symbol("g", positive=True) * lin.M[199, 199] / sp.Symbol(
         "l200", positive=True
