@@ -94,6 +94,14 @@ from .validate import (
     validate_lindstedt,
 )
 
+# Bulgakov (1954) ch. 5 and 12: averaging normal form, non-resonant forcing, second approximations (issue 16)
+from .averaging_normal_form import (
+    AveragingNormalForm,
+    QuasiPeriodicRegime,
+    ShortenedEquations,
+    averaging_normal_form,
+)
+
 __all__ = [
     "AveragedEquations",
     "BacklashServoRun",
@@ -185,6 +193,10 @@ __all__ = [
     "vibrational_averaging",
     "vibrational_averaging_of",
     "vibrational_stiffness",
+    "AveragingNormalForm",
+    "QuasiPeriodicRegime",
+    "ShortenedEquations",
+    "averaging_normal_form",
 ]
 
 
