@@ -101,6 +101,7 @@ from .averaging_normal_form import (
     ShortenedEquations,
     averaging_normal_form,
 )
+from .forced_nonresonant import NonResonantForcedSolution, nonresonant_forced_solution
 
 __all__ = [
     "AveragedEquations",
@@ -197,6 +198,8 @@ __all__ = [
     "QuasiPeriodicRegime",
     "ShortenedEquations",
     "averaging_normal_form",
+    "NonResonantForcedSolution",
+    "nonresonant_forced_solution",
 ]
 
 

@@ -469,7 +469,8 @@ def averaging_normal_form(
     >>> sh = nf.shortened()
     >>> sh.rates[0]
     -a1**3*mu/8 + a1*mu/2
-    >>> sh.regime([1.5], {"mu": 0.1})
+    >>> regime = sh.regime([1.5], {"mu": 0.1})
+    >>> regime
     QuasiPeriodicRegime(a1=2; frequencies=(1); stable)
     """
     f = _operator(fD, D)
