@@ -94,15 +94,6 @@ from .validate import (
     validate_lindstedt,
 )
 
-# Bulgakov (1954) ch. 5 and 12: averaging normal form, non-resonant forcing, second approximations (issue 16)
-from .averaging_normal_form import (
-    AveragingNormalForm,
-    QuasiPeriodicRegime,
-    ShortenedEquations,
-    averaging_normal_form,
-)
-from .forced_nonresonant import NonResonantForcedSolution, nonresonant_forced_solution
-
 __all__ = [
     "AveragedEquations",
     "BacklashServoRun",
@@ -194,12 +185,6 @@ __all__ = [
     "vibrational_averaging",
     "vibrational_averaging_of",
     "vibrational_stiffness",
-    "AveragingNormalForm",
-    "QuasiPeriodicRegime",
-    "ShortenedEquations",
-    "averaging_normal_form",
-    "NonResonantForcedSolution",
-    "nonresonant_forced_solution",
 ]
 
 
@@ -214,6 +199,24 @@ _DEPRECATED_NAMES = {
     "linearisation_boundary": "linearization_boundary",
 }
 __getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())
+
+# Bulgakov (1954) ch. 5 and 12: averaging normal form, non-resonant forcing, second approximations (issue 16)
+from .averaging_normal_form import (  # noqa: E402
+    AveragingNormalForm,
+    QuasiPeriodicRegime,
+    ShortenedEquations,
+    averaging_normal_form,
+)
+from .forced_nonresonant import NonResonantForcedSolution, nonresonant_forced_solution  # noqa: E402
+
+__all__ += [
+    "AveragingNormalForm",
+    "NonResonantForcedSolution",
+    "QuasiPeriodicRegime",
+    "ShortenedEquations",
+    "averaging_normal_form",
+    "nonresonant_forced_solution",
+]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 _guard_public_api(__name__)
