@@ -208,14 +208,17 @@ from .averaging_normal_form import (  # noqa: E402
     averaging_normal_form,
 )
 from .forced_nonresonant import NonResonantForcedSolution, nonresonant_forced_solution  # noqa: E402
+from .poincare_second import SecondApproximation, poincare_second_approximation  # noqa: E402
 
 __all__ += [
     "AveragingNormalForm",
     "NonResonantForcedSolution",
     "QuasiPeriodicRegime",
+    "SecondApproximation",
     "ShortenedEquations",
     "averaging_normal_form",
     "nonresonant_forced_solution",
+    "poincare_second_approximation",
 ]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
