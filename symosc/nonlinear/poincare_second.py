@@ -17,6 +17,7 @@ order (the book's ``B1 = 0``), so ``y_m = (A + mu B) cos u + (higher harmonics) 
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -65,6 +66,8 @@ class SecondApproximation(SymPyPrintable):
     reference: int
     V: np.ndarray = field(repr=False)
     harmonics: np.ndarray = field(repr=False)
+    _operator: tuple = field(default=(), repr=False, compare=False)  # coefficient matrices of f(D), ascending powers
+    _jacobian: tuple = field(default=(), repr=False, compare=False)  # (psi Jacobian rows as Exprs, argument symbols)
 
     def frequency(self, mu: float, order: int = 2) -> float:
         """``omega (1 + b mu)`` (``order=1``) or ``omega (1 + b mu + c mu**2 / 2)`` (``order=2``), rad/s."""
@@ -85,6 +88,56 @@ class SecondApproximation(SymPyPrintable):
         Y = self.harmonics[0] + m * self.harmonics[1]
         k = np.arange(Y.shape[1])
         return (Y @ np.exp(1j * np.outer(k, uu))).real
+
+    def r_matrix(self, n_nodes: int = 256) -> np.ndarray:
+        """Bulgakov's matrix ``R`` of the monodromy ``e^{QP} + mu R + O(mu**2)`` (§12.6, eqs. (12.56), (12.65)).
+
+        Only for first-order systems ``f(D) = A D + H`` (the case the book treats): with ``L = -A^-1 H``,
+        ``R = e^{LP} [-b L P + Integral(e^{-L tau} A^-1 Psi(y*(tau)) e^{L tau}, (tau, 0, P))]``, ``Psi = dpsi/dy``,
+        in the original coordinates (the book's (12.65) in the modal basis ``v``, ``H1 = -Psi``).  The integral uses
+        Gauss–Legendre quadrature on ``n_nodes`` points.
+        """
+        import scipy.linalg as sl
+
+        F = self._operator
+        if len(F) != 2:
+            raise ModelError("the R-matrix (12.65) is formed for first-order systems f(D) = A D + H only")
+        nn = check_int("n_nodes", n_nodes, minimum=16, maximum=100000)
+        H, A = F
+        Ai = np.linalg.inv(A)
+        L = (-Ai @ H).real
+        P = 2 * np.pi / self.omega
+        exprs, args = self._jacobian
+        jac = _compile(list(exprs), list(args), check=False).raw
+        n = A.shape[0]
+        x, wq = np.polynomial.legendre.leggauss(16)
+        panels = max(1, nn // 16)
+        edges = np.linspace(0, P, panels + 1)
+        K = -self.b * L * P
+        k = np.arange(self.harmonics.shape[2])
+        for lo, hi in itertools.pairwise(edges):
+            taus = (hi - lo) / 2 * x + (hi + lo) / 2
+            for tau, wt in zip(taus, wq * (hi - lo) / 2, strict=True):
+                y0 = (self.harmonics[0] @ np.exp(1j * k * self.omega * tau)).real
+                Psi = np.asarray(jac(*y0, *np.zeros(len(args) - n)), dtype=float).reshape(n, len(args))[:, :n]
+                E = sl.expm(L * tau)
+                K = K + wt * np.linalg.solve(E, Ai.real @ Psi @ E)
+        return sl.expm(L * P) @ K
+
+    def critical_multipliers(self, mu: float) -> np.ndarray:
+        """``1 + mu eta`` for the two roots ``eta`` of the critical block of :meth:`r_matrix` (12.61)–(12.64).
+
+        One ``eta`` is 0 (autonomy); the other decides orbital stability (stable if negative, with the other roots
+        of ``Delta`` in the left half-plane).
+        """
+        m = check_finite("mu", mu)
+        R = self.r_matrix()
+        H, A = self._operator
+        lam, U = np.linalg.eig(-np.linalg.inv(A) @ H)
+        crit = np.argsort(np.abs(np.abs(lam.imag) - self.omega) + np.abs(lam.real))[:2]
+        W = np.linalg.inv(U)[crit]
+        eta = np.linalg.eigvals(W @ R @ U[:, crit])
+        return np.real_if_close(1 + m * eta[np.argsort(np.abs(eta))], tol=1e6)
 
     def _repr_latex_(self) -> str:
         return (
@@ -328,4 +381,6 @@ def poincare_second_approximation(
         reference=m,
         V=V,
         harmonics=np.array([Y0A, Y1]),
+        _operator=tuple(c.real if np.all(c.imag == 0) else c for c in F),
+        _jacobian=(tuple(jac), tuple(args)),
     )

@@ -103,3 +103,42 @@ def test_tangent_amplitude_function_and_resonance_refused():
         poincare_second_approximation(
             sp.Matrix([[D**2 + 1, 0], [-1, D]]), [v1 * (1 - y1**2), 0], [y1, y2], [v1, v2], D, 5.0
         )
+
+
+def test_r_matrix_critical_multipliers_against_floquet():
+    """(12.56)-(12.65): the critical block of R gives the multipliers 1 and 1 + mu eta; compare with the monodromy
+    matrix of the full first-order system found by shooting (error O(mu^2)), and with the van der Pol value
+    exp(-2 pi mu) for the plain oscillator."""
+    x, vx, z = sp.symbols("x vx z")
+    dummies = sp.symbols("d1:4")
+    # y1' = v1, v1' = -y1 + mu (1 - y1^2 - z^2) v1, z' = y1 - 2 z   as (D E + H) Y = mu psi
+    f = sp.Matrix([[D, -1, 0], [1, D, 0], [-1, 0, D + 2]])
+    sa = poincare_second_approximation(f, [0, (1 - x**2 - z**2) * vx, 0], [x, vx, z], list(dummies), D, 5.0)
+    m = 0.01
+    rho_pred = sa.critical_multipliers(m)
+    assert rho_pred[0] == pytest.approx(1.0, abs=1e-12)
+
+    def rhs(_t, s):
+        return [s[1], -s[0] + m * (1 - s[0] ** 2 - s[2] ** 2) * s[1], s[0] - 2 * s[2]]
+
+    def flow(s0, T):
+        return solve_ivp(rhs, (0, T), s0, method="DOP853", rtol=1e-12, atol=1e-13).y[:, -1]
+
+    def F(xx):
+        s0 = np.array([xx[0], 0.0, xx[1]])
+        return flow(s0, xx[2]) - s0
+
+    u_star = -np.angle(sa.harmonics[0][0, 1])  # phase where y1 is at its maximum (v1 = 0)
+    y0 = sa.solution(u_star, m)[:, 0]
+    xx = fsolve(F, [y0[0], y0[2], 2 * np.pi / sa.frequency(m)], xtol=1e-12)
+    s0 = np.array([xx[0], 0.0, xx[1]])
+    h = 1e-6
+    mono = np.column_stack([(flow(s0 + h * e, xx[2]) - flow(s0 - h * e, xx[2])) / (2 * h) for e in np.eye(3)])
+    rho = np.sort(np.abs(np.linalg.eigvals(mono)))[1:]  # drop exp(-2P), keep the critical pair
+    assert rho[1] == pytest.approx(1.0, abs=1e-6)
+    eta = (rho_pred[1] - 1) / m
+    assert abs(rho[0] - rho_pred[1]) < (eta * m) ** 2  # 1 + mu eta is the first-order truncation
+    assert abs(rho[0] - np.exp(eta * m)) < 3 * m**2  # the exponent mu eta itself is right to O(mu^2)
+    assert abs(rho_pred[1] - 1) > 10 * m**2  # the first-order term is resolved, not just 1
+    with pytest.raises(ModelError, match="first-order"):
+        poincare_second_approximation(sp.Matrix([[D**2 + 1]]), [(1 - y1**2) * v1], [y1], [v1], D, 5.0).r_matrix()
