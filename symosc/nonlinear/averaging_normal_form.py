@@ -380,18 +380,25 @@ class ShortenedEquations(SymPyPrintable):
 
 
 def _roots(delta: sp.Poly) -> list:
-    deg = delta.degree()
-    exact = sp.roots(delta, multiple=False)
-    if sum(exact.values()) == deg and all(sp.count_ops(r) < 80 for r in exact):
-        if any(k > 1 for k in exact.values()):
-            bad = [r for r, k in exact.items() if k > 1]
+    """Simple roots of ``Delta``: exact for rational factors of degree <= 2 (also quadratic in ``D**2``), otherwise
+    30-digit floats (general radicals of cubics and quartics are too slow to simplify and no more useful)."""
+    out: list = []
+    _, factors = sp.factor_list(delta)
+    for g, mult in factors:
+        if mult > 1:
             raise ModelError(
-                f"Delta(D) has the multiple root(s) {bad}: the normal form needs simple roots (Bulgakov (1954), "
-                "§12.11, formulas (12.146)-(12.153)); perturb the parameters slightly"
+                f"Delta(D) has the multiple factor ({g.as_expr()})**{mult}: the normal form needs simple roots "
+                "(Bulgakov (1954), §12.11, formulas (12.146)-(12.153)); perturb the parameters slightly"
             )
-        return [sp.radsimp(sp.expand_complex(r)) for r in exact]
-    roots = delta.nroots(n=_DPS, maxsteps=200)
-    vals = np.array([complex(r) for r in roots])
+        D = g.gen
+        coeffs = g.all_coeffs()
+        if g.degree() <= 2:
+            out += [sp.expand_complex(r) for r in sp.roots(g, multiple=True)]
+        elif g.degree() == 4 and all(c == 0 for c in coeffs[1::2]):  # quadratic in D**2: SymPy is quick here
+            out += list(sp.roots(g, multiple=True))
+        else:
+            out += [sp.re(r) + sp.I * sp.im(r) for r in sp.Poly(g.as_expr(), D).nroots(n=_DPS, maxsteps=200)]
+    vals = np.array([complex(sp.N(r, _DPS)) for r in out])
     scale = max(1.0, float(np.max(np.abs(vals))))
     for i in range(len(vals)):
         for j in range(i):
@@ -399,7 +406,7 @@ def _roots(delta: sp.Poly) -> list:
                 raise ModelError(
                     f"Delta(D) has (nearly) multiple roots near {vals[i]:.8g}: the normal form needs simple roots"
                 )
-    return [sp.re(r) + sp.I * sp.im(r) for r in roots]
+    return out
 
 
 def _is_real(r: sp.Expr) -> bool:
@@ -412,7 +419,8 @@ def _is_real(r: sp.Expr) -> bool:
 
 def _clean(e: sp.Expr, exact: bool) -> sp.Expr:
     if exact:
-        return sp.radsimp(sp.nsimplify(sp.expand_complex(e)) if not e.free_symbols else sp.expand_complex(e))
+        e = sp.expand_complex(e)
+        return _simplest_number(e) if not e.free_symbols else e
     return sp.N(sp.expand_complex(e), _DPS)
 
 

@@ -262,3 +262,29 @@ def test_bad_input():
         sh.regime([1.0, 0.0])
     with pytest.raises(ConvergenceError):
         sh.regime([1.0, 0.0], {"mu": 0.05}, tol=-1.0)
+
+
+def test_three_pairs_with_numeric_roots():
+    """A cubic in D^2 (roots in floats): each single-mode regime of three coupled van der Pol oscillators has the
+    amplitude of the NumPy modal closed form, and the shortened rates vanish there."""
+    K3 = np.array([[2.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 3.0]])
+    ys = sp.symbols("q1:4", real=True)
+    vs = sp.symbols("w1:4", real=True)
+    f = D**2 * sp.eye(3) + sp.Matrix(K3.astype(int))
+    nf = averaging_normal_form(
+        f,
+        [mu * (1 - ys[i] ** 2) * vs[i] for i in range(3)],
+        list(ys),
+        D,
+        derivatives={vs[i]: (ys[i], 1) for i in range(3)},
+    )
+    w2, Phi = np.linalg.eigh(K3)
+    np.testing.assert_allclose([complex(r).imag for r in nf.complex_roots], np.sqrt(w2), rtol=1e-13)
+    sh = nf.shortened()
+    for h in range(3):
+        guess = np.zeros(3)
+        guess[h] = 1.0
+        reg = sh.regime(guess, {"mu": 0.05})
+        m = nf.reference[h]
+        c = np.sum(Phi[:, h] ** 4) / (8 * Phi[m, h] ** 2)
+        assert reg.values[h] == pytest.approx(np.sqrt(1 / (2 * c)), rel=1e-10)
