@@ -58,7 +58,7 @@ class QuasiPeriodicRegime(SymPyPrintable):
     stable : bool
         All eigenvalues in the open left half-plane and every pair left out of the averaging decays (``eps_h < 0``).
     residual : float
-        Largest |rate| at :attr:`values`.
+        Largest absolute rate at :attr:`values`.
     """
 
     variables: tuple

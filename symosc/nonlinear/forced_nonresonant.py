@@ -45,7 +45,7 @@ class NonResonantForcedSolution(SymPyPrintable):
     harmonics : ndarray, shape (order + 1, n_harmonics + 1), complex
         One-sided Fourier coefficients of ``q_k``: ``q_k(t) = Re sum_n c_kn e^{i n Omega t}`` (``c_k0`` real).
     tail : float
-        Largest |coefficient| in the upper quarter of the harmonics kept (the truncation of the Fourier grid).
+        Largest absolute coefficient in the upper quarter of the harmonics kept (the truncation of the Fourier grid).
     """
 
     C1: EpsSeries
