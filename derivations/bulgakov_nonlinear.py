@@ -222,8 +222,61 @@ def ndof_poincare() -> None:
     _row("  numeric Floquet exponents (Re)", "", ", ".join(f"{e:.4g}" for e in r["exponents_numeric_real"]))
 
 
+def normal_form_and_second_approximations() -> None:
+    """§12.11-12.12 averaging normal form, §12.4 second approximation, §5.23 non-resonant forcing, §5.24 flywheel."""
+    from symosc.nonlinear import (
+        averaging_normal_form,
+        flywheel_speed_series,
+        nonresonant_forced_solution,
+        poincare_second_approximation,
+    )
+
+    print("\n== §12.11-12.12 normal form and shortened equations; §12.4, §5.23, §5.24 second approximations ==")
+    D, y1, y2, v1, v2, mu = sp.symbols("D y1 y2 v1 v2 mu")
+    nf = averaging_normal_form(sp.Matrix([[D**2 + 1]]), [mu * (1 - y1**2) * v1], [y1], D, derivatives={v1: (y1, 1)})
+    a1 = nf.amplitudes[0]
+    _row("(12.160) = (12.34): a' for van der Pol", "mu a/2 - mu a^3/8", nf.shortened().rates[0].subs(a1, A))
+    f2 = sp.Matrix([[D**2 + 2, -1], [-1, D**2 + 3]])
+    nf2 = averaging_normal_form(
+        f2, [mu * (1 - y1**2) * v1, mu * (1 - y2**2) * v2], [y1, y2], D, derivatives={v1: (y1, 1), v2: (y2, 1)}
+    )
+    sh = nf2.shortened()
+    _row("two coupled vdP: w1^2, w2^2 (roots of Delta)", "(5 -+ sqrt5)/2", [sp.im(r) ** 2 for r in nf2.complex_roots])
+    for guess in ([1.0, 0.0], [0.0, 1.0], [1.0, 1.0]):
+        reg = sh.regime(guess, {"mu": 0.05})
+        vals = ", ".join(f"{x:.6f}" for x in reg.values)
+        eig = ", ".join(f"{e.real:.5f}" for e in reg.eigenvalues)
+        _row(
+            f"  regime (12.155) from {guess}",
+            "(not in book)",
+            vals,
+            f"Re eig {eig}: {'stable' if reg.stable else 'saddle'}",
+        )
+    sa = poincare_second_approximation(sp.Matrix([[D**2 + 1]]), [(1 - y1**2) * v1], [y1], [v1], D, 5.0)
+    _row("§12.4 van der Pol: c/2 (omega = 1 - mu^2/16)", R(-1, 16), sp.nsimplify(round(sa.c / 2, 12)))
+    _row("  B (amplitude correction)", 0, sp.nsimplify(round(sa.B, 12)))
+    sa2 = poincare_second_approximation(sp.Matrix([[D**2 + 1]]), [(1 - y1**2) * v1 - y1**3], [y1], [v1], D, 5.0)
+    _row("  + cubic spring -mu y^3: b = 3A*^2/8", R(3, 2), sp.nsimplify(round(sa2.b, 12)), "T14, A* = 2")
+    _row("  + cubic spring: B, c", "(not in book)", f"{sa2.B:.6f}, {sa2.c:.6f}")
+    q, t_ = sp.symbols("q t")
+    fs = nonresonant_forced_solution(sp.cos(2 * t_) - mu * q**3, q, sp.Symbol("v"), t_, 1.0, 2.0, 3)
+    _row("§5.23 q''+q = cos 2t - mu q^3: C1 order 0", R(-1, 3), sp.nsimplify(round(float(fs.C1.coefficients[0]), 12)))
+    _row(
+        "  C1 order 1 (by hand: -1/105)",
+        R(-1, 105),
+        sp.nsimplify(float(fs.C1.coefficients[1]), tolerance=1e-12, rational=True),
+    )
+    s_ = sp.Symbol("s")
+    fw = flywheel_speed_series(sp.cos(s_), s_, 2.0, samples=256, drive_slope=-1.0)
+    # by hand from (5.312)-(5.313) with D' = -1, D'' = 0: r2 = cos(s)/r_m^2 + cos(2s)/(4 r_m^3)
+    note = "by hand: cos s/r_m^2 + cos 2s/(4 r_m^3)"
+    _row("§5.24 flywheel T = cos s, r_m = 2: r2(0)", R(9, 32), sp.nsimplify(round(float(fw.r2[0]), 12)), note)
+    _row("  r2(pi)", R(-7, 32), sp.nsimplify(round(float(fw.r2[128]), 12)), note)
+
+
 SECTIONS = [poincare_van_der_pol, lindstedt_examples, ndof_poincare]
 SECTIONS += [averaging_examples, piecewise_examples, delay_examples, high_frequency_examples]
+SECTIONS += [normal_form_and_second_approximations]
 
 
 def main() -> None:

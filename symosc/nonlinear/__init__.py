@@ -211,6 +211,27 @@ _DEPRECATED_NAMES = {
 }
 __getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())
 
+# Bulgakov (1954) ch. 5 and 12: averaging normal form, non-resonant forcing, second approximations (issue 16)
+from .averaging_normal_form import (  # noqa: E402
+    AveragingNormalForm,
+    QuasiPeriodicRegime,
+    ShortenedEquations,
+    averaging_normal_form,
+)
+from .forced_nonresonant import NonResonantForcedSolution, nonresonant_forced_solution  # noqa: E402
+from .poincare_second import SecondApproximation, poincare_second_approximation  # noqa: E402
+
+__all__ += [
+    "AveragingNormalForm",
+    "NonResonantForcedSolution",
+    "QuasiPeriodicRegime",
+    "SecondApproximation",
+    "ShortenedEquations",
+    "averaging_normal_form",
+    "nonresonant_forced_solution",
+    "poincare_second_approximation",
+]
+
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
 _guard_public_api(__name__)
 

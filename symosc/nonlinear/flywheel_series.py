@@ -9,6 +9,15 @@ reduced mass and ``D(r_m) = E`` fixing the mean speed (5.306).  With ``q = sigma
 
 so the cyclic irregularity is ``delta = (max r1 - min r1) / (M r_m) + O(1/M**2)``; solving for ``M`` gives
 Radinger's formula (5.319).
+
+Second approximation (the ``1/M**2`` step (5.312)–(5.313)), written with the position ``q`` as the independent
+variable, ``r(q) = r_m + r1(q)/M + r2(q)/M**2 + O(1/M**3)``: collecting ``1/M**2`` in ``(M + a) r dr/dq + a' r**2/2 =
+M [T + D(r) - E] / M`` gives ``r_m r2' = D' r1 - (r1**2/2 + r_m a r1)'``, periodic only if ``mean(r1) = 0`` (which
+fixes ``b1`` as (5.309)), so
+
+    r2 = [D' R1 - r1**2/2 - r_m a r1] / r_m + b2,        R1' = r1,
+
+with ``D' = D'(r_m)``; the ``1/M**3`` periodicity condition ``mean(D' r2 + D'' r1**2/2) = 0`` fixes ``b2``.
 """
 
 from __future__ import annotations
@@ -38,24 +47,41 @@ class FlywheelSpeedSeries:
         ``r1(sigma)`` (zero mean): ``r = r_m + r1 / M + O(1/M**2)``.
     r_m : float
         Mean speed.
+    r2 : ndarray or None
+        Second term ``r2(q)`` on the same grid (position ``q`` = :attr:`sigma`), when the drive's slope ``D'(r_m)``
+        was given: ``r(q) = r_m + r1(q)/M + r2(q)/M**2 + O(1/M**3)``.
     """
 
     sigma: np.ndarray
     r1: np.ndarray
     r_m: float
+    r2: np.ndarray | None = None
 
     def __repr__(self) -> str:
-        return f"FlywheelSpeedSeries(r_m={self.r_m:.6g}, swing of r1 = {float(np.ptp(self.r1)):.6g})"
+        second = "" if self.r2 is None else f", swing of r2 = {float(np.ptp(self.r2)):.6g}"
+        return f"FlywheelSpeedSeries(r_m={self.r_m:.6g}, swing of r1 = {float(np.ptp(self.r1)):.6g}{second})"
 
-    def speed(self, M: float) -> np.ndarray:
-        """``r_m + r1(sigma) / M`` on :attr:`sigma`."""
-        return self.r_m + self.r1 / float(M)
+    def _terms(self, M: float, order: int) -> np.ndarray:
+        from .._validate import check_int, check_positive
 
-    def irregularity(self, M: float) -> float:
-        """Cyclic irregularity ``(r_max - r_min) / r_m`` to first order in ``1/M``."""
+        m = check_positive("M", M)
+        k = check_int("order", order, minimum=1, maximum=2)
+        if k == 2 and self.r2 is None:
+            raise ParameterError("the second term needs drive_slope= (D'(r_m)) in flywheel_speed_series")
+        out = self.r_m + self.r1 / m
+        return out + self.r2 / m**2 if k == 2 else out
+
+    def speed(self, M: float, order: int = 1) -> np.ndarray:
+        """``r_m + r1 / M`` (``order=1``) or ``r_m + r1 / M + r2 / M**2`` (``order=2``) on :attr:`sigma`."""
+        return self._terms(M, order)
+
+    def irregularity(self, M: float, order: int = 1) -> float:
+        """Cyclic irregularity ``(r_max - r_min) / r_m`` from the series truncated at ``1/M**order``."""
         if not M > 0:
             raise ParameterError(f"M must be positive, got {M}")
-        return float(np.ptp(self.r1)) / (float(M) * self.r_m)
+        if order == 1:
+            return float(np.ptp(self.r1)) / (float(M) * self.r_m)
+        return float(np.ptp(self._terms(M, order))) / self.r_m
 
     def mass_for(self, delta: float) -> float:
         """Total reduced mass for an irregularity ``delta`` (first order; Radinger's formula (5.319))."""
@@ -65,7 +91,15 @@ class FlywheelSpeedSeries:
 
 
 def flywheel_speed_series(
-    torque: Any, s: sp.Symbol, r_m: float, *, mass_variation: Any = 0, period: float = 2 * math.pi, samples: int = 2048
+    torque: Any,
+    s: sp.Symbol,
+    r_m: float,
+    *,
+    mass_variation: Any = 0,
+    period: float = 2 * math.pi,
+    samples: int = 2048,
+    drive_slope: float | None = None,
+    drive_curvature: float = 0.0,
 ) -> FlywheelSpeedSeries:
     """First term of the ``1/M`` series for the speed of a machine with a flywheel (Bulgakov (1954), §5.24).
 
@@ -83,6 +117,9 @@ def flywheel_speed_series(
         Period of ``T`` and ``a`` in ``s``.
     samples : int
         Grid points over one period (spectral quadrature of the periodic integrals).
+    drive_slope, drive_curvature : float, optional
+        ``D'(r_m)`` (nonzero; negative for a governed engine) and ``D''(r_m)`` of the speed-dependent driving
+        force ``D(r)``.  With ``drive_slope`` the second term ``r2`` is computed (5.312)–(5.313).
 
     Returns
     -------
@@ -133,4 +170,15 @@ def flywheel_speed_series(
     W = np.fft.irfft(What, n=samples)
     r1 = (W - 0.5 * r_m**2 * A) / r_m
     r1 = r1 - r1.mean()
-    return FlywheelSpeedSeries(sigma=sig, r1=r1, r_m=float(r_m))
+    r2 = None
+    if drive_slope is not None:
+        from .._validate import check_finite
+
+        d1 = check_finite("drive_slope", drive_slope)
+        d2 = check_finite("drive_curvature", drive_curvature)
+        if d1 == 0:
+            raise ModelError("drive_slope D'(r_m) = 0: the mean speed is not fixed by D(r_m) = E (no second term)")
+        R1 = np.fft.irfft(np.where(k > 0, np.fft.rfft(r1) / np.where(k > 0, 1j * k, 1.0), 0.0), n=samples)
+        r2 = (d1 * R1 - 0.5 * r1**2 - r_m * A * r1) / r_m
+        r2 = r2 - r2.mean() - d2 * float(np.mean(r1**2)) / (2 * d1)  # mean(D' r2 + D'' r1^2 / 2) = 0
+    return FlywheelSpeedSeries(sigma=sig, r1=r1, r_m=float(r_m), r2=r2)

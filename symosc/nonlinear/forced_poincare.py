@@ -105,6 +105,7 @@ def forced_periodic_solution(
 
     See Also
     --------
+    nonresonant_forced_solution : the non-resonant case, as series ``C1(mu)``, ``C2(mu)`` to any order.
     poincare_operator_system : autonomous systems (free phase, frequency correction).
     symosc.nonlinear.limit_cycle : higher orders in the autonomous one-degree-of-freedom case.
 
