@@ -49,8 +49,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
-        When the minimum of ``Re Z(iω)`` lies at an irrational point whose exact arithmetic SymPy cannot close
-        (the network would need algebraic element values of high degree).
+        When exact element values would need a second algebraic extension: element values are exact numbers of
+        one algebraic field (rationals, a square root, or polynomials in one ``CRootOf``); a remainder whose own
+        minimum of ``Re Z(iω)`` lies at an irrational point of that field's extension is refused with this error.
 
     Examples
     --------
@@ -70,4 +71,4 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
         raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, 0)
+    return synthesize(Z, p, "brune")

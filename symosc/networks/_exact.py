@@ -1,0 +1,208 @@
+"""Exact arithmetic of the synthesis procedures (private): rational functions over a number field.
+
+Numerators and denominators are dense coefficient lists (highest power first) over a SymPy domain ``K``: the
+rationals ``QQ`` or an algebraic field ``QQ<a>`` (``a`` a square root or a ``CRootOf``).  All arithmetic,
+cancellation and division is exact polynomial arithmetic in ``K`` (no ``simplify``); numbers are evaluated only to
+decide signs and to pick the smallest of several exactly known candidates.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy import QQ
+from sympy.polys.densearith import (
+    dup_add,
+    dup_exquo,
+    dup_mul,
+    dup_mul_ground,
+    dup_neg,
+    dup_quo_ground,
+    dup_rem,
+    dup_sub,
+)
+from sympy.polys.densebasic import dup_degree, dup_LC, dup_strip
+from sympy.polys.densetools import dup_diff, dup_eval
+from sympy.polys.euclidtools import dup_inner_gcd, dup_invert
+from sympy.polys.factortools import dup_factor_list
+from sympy.polys.polyerrors import ExactQuotientFailed
+
+from ..errors import ModelError
+
+_DIGITS = 40
+NESTED = (
+    "the exact element values would need a second algebraic extension (a root of a polynomial whose coefficients "
+    "are themselves algebraic numbers: {what}); exact synthesis supports one algebraic number field per network"
+)
+
+
+class Nested(ModelError):
+    """A step needs an algebraic number outside the current field (the limitation of the exact synthesis)."""
+
+
+def sym(c, K) -> sp.Expr:
+    """A domain element as a SymPy number (Rational, radical or polynomial in a CRootOf)."""
+    return K.to_sympy(c)
+
+
+def num(c, K, digits: int = _DIGITS) -> sp.Float:
+    return sp.N(sym(c, K), digits)
+
+
+def sign(c, K) -> int:
+    """Exact sign: zero is decided exactly, the sign of a nonzero algebraic number numerically."""
+    if not c:
+        return 0
+    for digits in (_DIGITS, 4 * _DIGITS, 16 * _DIGITS):
+        v = num(c, K, digits)
+        if abs(v) > sp.Float(10) ** (-digits // 2):
+            return 1 if v > 0 else -1
+    return 1 if num(c, K, 16 * _DIGITS) > 0 else -1  # pragma: no cover - a nonzero number below 1e-320
+
+
+def positive(c, K, what: str) -> sp.Expr:
+    if sign(c, K) <= 0:
+        raise ModelError(f"synthesis reached a non-positive {what} = {sym(c, K)} (the target is not positive real?)")
+    return sym(c, K)
+
+
+def reflect(f: list, K) -> list:
+    """``f(-p)``."""
+    n = len(f) - 1
+    return [c if (n - i) % 2 == 0 else K.neg(c) for i, c in enumerate(f)]
+
+
+def even_in_y(f: list, K) -> list:
+    """An even polynomial in ``p`` as a polynomial in ``y = p**2``."""
+    n = len(f) - 1
+    return dup_strip([c for i, c in enumerate(f) if (n - i) % 2 == 0]) if f else []
+
+
+def in_x(f: list, K) -> list:
+    """An even polynomial in ``p`` as a polynomial in ``x = -p**2`` (``x = ω²`` on the imaginary axis)."""
+    g = even_in_y(f, K)
+    n = len(g) - 1
+    return [c if (n - i) % 2 == 0 else K.neg(c) for i, c in enumerate(g)]
+
+
+def poly_p(coeffs: dict, K) -> list:
+    """Polynomial from ``{power: coefficient}``."""
+    if not coeffs:
+        return []
+    n = max(coeffs)
+    return dup_strip([coeffs.get(n - i, K.zero) for i in range(n + 1)])
+
+
+def mul_p(f: list, K) -> list:
+    return f + [K.zero] if f else []
+
+
+def normalize(N: list, D: list, K) -> tuple[list, list]:
+    """Cancel the common factor and make the denominator monic."""
+    if not N:
+        return [], [K.one]
+    _, N, D = dup_inner_gcd(N, D, K)
+    lc = dup_LC(D, K)
+    return dup_quo_ground(N, lc, K), dup_quo_ground(D, lc, K)
+
+
+def even_value(N: list, D: list, x0, K):
+    """Value of the even part of ``N/D`` at ``p² = -x0`` (in ``K``, no square root of ``x0`` needed)."""
+    Dm, Nm = reflect(D, K), reflect(N, K)
+    top = in_x(dup_add(dup_mul(N, Dm, K), dup_mul(Nm, D, K), K), K)
+    bottom = in_x(dup_mul_ground(dup_mul(D, Dm, K), K(2), K), K)
+    den = dup_eval(bottom, x0, K)
+    if not den:
+        raise ModelError("synthesis step evaluated a function at one of its poles")  # pragma: no cover
+    return K.quo(dup_eval(top, x0, K), den)
+
+
+def real_part_x(N: list, D: list, K) -> tuple[list, list]:
+    """``Re Z(iω) = E(x)/Q(x)``, ``x = ω²``."""
+    Dm, Nm = reflect(D, K), reflect(N, K)
+    E = dup_quo_ground(in_x(dup_add(dup_mul(N, Dm, K), dup_mul(Nm, D, K), K), K), K(2), K)
+    Q = in_x(dup_mul(D, Dm, K), K)
+    return E, Q
+
+
+def eval_num(f: list, x: sp.Expr, K, digits: int = _DIGITS) -> sp.Float:
+    """Numerical value of ``f`` at an exact SymPy number ``x``."""
+    xv = sp.N(x, digits + 10)
+    acc = sp.Float(0, digits + 10)
+    for c in f:
+        acc = acc * xv + sp.N(sym(c, K), digits + 10)
+    return acc
+
+
+def real_roots_qq(f: list) -> list[sp.Expr]:
+    """Exact real roots of a polynomial over QQ: Rationals, radicals (degree 2) or CRootOf."""
+    y = sp.Dummy("y")
+    out: list[sp.Expr] = []
+    for factor, _ in dup_factor_list(f, QQ)[1]:
+        poly = sp.Poly([QQ.to_sympy(c) for c in factor], y)
+        if poly.degree() == 2:
+            out += [r for r in sp.roots(poly, y, multiple=True) if r.is_real]
+        else:
+            out += list(poly.real_roots())
+    return out
+
+
+def extension(root: sp.Expr):
+    """The field ``QQ<a>`` generated by an algebraic ``root``; square roots are kept as ``sqrt(m)``."""
+    if root.is_Rational:
+        return QQ
+    radicals = [a for a in root.atoms(sp.Pow) if a.exp == sp.Rational(1, 2)]
+    gen = radicals[0] if radicals else root
+    return QQ.algebraic_field(gen)
+
+
+def to_field(f: list, K_old, K_new) -> list:
+    if K_old == K_new:
+        return f
+    return [K_new.convert_from(c, K_old) for c in f]
+
+
+def roots_in_field(f: list, K, what: str, positive_only: bool = True) -> list:
+    """Roots of ``f`` lying in ``K`` (exact); ``Nested`` when a needed root lies in an extension of ``K``."""
+    roots = []
+    for factor, _ in dup_factor_list(f, K)[1]:
+        if dup_degree(factor) == 1:
+            r = K.quo(K.neg(factor[1]), factor[0])
+            if not positive_only or sign(r, K) > 0:
+                roots.append(r)
+    return roots
+
+
+def exquo(f: list, g: list, K, what: str) -> list:
+    try:
+        return dup_exquo(f, g, K)
+    except ExactQuotientFailed as exc:  # pragma: no cover - an exact identity of the procedure
+        raise ModelError(f"synthesis step failed: {what} is not divisible exactly") from exc
+
+
+__all__ = [
+    "NESTED",
+    "Nested",
+    "dup_degree",
+    "dup_diff",
+    "dup_eval",
+    "dup_invert",
+    "dup_mul",
+    "dup_mul_ground",
+    "dup_neg",
+    "dup_rem",
+    "dup_sub",
+    "even_value",
+    "exquo",
+    "extension",
+    "in_x",
+    "mul_p",
+    "normalize",
+    "positive",
+    "real_part_x",
+    "real_roots_qq",
+    "reflect",
+    "roots_in_field",
+    "sign",
+    "sym",
+    "to_field",
+]
