@@ -93,7 +93,7 @@ def poly_p(coeffs: dict, K) -> list:
 
 
 def mul_p(f: list, K) -> list:
-    return f + [K.zero] if f else []
+    return [*f, K.zero] if f else []
 
 
 def normalize(N: list, D: list, K) -> tuple[list, list]:

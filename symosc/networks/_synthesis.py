@@ -83,9 +83,7 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
         cands.append((sp.Float(0), 0, "oo"))
     elif dE == dQ:
         cands.append((ex.num(K.quo(E[0], Q[0]), K), 0, "oo"))
-    crit = ex.dup_sub(
-        ex.dup_mul(ex.dup_diff(E, 1, K), Q, K), ex.dup_mul(E, ex.dup_diff(Q, 1, K), K), K
-    )
+    crit = ex.dup_sub(ex.dup_mul(ex.dup_diff(E, 1, K), Q, K), ex.dup_mul(E, ex.dup_diff(Q, 1, K), K), K)
     if crit:
         if K.is_QQ:
             for r in ex.real_roots_qq(crit):
@@ -100,7 +98,7 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
         raise ModelError("no candidate for the minimum of Re Z(iω)")
     best = min(c[0] for c in cands)
     tol = sp.Float(10) ** (-ex._DIGITS + 8) * (1 + abs(best))
-    value, _, where = min((c for c in cands if c[0] - best <= tol), key=lambda c: c[1])
+    _value, _, where = min((c for c in cands if c[0] - best <= tol), key=lambda c: c[1])
     if where in ("0", "oo"):
         if where == "0":
             R = K.quo(ex.dup_eval(E, K.zero, K), q0)
@@ -248,16 +246,31 @@ class Engine:
         if parts:
             inner = None if not Yn else self.run(Yd, Yn, K, depth + 1)
             return join(parts, inner, Parallel)
-        R, x0, K, N, D = _minimum(N, D, K)
-        if R:
-            Rv = ex.positive(R, K, "minimum resistance")
-            rest = self.run(ex.dup_sub(N, ex.dup_mul_ground(D, R, K), K), D, K, depth + 1)
-            return join([Resistor(Rv)], rest, Series)
+        # subtract the minimum resistance of Z, or the minimum conductance of Y = 1/Z where that one is exact in
+        # the current field (both keep the function positive real, Theorem III); prefer no field extension
+        zmin = _minimum(N, D, K)
+        if zmin[0] and (zmin[2] == K or zmin[1] in ("0", "oo")):
+            return self._remove_constant(*zmin, "Z", depth)
+        ymin = _minimum(D, N, K)
+        if ymin[0] and (ymin[2] == K or ymin[1] in ("0", "oo")):
+            return self._remove_constant(*ymin, "Y", depth)
+        if zmin[0]:
+            return self._remove_constant(*zmin, "Z", depth)
+        _R, x0, K, N, D = zmin
         if x0 in ("0", "oo"):  # pragma: no cover - excluded by the removals above
             raise ModelError("Re Z vanishes at 0 or infinity after the pole removals")
         if self.cycle == "brune":
             return self._brune(N, D, x0, K, depth)
         return self._bott_duffin(N, D, x0, K, depth)
+
+    def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
+        """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
+        Rv = ex.positive(R, K, "minimum resistance" if mode == "Z" else "minimum conductance")
+        rest_n = ex.dup_sub(N, ex.dup_mul_ground(D, R, K), K)
+        if mode == "Z":
+            return join([Resistor(Rv)], self.run(rest_n, D, K, depth + 1), Series)
+        inner = None if not rest_n else self.run(D, rest_n, K, depth + 1)
+        return join([Resistor(_clean(1 / Rv))], inner, Parallel)
 
     def _brune(self, N: list, D: list, x0, K, depth: int) -> OnePort:
         pD = ex.mul_p(D, K)

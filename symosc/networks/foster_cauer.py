@@ -1,5 +1,8 @@
 """Foster and Cauer canonical forms of reactance (LC) one-ports (Bulgakov (1954), §9.21, §9.23).
 
+Element values are exact: rational, radicals, or polynomials in a ``CRootOf`` when the resonances are roots of
+an irreducible polynomial of degree three or more in ``p²`` (one tank per root).
+
 A reactance function is positive real with ``Re Z(iω) = 0``: Foster's theorem gives
 ``Z = L p + 1/(C0 p) + Σ 2k p/(p² + ω²)`` (first form: a series chain of tanks) and the same for ``Y = 1/Z``
 (second form: parallel series-LC branches); Cauer's continued fractions at infinity (first form) and at zero
@@ -22,7 +25,8 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
-from ._removal import pole_at_infinity, pole_at_zero, remainder_is_zero, remove_axis_poles
+from ._removal import pole_at_infinity, pole_at_zero
+from ._synthesis import remove_axis_poles, to_exact
 from ._util import P, as_symbol, rational_function
 from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
 from .positive_real import real_part_on_axis, require_positive_real
@@ -83,10 +87,10 @@ def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     foster_second, cauer_first
     """
-    Z = _reactance(Z, p)
-    parts, rest = remove_axis_poles(Z, p, "Z")
-    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover - exhausted by its poles
-        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    N, D, K = to_exact(_reactance(Z, p), p)
+    parts, rest, _ = remove_axis_poles(N, D, K, "Z")
+    if rest:  # pragma: no cover - a reactance function is exhausted by its poles
+        raise ParameterError("Foster expansion left a remainder: Z is not a reactance function")
     return _join(parts, Series)
 
 
@@ -105,10 +109,10 @@ def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     foster_first, cauer_second
     """
-    Z = _reactance(Z, p)
-    parts, rest = remove_axis_poles(sp.cancel(1 / Z), p, "Y")
-    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover
-        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    N, D, K = to_exact(_reactance(Z, p), p)
+    parts, rest, _ = remove_axis_poles(D, N, K, "Y")
+    if rest:  # pragma: no cover
+        raise ParameterError("Foster expansion left a remainder: Z is not a reactance function")
     return _join(parts, Parallel)
 
 
