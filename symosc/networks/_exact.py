@@ -8,6 +8,7 @@ decide signs and to pick the smallest of several exactly known candidates.
 
 from __future__ import annotations
 
+import mpmath
 import sympy as sp
 from sympy import QQ
 from sympy.polys.densearith import (
@@ -44,8 +45,32 @@ def sym(c, K) -> sp.Expr:
     return K.to_sympy(c)
 
 
-def num(c, K, digits: int = _DIGITS) -> sp.Float:
-    return sp.N(sym(c, K), digits)
+_GENERATORS: dict = {}
+
+
+def _generator_value(K, digits: int):
+    key = (K, digits)
+    if key not in _GENERATORS:
+        with mpmath.workdps(digits + 10):
+            _GENERATORS[key] = mpmath.mpf(str(sp.N(K.ext.as_expr(), digits + 10)))
+    return _GENERATORS[key]
+
+
+def _qq(c):
+    return mpmath.mpf(int(c.numerator)) / int(c.denominator)
+
+
+def num(c, K, digits: int = _DIGITS):
+    """Numerical value (mpmath) of a domain element: Horner's rule in the generator's value."""
+    with mpmath.workdps(digits + 10):
+        if K.is_QQ:
+            return _qq(c)
+        if not K.ext.is_real:  # pragma: no cover - fields of real targets have real generators
+            return mpmath.mpmathify(complex(sp.N(sym(c, K), digits)))
+        g, acc = _generator_value(K, digits), mpmath.mpf(0)
+        for a in c.to_list():
+            acc = acc * g + _qq(a)
+        return acc
 
 
 def sign(c, K) -> int:
@@ -54,7 +79,7 @@ def sign(c, K) -> int:
         return 0
     for digits in (_DIGITS, 4 * _DIGITS, 16 * _DIGITS):
         v = num(c, K, digits)
-        if abs(v) > sp.Float(10) ** (-digits // 2):
+        if abs(v) > mpmath.mpf(10) ** (-digits // 2):
             return 1 if v > 0 else -1
     return 1 if num(c, K, 16 * _DIGITS) > 0 else -1  # pragma: no cover - a nonzero number below 1e-320
 
@@ -124,13 +149,25 @@ def real_part_x(N: list, D: list, K) -> tuple[list, list]:
     return E, Q
 
 
-def eval_num(f: list, x: sp.Expr, K, digits: int = _DIGITS) -> sp.Float:
-    """Numerical value of ``f`` at an exact SymPy number ``x``."""
-    xv = sp.N(x, digits + 10)
-    acc = sp.Float(0, digits + 10)
-    for c in f:
-        acc = acc * xv + sp.N(sym(c, K), digits + 10)
-    return acc
+def eval_num(f: list, x: sp.Expr, K, digits: int = _DIGITS):
+    """Numerical value (mpmath) of ``f`` (over ``K``) at an exact real SymPy number ``x``."""
+    with mpmath.workdps(digits + 10):
+        xv = mpmath.mpf(str(sp.N(x, digits + 10)))
+        acc = mpmath.mpf(0)
+        for c in f:
+            acc = acc * xv + num(c, K, digits)
+        return acc
+
+
+def numeric_positive_roots(f: list, K, digits: int = 30) -> list:
+    """Positive real roots of ``f`` (mpmath, for locating a minimum before any exact work)."""
+    coeffs = [num(c, K, digits) for c in f]
+    if len(coeffs) < 2:
+        return []
+    with mpmath.workdps(digits):
+        roots = mpmath.polyroots(coeffs, maxsteps=400, extraprec=400)
+    scale = mpmath.mpf(10) ** (-digits // 2)
+    return [mpmath.re(r) for r in roots if abs(mpmath.im(r)) < scale * (1 + abs(r)) and mpmath.re(r) > 0]
 
 
 def real_roots_qq(f: list) -> list[sp.Expr]:
@@ -162,13 +199,23 @@ def to_field(f: list, K_old, K_new) -> list:
 
 
 def roots_in_field(f: list, K, what: str, positive_only: bool = True) -> list:
-    """Roots of ``f`` lying in ``K`` (exact); ``Nested`` when a needed root lies in an extension of ``K``."""
+    """Roots of ``f`` lying in ``K``, exact.  The norm of ``f`` (a polynomial over QQ) is factored over QQ; each of
+    its factors meets ``f`` in a gcd over ``K`` whose linear factors are the roots in ``K`` (no factoring over
+    ``K`` of ``f`` itself)."""
+    from sympy.polys.euclidtools import dup_gcd
+    from sympy.polys.sqfreetools import dmp_norm
+
     roots = []
-    for factor, _ in dup_factor_list(f, K)[1]:
-        if dup_degree(factor) == 1:
-            r = K.quo(K.neg(factor[1]), factor[0])
-            if not positive_only or sign(r, K) > 0:
-                roots.append(r)
+    for phi, _ in dup_factor_list(dmp_norm(f, 0, K), QQ)[1]:
+        g = dup_gcd(f, [K.convert_from(c, QQ) for c in phi], K)
+        if dup_degree(g) < 1:
+            continue
+        parts = [(g, 1)] if dup_degree(g) == 1 else dup_factor_list(g, K)[1]
+        for factor, _ in parts:
+            if dup_degree(factor) == 1:
+                r = K.quo(K.neg(factor[1]), factor[0])
+                if not positive_only or sign(r, K) > 0:
+                    roots.append(r)
     return roots
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import mpmath
 import sympy as sp
 from sympy import QQ
 from sympy.polys.constructor import construct_domain
@@ -74,13 +75,13 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
     E, Q = ex.real_part_x(N, D, K)
     if not E:
         return K.zero, "0", K, N, D
-    cands: list[tuple[sp.Float, int, Any]] = []  # (value, field degree, where)
+    cands: list[tuple[Any, int, Any]] = []  # (value, field degree, where)
     q0 = ex.dup_eval(Q, K.zero, K)
     if q0:
         cands.append((ex.num(K.quo(ex.dup_eval(E, K.zero, K), q0), K), 0, "0"))
     dE, dQ = ex.dup_degree(E), ex.dup_degree(Q)
     if dE < dQ:
-        cands.append((sp.Float(0), 0, "oo"))
+        cands.append((mpmath.mpf(0), 0, "oo"))
     elif dE == dQ:
         cands.append((ex.num(K.quo(E[0], Q[0]), K), 0, "oo"))
     crit = ex.dup_sub(ex.dup_mul(ex.dup_diff(E, 1, K), Q, K), ex.dup_mul(E, ex.dup_diff(Q, 1, K), K), K)
@@ -91,13 +92,11 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
                     val = ex.eval_num(E, r, K) / ex.eval_num(Q, r, K)
                     cands.append((val, 0 if r.is_Rational else 1, r))
         else:
-            for r in ex.roots_in_field(crit, K, "critical point"):
-                cands.append((ex.num(K.quo(ex.dup_eval(E, r, K), ex.dup_eval(Q, r, K)), K), 0, ("K", r)))
-            _check_no_lower_irrational(E, Q, crit, K, min(c[0] for c in cands) if cands else None)
+            _interior_in_field(E, Q, crit, K, cands)
     if not cands:  # pragma: no cover - Q(0) = 0 only with a pole at 0, removed before
         raise ModelError("no candidate for the minimum of Re Z(iω)")
     best = min(c[0] for c in cands)
-    tol = sp.Float(10) ** (-ex._DIGITS + 8) * (1 + abs(best))
+    tol = mpmath.mpf(10) ** (-ex._DIGITS + 8) * (1 + abs(best))
     _value, _, where = min((c for c in cands if c[0] - best <= tol), key=lambda c: c[1])
     if where in ("0", "oo"):
         if where == "0":
@@ -116,25 +115,27 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
     return R, x0, K, N, D
 
 
-def _check_no_lower_irrational(E, Q, crit, K, best_exact) -> None:
-    """Over an algebraic field only critical points inside the field are exact: a lower minimum elsewhere is the
-    limitation of one extension."""
-    import mpmath
+def _interior_in_field(E: list, Q: list, crit: list, K, cands: list) -> None:
+    """Over an algebraic field only critical points inside the field are exact; a lower interior minimum elsewhere
+    is the limitation of one extension.  Numbers first: the field is factored only when the interior wins."""
+    interior = [(ex.eval_num(E, x, K) / ex.eval_num(Q, x, K), x) for x in _as_sympy(ex.numeric_positive_roots(crit, K))]
+    if not interior:
+        return
+    best_val, best_x = min(interior, key=lambda c: c[0])
+    tol = mpmath.mpf(10) ** -20 * (1 + abs(best_val))
+    if cands and min(c[0] for c in cands) <= best_val + tol:
+        return
+    for r in ex.roots_in_field(crit, K, "critical point"):
+        cands.append((ex.num(K.quo(ex.dup_eval(E, r, K), ex.dup_eval(Q, r, K)), K), 0, ("K", r)))
+    if not cands or min(c[0] for c in cands) > best_val + tol:
+        raise ex.Nested(
+            f"Re Z(iω) has its minimum at ω² ≈ {sp.N(best_x, 12)}: "
+            + ex.NESTED.format(what="the critical-point polynomial of a remainder")
+        )
 
-    coeffs = [complex(ex.num(c, K, 30)) for c in crit]
-    with mpmath.workdps(30):
-        roots = mpmath.polyroots(coeffs, maxsteps=200, extraprec=200)
-    Ef = [complex(ex.num(c, K, 30)) for c in E]
-    Qf = [complex(ex.num(c, K, 30)) for c in Q]
-    for r in roots:
-        if abs(mpmath.im(r)) < 1e-20 and mpmath.re(r) > 0:
-            x = mpmath.re(r)
-            val = mpmath.polyval(Ef, x).real / mpmath.polyval(Qf, x).real
-            if best_exact is None or val < float(best_exact) - 1e-12 * (1 + abs(val)):
-                raise ex.Nested(
-                    "Re Z(iω) has its minimum at ω² ≈ "
-                    f"{mpmath.nstr(x, 12)}: " + ex.NESTED.format(what="the critical-point polynomial of a remainder")
-                )
+
+def _as_sympy(values: list) -> list:
+    return [sp.Float(str(v), 40) for v in values]
 
 
 def join(parts: list[OnePort], rest: OnePort | None, cls: type) -> OnePort:
