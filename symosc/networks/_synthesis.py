@@ -25,7 +25,11 @@ _MAX_DEPTH = 200
 
 def to_exact(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
     """Coprime coefficient lists of ``Z`` over the smallest exact domain holding its coefficients."""
-    N, D = rational_function(Z, p)
+    return exact_polys(*rational_function(Z, p))
+
+
+def exact_polys(N: sp.Poly, D: sp.Poly) -> tuple[list, list, Any]:
+    """Coefficient lists of coprime ``N``, ``D`` over the smallest exact domain holding their coefficients."""
     coeffs = [sp.nsimplify(c, rational=True) if c.has(sp.Float) else c for c in N.all_coeffs() + D.all_coeffs()]
     try:
         K, elems = construct_domain(coeffs, extension=True)
@@ -35,7 +39,7 @@ def to_exact(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
         K, elems = QQ, [QQ.convert_from(c, K) for c in elems]
     if not (K.is_QQ or K.is_AlgebraicField):
         raise ParameterError(f"Z must have rational or algebraic coefficients for exact synthesis, got domain {K}")
-    n = N.degree() + 1
+    n = len(N.all_coeffs())
     N_, D_ = ex.normalize(elems[:n], elems[n:], K)
     return N_, D_, K
 
