@@ -30,9 +30,12 @@ from sympy.polys.polyerrors import ExactQuotientFailed
 from ..errors import ModelError
 
 _DIGITS = 40
+#: largest degree over QQ of the number field holding one network's element values
+MAX_FIELD_DEGREE = 8
 NESTED = (
-    "the exact element values would need a second algebraic extension (a root of a polynomial whose coefficients "
-    "are themselves algebraic numbers: {what}); exact synthesis supports one algebraic number field per network"
+    "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
+    "of a polynomial whose coefficients are themselves algebraic numbers: {what}); exact synthesis keeps every "
+    "element of a network in one number field of degree <= {limit}"
 )
 
 
@@ -198,15 +201,44 @@ def to_field(f: list, K_old, K_new) -> list:
     return [K_new.convert_from(c, K_old) for c in f]
 
 
+def norm(f: list, K) -> list:
+    """Norm of ``f`` over ``K`` down to QQ: ``Res_z(m(z), f(z, x))`` with ``m`` the minimal polynomial of ``K``'s
+    generator (python-flint's resultant when available, SymPy's otherwise)."""
+    try:
+        import flint
+    except ImportError:  # pragma: no cover - python-flint is installed with SymPy's fast ground types
+        from sympy.polys.sqfreetools import dmp_norm
+
+        return dmp_norm(f, 0, K)
+    ctx = flint.fmpq_mpoly_ctx.get(("z", "x"), "lex")
+    z, x = ctx.gens()
+
+    def in_z(coeffs: list):
+        acc = ctx.from_dict({})
+        for c in coeffs:
+            acc = acc * z + flint.fmpq(int(c.numerator), int(c.denominator))
+        return acc
+
+    m = in_z(K.mod.to_list())
+    F = ctx.from_dict({})
+    for c in f:
+        F = F * x + in_z(c.to_list())
+    res = m.resultant(F, "z").to_dict()
+    degree = max(e[1] for e in res)
+    out = [QQ.zero] * (degree + 1)
+    for (_, ex_), c in res.items():
+        out[degree - ex_] = QQ(int(c.p), int(c.q))
+    return dup_strip(out)
+
+
 def roots_in_field(f: list, K, what: str, positive_only: bool = True) -> list:
     """Roots of ``f`` lying in ``K``, exact.  The norm of ``f`` (a polynomial over QQ) is factored over QQ; each of
     its factors meets ``f`` in a gcd over ``K`` whose linear factors are the roots in ``K`` (no factoring over
     ``K`` of ``f`` itself)."""
     from sympy.polys.euclidtools import dup_gcd
-    from sympy.polys.sqfreetools import dmp_norm
 
     roots = []
-    for phi, _ in dup_factor_list(dmp_norm(f, 0, K), QQ)[1]:
+    for phi, _ in dup_factor_list(norm(f, K), QQ)[1]:
         g = dup_gcd(f, [K.convert_from(c, QQ) for c in phi], K)
         if dup_degree(g) < 1:
             continue
@@ -219,6 +251,43 @@ def roots_in_field(f: list, K, what: str, positive_only: bool = True) -> list:
     return roots
 
 
+def field_degree(K) -> int:
+    return 1 if K.is_QQ else len(K.mod.to_list()) - 1
+
+
+def extend_with_root(f: list, K, x_num, what: str):
+    """``(r, K2)``: the real root ``r`` of ``f`` (over ``K``) nearest ``x_num``, exact in ``K2 = K(r)``.
+
+    The norm of ``f`` is factored over QQ and the factor vanishing at ``r`` gives ``r`` as a radical or CRootOf;
+    ``K2`` has a primitive element of both generators (``K2 = K`` in effect when ``r`` already lies in ``K``).
+    ``Nested`` when the degree of ``K2`` would exceed :data:`MAX_FIELD_DEGREE`."""
+    from sympy.polys.euclidtools import dup_gcd
+
+    best = None
+    for phi, _ in dup_factor_list(norm(f, K), QQ)[1]:
+        for r in real_roots_qq(phi):
+            dist = abs(mpmath.mpf(str(sp.N(r, _DIGITS))) - x_num)
+            if best is None or dist < best[0]:
+                best = (dist, r, phi)
+    if best is None:  # pragma: no cover - the norm vanishes at every root of f
+        raise ModelError(f"no real root found for {what}")
+    _, r, phi = best
+    if r.is_Rational:
+        return K.convert(QQ.from_sympy(r)), K
+    deg_k, deg_r = field_degree(K), dup_degree(phi)
+    if deg_k * deg_r > MAX_FIELD_DEGREE:
+        if deg_k % deg_r == 0:  # r may lie in K: its factor over K is then linear
+            g = dup_gcd(f, [K.convert_from(c, QQ) for c in phi], K)
+            for factor, _ in [(g, 1)] if dup_degree(g) == 1 else dup_factor_list(g, K)[1]:
+                if dup_degree(factor) == 1:
+                    root = K.quo(K.neg(factor[1]), factor[0])
+                    if abs(num(root, K) - x_num) < mpmath.mpf(10) ** -10 * (1 + abs(x_num)):
+                        return root, K
+        raise Nested(NESTED.format(degree=f"up to {deg_k * deg_r}", limit=MAX_FIELD_DEGREE, what=what))
+    K2 = QQ.algebraic_field(*K.orig_ext, r)
+    return K2.from_sympy(r), K2
+
+
 def exquo(f: list, g: list, K, what: str) -> list:
     try:
         return dup_exquo(f, g, K)
@@ -227,6 +296,7 @@ def exquo(f: list, g: list, K, what: str) -> list:
 
 
 __all__ = [
+    "MAX_FIELD_DEGREE",
     "NESTED",
     "Nested",
     "dup_degree",
@@ -240,7 +310,9 @@ __all__ = [
     "dup_sub",
     "even_value",
     "exquo",
+    "extend_with_root",
     "extension",
+    "field_degree",
     "in_x",
     "mul_p",
     "normalize",

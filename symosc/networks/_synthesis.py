@@ -108,8 +108,12 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
         else:
             R = K.zero if dE < dQ else K.quo(E[0], Q[0])
         return R, where, K, N, D
-    if isinstance(where, tuple):
+    if isinstance(where, tuple) and where[0] == "K":
         x0 = where[1]
+    elif isinstance(where, tuple):  # a root in an extension of K
+        x0, K2 = where[1], where[2]
+        N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
+        E, Q, K = ex.to_field(E, K, K2), ex.to_field(Q, K, K2), K2
     else:
         K2 = ex.extension(where)
         N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
@@ -129,13 +133,8 @@ def _interior_in_field(E: list, Q: list, crit: list, K, cands: list) -> None:
     tol = mpmath.mpf(10) ** -20 * (1 + abs(best_val))
     if cands and min(c[0] for c in cands) <= best_val + tol:
         return
-    for r in ex.roots_in_field(crit, K, "critical point"):
-        cands.append((ex.num(K.quo(ex.dup_eval(E, r, K), ex.dup_eval(Q, r, K)), K), 0, ("K", r)))
-    if not cands or min(c[0] for c in cands) > best_val + tol:
-        raise ex.Nested(
-            f"Re Z(iω) has its minimum at ω² ≈ {sp.N(best_x, 12)}: "
-            + ex.NESTED.format(what="the critical-point polynomial of a remainder")
-        )
+    r, K2 = ex.extend_with_root(crit, K, mpmath.mpf(str(best_x)), "the critical points of Re Z(iω)")
+    cands.append((best_val, 1, ("X", r, K2) if K2 != K else ("K", r)))
 
 
 def _as_sympy(values: list) -> list:
@@ -147,37 +146,43 @@ def join(parts: list[OnePort], rest: OnePort | None, cls: type) -> OnePort:
     return items[0] if len(items) == 1 else cls(tuple(items))
 
 
-def _tank(c: sp.Expr, w2: sp.Expr, mode: str) -> OnePort:
-    """``c p/(p² + w2)``: a parallel tank in an impedance, a series L-C branch in an admittance."""
-    if mode == "Z":  # C = 1/c, L = c/w2
-        return Parallel((Capacitor(_clean(1 / c)), Inductor(_clean(c / w2))))
-    return Series((Inductor(_clean(1 / c)), Capacitor(_clean(c / w2))))
+def _tank(v1: sp.Expr, v2: sp.Expr, mode: str) -> OnePort:
+    """``c p/(p² + w2)`` with ``v1 = 1/c``, ``v2 = c/w2``: a parallel tank (C = v1, L = v2) in an impedance, a
+    series branch (L = v1, C = v2) in an admittance."""
+    if mode == "Z":
+        return Parallel((Capacitor(v1), Inductor(v2)))
+    return Series((Inductor(v1), Capacitor(v2)))
 
 
 def _clean(value: sp.Expr) -> sp.Expr:
-    if value.is_Rational:
-        return value
-    if value.has(sp.CRootOf):
+    if value.is_Rational or value.has(sp.CRootOf):
         return value
     return sp.radsimp(sp.expand(value))
 
 
-def _family_values(a: list, h: list, K) -> list[tuple[sp.Expr, sp.Expr]]:
-    """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)``: pairs ``(c_i, w2_i)`` over the roots ``y_i = -w2_i`` of ``h``."""
+def _at_root(poly: list, root: sp.Expr) -> sp.Expr:
+    """A polynomial over QQ (coefficient list) at an exact algebraic root, as a polynomial in that root."""
     y = sp.Dummy("y")
+    value = sp.Poly([QQ.to_sympy(c) for c in poly], y).as_expr().subs(y, root) if poly else sp.Integer(0)
+    return _clean(value)
+
+
+def _family_values(a: list, h: list, K) -> list[tuple[sp.Expr, sp.Expr]]:
+    """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)`` over the roots ``y_i = -w2_i`` of ``h``: pairs ``(1/c_i, c_i/w2_i)``,
+    each computed in the field of its root (as polynomials in the root reduced modulo ``h``)."""
     if ex.dup_degree(h) == 1:
         yi = K.quo(K.neg(h[1]), h[0])
         c = K.quo(ex.dup_eval(a, yi, K), ex.dup_eval(ex.dup_diff(h, 1, K), yi, K))
-        return [(ex.sym(c, K), ex.sym(K.neg(yi), K))]
+        return [(ex.positive(K.quo(K.one, c), K, "tank element"), ex.positive(K.quo(c, K.neg(yi)), K, "tank element"))]
     if not K.is_QQ:
-        raise ex.Nested("imaginary-axis poles at the roots of " + ex.NESTED.format(what="a polynomial in p²"))
-    # c(y) = a(y)/h'(y) reduced modulo h: an exact polynomial in the root
-    r = ex.dup_rem(ex.dup_mul(a, ex.dup_invert(ex.dup_diff(h, 1, K), h, K), K), h, K)
-    rpoly = sp.Poly([QQ.to_sympy(c) for c in r], y) if r else sp.Poly(0, y)
-    out = []
-    for yi in ex.real_roots_qq(h):
-        c = rpoly.as_expr().subs(y, yi)
-        out.append((sp.expand(c) if not yi.has(sp.CRootOf) else c, -yi))
+        raise ex.Nested(
+            "imaginary-axis poles at the roots of an irreducible polynomial in p² over an algebraic field: each "
+            "tank would need its own conjugate field, and exact synthesis keeps a network in one number field"
+        )
+    r = ex.dup_rem(ex.dup_mul(a, ex.dup_invert(ex.dup_diff(h, 1, K), h, K), K), h, K)  # c(y) = a(y)/h'(y) mod h
+    inv_r = ex.dup_invert(r, h, K)  # 1/c(y)
+    r_over_w2 = ex.dup_rem(ex.dup_mul(r, ex.dup_invert([K.neg(K.one), K.zero], h, K), K), h, K)  # c(y)/(-y)
+    out = [(_at_root(inv_r, yi), _at_root(r_over_w2, yi)) for yi in ex.real_roots_qq(h)]
     if len(out) != ex.dup_degree(h):  # pragma: no cover - a PR function has its axis poles on the axis
         raise ModelError("poles expected on the imaginary axis are not all there")
     return out
@@ -214,8 +219,8 @@ def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], li
             N = ex.exquo(ex.dup_sub(N, ex.dup_mul(A, D2, K), K), Hp, K, "axis-pole remainder")
             D = D2
             a = ex.even_in_y(ex.exquo(A, [K.one, K.zero], K, "odd part"), K) if A else []
-            for c, w2 in _family_values(a, h, K):
-                parts.append(_tank(c, w2, mode))
+            for v1, v2 in _family_values(a, h, K):
+                parts.append(_tank(v1, v2, mode))
     N, D = ex.normalize(N, D, K)
     return parts, N, D
 
@@ -275,7 +280,7 @@ class Engine:
         if mode == "Z":
             return join([Resistor(Rv)], self.run(rest_n, D, K, depth + 1), Series)
         inner = None if not rest_n else self.run(D, rest_n, K, depth + 1)
-        return join([Resistor(_clean(1 / Rv))], inner, Parallel)
+        return join([Resistor(ex.sym(K.quo(K.one, R), K))], inner, Parallel)
 
     def _brune(self, N: list, D: list, x0, K, depth: int) -> OnePort:
         pD = ex.mul_p(D, K)
@@ -321,13 +326,15 @@ class Engine:
                 raise ModelError("Bott–Duffin: a remainder vanished identically")
             return net
 
-        kv, Fkv = ex.positive(k, K, "k"), ex.positive(Fk, K, "Z(k)")
+        ex.positive(k, K, "k")
+        C1 = ex.positive(K.quo(K.one, K.mul(k, Fk)), K, "Bott–Duffin element")
+        L1 = ex.positive(K.quo(Fk, k), K, "Bott–Duffin element")
         if inductive:
-            first = Parallel((Capacitor(_clean(1 / (kv * Fkv))), sub(ex.dup_mul_ground(Rn, Fk, K), Rd)))
-            second = Parallel((Inductor(_clean(Fkv / kv)), sub(ex.dup_mul_ground(Rd, Fk, K), Rn)))
+            first = Parallel((Capacitor(C1), sub(ex.dup_mul_ground(Rn, Fk, K), Rd)))
+            second = Parallel((Inductor(L1), sub(ex.dup_mul_ground(Rd, Fk, K), Rn)))
             return Series((first, second))
-        first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(_clean(1 / (kv * Fkv)))))
-        second = Series((Capacitor(_clean(Fkv / kv)), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
+        first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(C1)))
+        second = Series((Capacitor(L1), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
         return Parallel((first, second))
 
 
@@ -342,10 +349,10 @@ def _richards_k(P1: list, K):
         r = roots[0]
         K2 = ex.extension(r)
         return K2.from_sympy(r), K2
-    roots = ex.roots_in_field(P1, K, "k")
-    if not roots:
-        raise ex.Nested("Richards' k solves " + ex.NESTED.format(what="Z(k) = L k with an irrational L"))
-    return roots[0], K
+    positive = ex.numeric_positive_roots(P1, K)
+    if not positive:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0
+        raise ModelError("Bott–Duffin: Z(k) = L k has no positive root")
+    return ex.extend_with_root(P1, K, positive[0], "Richards' k with Z(k) = L k")
 
 
 def synthesize(Z: Any, p: sp.Symbol, cycle: str) -> OnePort | None:
