@@ -1,7 +1,8 @@
 """Exact arithmetic of the synthesis procedures (private): rational functions over a number field.
 
 Numerators and denominators are dense coefficient lists (highest power first) over a SymPy domain ``K``: the
-rationals ``QQ`` or an algebraic field ``QQ<a>`` (``a`` a square root or a ``CRootOf``).  All arithmetic,
+rationals ``QQ`` or an algebraic field ``QQ<a, b, ...>`` (square roots and ``CRootOf`` numbers, with a primitive
+element).  All arithmetic,
 cancellation and division is exact polynomial arithmetic in ``K`` (no ``simplify``); numbers are evaluated only to
 decide signs and to pick the smallest of several exactly known candidates.
 """

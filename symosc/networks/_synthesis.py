@@ -1,8 +1,9 @@
 """Shared driver of the one-port synthesis procedures (private): removals, minimum resistance, cycles.
 
 Every step is exact arithmetic over a number field ``K`` (see ``_exact``): ``QQ`` for rational targets, extended
-once by an algebraic number when the minimum of ``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is
-irrational.  Element values are then exact algebraic numbers (radicals or polynomials in a ``CRootOf``).
+by an algebraic number (primitive element, degree <= ``_exact.MAX_FIELD_DEGREE``) when the minimum of
+``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is irrational.  Element values are then exact algebraic
+numbers (radicals or polynomials in ``CRootOf`` numbers).
 """
 
 from __future__ import annotations

@@ -52,8 +52,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (naming the failed condition).
     ModelError
-        When exact element values would need a second algebraic extension (e.g. an irrational ``ω0`` and then an
-        irrational Richards' ``k``): element values are exact numbers of one algebraic field.
+        When the exact element values would need a number field of degree above 8 over the rationals (e.g. an
+        irrational ``ω0`` of degree 4 followed by a Richards' ``k`` of degree 4 over it).
 
     Examples
     --------

@@ -49,9 +49,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
-        When exact element values would need a second algebraic extension: element values are exact numbers of
-        one algebraic field (rationals, a square root, or polynomials in one ``CRootOf``); a remainder whose own
-        minimum of ``Re Z(iω)`` lies at an irrational point of that field's extension is refused with this error.
+        When the exact element values would need a number field of degree above 8 over the rationals (every
+        element of one network is an exact number of one field: rationals, square roots, polynomials in
+        ``CRootOf`` numbers).
 
     Examples
     --------
