@@ -232,26 +232,6 @@ def norm(f: list, K) -> list:
     return dup_strip(out)
 
 
-def roots_in_field(f: list, K, what: str, positive_only: bool = True) -> list:
-    """Roots of ``f`` lying in ``K``, exact.  The norm of ``f`` (a polynomial over QQ) is factored over QQ; each of
-    its factors meets ``f`` in a gcd over ``K`` whose linear factors are the roots in ``K`` (no factoring over
-    ``K`` of ``f`` itself)."""
-    from sympy.polys.euclidtools import dup_gcd
-
-    roots = []
-    for phi, _ in dup_factor_list(norm(f, K), QQ)[1]:
-        g = dup_gcd(f, [K.convert_from(c, QQ) for c in phi], K)
-        if dup_degree(g) < 1:
-            continue
-        parts = [(g, 1)] if dup_degree(g) == 1 else dup_factor_list(g, K)[1]
-        for factor, _ in parts:
-            if dup_degree(factor) == 1:
-                r = K.quo(K.neg(factor[1]), factor[0])
-                if not positive_only or sign(r, K) > 0:
-                    roots.append(r)
-    return roots
-
-
 def field_degree(K) -> int:
     return 1 if K.is_QQ else len(K.mod.to_list()) - 1
 
@@ -321,7 +301,6 @@ __all__ = [
     "real_part_x",
     "real_roots_qq",
     "reflect",
-    "roots_in_field",
     "sign",
     "sym",
     "to_field",
