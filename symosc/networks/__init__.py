@@ -47,6 +47,7 @@ from .image import (
     terminated_response,
     working_loss,
 )
+from .m_functions import m_function_synthesis, richards_function
 from .oneports import (
     BruneSection,
     Capacitor,
@@ -141,6 +142,7 @@ __all__ = [
     "lattice_from_transmission",
     "lattice_phase_network",
     "m_derived_section",
+    "m_function_synthesis",
     "matching_l_pad",
     "minimum_real_part",
     "parallel",
@@ -148,6 +150,7 @@ __all__ = [
     "pi_section",
     "positive_real_report",
     "real_part_on_axis",
+    "richards_function",
     "series",
     "series_element",
     "series_parallel",

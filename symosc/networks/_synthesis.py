@@ -1,25 +1,56 @@
-"""Shared driver of the one-port synthesis procedures (private): removals, minimum resistance, cycles."""
+"""Shared driver of the one-port synthesis procedures (private): removals, minimum resistance, cycles.
+
+Every step is exact arithmetic over a number field ``K`` (see ``_exact``): ``QQ`` for rational targets, extended
+by an algebraic number (primitive element, degree <= ``_exact.MAX_FIELD_DEGREE``) when the minimum of
+``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is irrational.  Element values are then exact algebraic
+numbers (radicals or polynomials in ``CRootOf`` numbers).
+"""
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
+import mpmath
 import sympy as sp
+from sympy import QQ
+from sympy.polys.constructor import construct_domain
+from sympy.polys.euclidtools import dup_gcd
 
-from ..errors import ModelError
-from ._removal import even_at, remove_axis_poles
-from ._util import P, as_symbol
-from .oneports import BruneSection, OnePort, Parallel, Resistor, Series
-from .positive_real import real_part_on_axis
+from ..errors import ModelError, ParameterError
+from . import _exact as ex
+from ._util import P, as_symbol, rational_function
+from .oneports import BruneSection, Capacitor, Inductor, OnePort, Parallel, Resistor, Series
 
-_DIGITS = 50
+_MAX_DEPTH = 200
+
+
+def to_exact(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
+    """Coprime coefficient lists of ``Z`` over the smallest exact domain holding its coefficients."""
+    return exact_polys(*rational_function(Z, p))
+
+
+def exact_polys(N: sp.Poly, D: sp.Poly) -> tuple[list, list, Any]:
+    """Coefficient lists of coprime ``N``, ``D`` over the smallest exact domain holding their coefficients."""
+    coeffs = [sp.nsimplify(c, rational=True) if c.has(sp.Float) else c for c in N.all_coeffs() + D.all_coeffs()]
+    try:
+        K, elems = construct_domain(coeffs, extension=True)
+    except (sp.PolynomialError, NotImplementedError, ValueError) as exc:  # pragma: no cover - defensive
+        raise ParameterError(f"Z must have exact numeric coefficients, got {coeffs}") from exc
+    if K.is_ZZ:
+        K, elems = QQ, [QQ.convert_from(c, K) for c in elems]
+    if not (K.is_QQ or K.is_AlgebraicField):
+        raise ParameterError(f"Z must have rational or algebraic coefficients for exact synthesis, got domain {K}")
+    n = len(N.all_coeffs())
+    N_, D_ = ex.normalize(elems[:n], elems[n:], K)
+    return N_, D_, K
 
 
 def minimum_real_part(Z: Any, p: sp.Symbol = P) -> tuple[sp.Expr, sp.Expr]:
     """``(R, ω0²)``: the minimum of ``Re Z(iω)`` over ``ω >= 0`` and where it is reached (``oo`` at infinity).
 
-    Exact: the critical points are the real roots of ``E' Q - E Q'`` (``Re Z(iω) = E(x)/Q(x)``, ``x = ω²``).
+    Exact: the critical points are the real roots of ``E' Q - E Q'`` (``Re Z(iω) = E(x)/Q(x)``, ``x = ω²``);
+    irrational ones are radicals or ``CRootOf`` numbers, and ``R`` lies in the field they generate
+    (Bulgakov (1954), §9.23, Theorem III).
 
     Examples
     --------
@@ -28,35 +59,87 @@ def minimum_real_part(Z: Any, p: sp.Symbol = P) -> tuple[sp.Expr, sp.Expr]:
     >>> p = sp.Symbol("p")
     >>> minimum_real_part((p**2 + p + 1) / (p**2 + p + 4), p)
     (0, 2)
+    >>> minimum_real_part((p**2 + 2*p + 4) / (p**2 + p + 1), p)
+    (7/3 - 2*sqrt(7)/3, sqrt(7)/2 + 3/2)
 
     See Also
     --------
     brune_synthesis, real_part_on_axis
     """
     p = as_symbol(p)
-    E, Q = real_part_on_axis(Z, p)
-    x = E.gens[0]
-    Q = sp.Poly(Q.as_expr(), x)
-    f = E.as_expr() / Q.as_expr()
-    candidates: list[tuple[sp.Expr, sp.Expr]] = [(sp.Integer(0), sp.cancel(f.subs(x, 0)))]
-    crit = sp.Poly(sp.expand(E.diff(x).as_expr() * Q.as_expr() - E.as_expr() * Q.diff(x).as_expr()), x)
-    if not crit.is_zero:
-        for r in crit.real_roots():
-            if r > 0:
-                candidates.append((r, sp.cancel(f.subs(x, r)) if r.is_Rational else f.subs(x, r)))
-    degE, degQ = E.degree(), Q.degree()
-    if E.is_zero:
+    N, D, K = to_exact(Z, p)
+    if not N:
         return sp.Integer(0), sp.Integer(0)
-    limit = sp.Integer(0) if degE < degQ else (E.LC() / Q.LC() if degE == degQ else sp.oo)
-    candidates.append((sp.oo, limit))
-    best = min(candidates, key=lambda c: sp.N(c[1], _DIGITS) if c[1] != sp.oo else sp.oo)
-    return _simplify_algebraic(best[1]), best[0]
+    R, x0, K2, _, _ = _minimum(N, D, K, allow_pole=True)
+    where = sp.oo if x0 == "oo" else (sp.Integer(0) if x0 == "0" else ex.sym(x0, K2))
+    return ex.sym(R, K2), where
 
 
-def _simplify_algebraic(value: sp.Expr) -> sp.Expr:
-    if value in (sp.oo,) or value.is_Rational:
-        return value
-    return sp.radsimp(sp.simplify(value))
+def _minimum(N: list, D: list, K, allow_pole: bool = False):
+    """Minimum of ``E/Q`` on ``x >= 0``: ``(R, x0, K', N, D)`` with ``x0`` in ``K'`` or ``"0"``/``"oo"``."""
+    E, Q = ex.real_part_x(N, D, K)
+    if not E:
+        return K.zero, "0", K, N, D
+    cands: list[tuple[Any, int, Any]] = []  # (value, field degree, where)
+    q0 = ex.dup_eval(Q, K.zero, K)
+    if q0:
+        cands.append((ex.num(K.quo(ex.dup_eval(E, K.zero, K), q0), K), 0, "0"))
+    dE, dQ = ex.dup_degree(E), ex.dup_degree(Q)
+    if dE < dQ:
+        cands.append((mpmath.mpf(0), 0, "oo"))
+    elif dE == dQ:
+        cands.append((ex.num(K.quo(E[0], Q[0]), K), 0, "oo"))
+    crit = ex.dup_sub(ex.dup_mul(ex.dup_diff(E, 1, K), Q, K), ex.dup_mul(E, ex.dup_diff(Q, 1, K), K), K)
+    if crit:
+        if K.is_QQ:
+            for r in ex.real_roots_qq(crit):
+                if sp.N(r, ex._DIGITS) > 0:
+                    val = ex.eval_num(E, r, K) / ex.eval_num(Q, r, K)
+                    cands.append((val, 0 if r.is_Rational else 1, r))
+        else:
+            _interior_in_field(E, Q, crit, K, cands)
+    if not cands:  # pragma: no cover - Q(0) = 0 only with a pole at 0, removed before
+        raise ModelError("no candidate for the minimum of Re Z(iω)")
+    best = min(c[0] for c in cands)
+    tol = mpmath.mpf(10) ** (-ex._DIGITS + 8) * (1 + abs(best))
+    _value, _, where = min((c for c in cands if c[0] - best <= tol), key=lambda c: c[1])
+    if where in ("0", "oo"):
+        if where == "0":
+            R = K.quo(ex.dup_eval(E, K.zero, K), q0)
+        else:
+            R = K.zero if dE < dQ else K.quo(E[0], Q[0])
+        return R, where, K, N, D
+    if isinstance(where, tuple) and where[0] == "K":
+        x0 = where[1]
+    elif isinstance(where, tuple):  # a root in an extension of K
+        x0, K2 = where[1], where[2]
+        N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
+        E, Q, K = ex.to_field(E, K, K2), ex.to_field(Q, K, K2), K2
+    else:
+        K2 = ex.extension(where)
+        N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
+        E, Q, K = ex.to_field(E, K, K2), ex.to_field(Q, K, K2), K2
+        x0 = K.from_sympy(where)
+    R = K.quo(ex.dup_eval(E, x0, K), ex.dup_eval(Q, x0, K))
+    return R, x0, K, N, D
+
+
+def _interior_in_field(E: list, Q: list, crit: list, K, cands: list) -> None:
+    """Over an algebraic field only critical points inside the field are exact; a lower interior minimum elsewhere
+    is the limitation of one extension.  Numbers first: the field is factored only when the interior wins."""
+    interior = [(ex.eval_num(E, x, K) / ex.eval_num(Q, x, K), x) for x in _as_sympy(ex.numeric_positive_roots(crit, K))]
+    if not interior:
+        return
+    best_val, best_x = min(interior, key=lambda c: c[0])
+    tol = mpmath.mpf(10) ** -20 * (1 + abs(best_val))
+    if cands and min(c[0] for c in cands) <= best_val + tol:
+        return
+    r, K2 = ex.extend_with_root(crit, K, mpmath.mpf(str(best_x)), "the critical points of Re Z(iω)")
+    cands.append((best_val, 1, ("X", r, K2) if K2 != K else ("K", r)))
+
+
+def _as_sympy(values: list) -> list:
+    return [sp.Float(str(v), 40) for v in values]
 
 
 def join(parts: list[OnePort], rest: OnePort | None, cls: type) -> OnePort:
@@ -64,73 +147,216 @@ def join(parts: list[OnePort], rest: OnePort | None, cls: type) -> OnePort:
     return items[0] if len(items) == 1 else cls(tuple(items))
 
 
-def synthesize(Z: sp.Expr, p: sp.Symbol, depth: int, cycle: Callable | None = None) -> OnePort | None:
-    """Network with impedance ``Z`` (None for a short circuit)."""
-    if depth > 200:  # pragma: no cover - each step lowers the degree
-        raise ModelError("Brune synthesis did not terminate")
-    Z = cancel_algebraic(Z)
-    if Z == 0:
-        return None
-    if not Z.has(p):
-        value = sp.N(Z, _DIGITS)
-        if abs(sp.im(value)) > sp.Float(10) ** (-_DIGITS + 10):
-            raise ModelError(f"Brune synthesis reached a complex resistance {value}")
-        if not Z.is_real:
-            Z = sp.simplify(sp.re(sp.expand_complex(Z)))
-        if not sp.re(value) > 0:
-            raise ModelError(f"Brune synthesis reached a non-positive resistance {Z}")
-        return Resistor(Z)
-    parts, rest = remove_axis_poles(Z, p, "Z")
-    if parts:
-        return join(parts, synthesize(rest, p, depth + 1, cycle), Series)
-    Y = sp.cancel(1 / Z)
-    parts, rest = remove_axis_poles(Y, p, "Y")
-    if parts:
-        inner = None if rest == 0 else synthesize(sp.cancel(1 / rest), p, depth + 1, cycle)
-        return join(parts, inner, Parallel)
-    R, x0 = minimum_real_part(Z, p)
-    if R != 0:
-        return Series((Resistor(R), *as_list(synthesize(cancel_algebraic(Z - R), p, depth + 1, cycle))))
-    if x0 in (0, sp.oo):  # pragma: no cover - excluded by the removals above
-        raise ModelError("Re Z vanishes at 0 or infinity after the pole removals")
-    return (cycle or brune_cycle)(Z, p, x0, depth)
+def _tank(v1: sp.Expr, v2: sp.Expr, mode: str) -> OnePort:
+    """``c p/(p² + w2)`` with ``v1 = 1/c``, ``v2 = c/w2``: a parallel tank (C = v1, L = v2) in an impedance, a
+    series branch (L = v1, C = v2) in an admittance."""
+    if mode == "Z":
+        return Parallel((Capacitor(v1), Inductor(v2)))
+    return Series((Inductor(v1), Capacitor(v2)))
 
 
-def as_list(net: OnePort | None) -> list[OnePort]:
-    return [] if net is None else [net]
+def _clean(value: sp.Expr) -> sp.Expr:
+    if value.is_Rational or value.has(sp.CRootOf):
+        return value
+    return sp.radsimp(sp.expand(value))
 
 
-def cancel_algebraic(expr: sp.Expr) -> sp.Expr:
-    """Cancel a rational function whose coefficients may be algebraic numbers (square roots)."""
-    expr = sp.together(expr)
-    if expr.has(sp.Pow) and any(a.is_Pow and not a.exp.is_Integer and not a.has(sp.Symbol) for a in expr.atoms(sp.Pow)):
-        return sp.cancel(expr, extension=True)
-    return sp.cancel(expr)
+def _at_root(poly: list, root: sp.Expr) -> sp.Expr:
+    """A polynomial over QQ (coefficient list) at an exact algebraic root, as a polynomial in that root."""
+    y = sp.Dummy("y")
+    value = sp.Poly([QQ.to_sympy(c) for c in poly], y).as_expr().subs(y, root) if poly else sp.Integer(0)
+    return _clean(value)
 
 
-def simple(value: sp.Expr) -> sp.Expr:
-    return value if value.is_Rational else sp.radsimp(sp.simplify(value))
+def _family_values(a: list, h: list, K) -> list[tuple[sp.Expr, sp.Expr]]:
+    """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)`` over the roots ``y_i = -w2_i`` of ``h``: pairs ``(1/c_i, c_i/w2_i)``,
+    each computed in the field of its root (as polynomials in the root reduced modulo ``h``)."""
+    if ex.dup_degree(h) == 1:
+        yi = K.quo(K.neg(h[1]), h[0])
+        c = K.quo(ex.dup_eval(a, yi, K), ex.dup_eval(ex.dup_diff(h, 1, K), yi, K))
+        return [(ex.positive(K.quo(K.one, c), K, "tank element"), ex.positive(K.quo(c, K.neg(yi)), K, "tank element"))]
+    if not K.is_QQ:
+        raise ex.Nested(
+            "imaginary-axis poles at the roots of an irreducible polynomial in p² over an algebraic field: each "
+            "tank would need its own conjugate field, and exact synthesis keeps a network in one number field"
+        )
+    r = ex.dup_rem(ex.dup_mul(a, ex.dup_invert(ex.dup_diff(h, 1, K), h, K), K), h, K)  # c(y) = a(y)/h'(y) mod h
+    inv_r = ex.dup_invert(r, h, K)  # 1/c(y)
+    r_over_w2 = ex.dup_rem(ex.dup_mul(r, ex.dup_invert([K.neg(K.one), K.zero], h, K), K), h, K)  # c(y)/(-y)
+    out = [(_at_root(inv_r, yi), _at_root(r_over_w2, yi)) for yi in ex.real_roots_qq(h)]
+    if len(out) != ex.dup_degree(h):  # pragma: no cover - a PR function has its axis poles on the axis
+        raise ModelError("poles expected on the imaginary axis are not all there")
+    return out
 
 
-def brune_cycle(Z: sp.Expr, p: sp.Symbol, x0: sp.Expr, depth: int) -> OnePort:
-    L1 = even_at(Z / p, p, x0)  # Z(iω0) = iω0 L1
-    if L1 == 0:  # pragma: no cover - a zero on the axis was removed above
-        raise ModelError("Brune cycle: Z(iω0) = 0 should have been removed as an axis zero")
-    Z1 = cancel_algebraic(Z - L1 * p)
-    Y1 = cancel_algebraic(1 / Z1)
-    k = even_at(Y1 * (p**2 + x0) / p, p, x0) / 2  # Y1 ~ 2k p/(p² + ω0²)
-    L2 = simple(1 / (2 * k))
-    C = simple(2 * k / x0)
-    Y2 = cancel_algebraic(Y1 - 2 * k * p / (p**2 + x0))
-    Z2 = cancel_algebraic(1 / Y2)
-    N2, D2 = sp.fraction(Z2)
-    N2, D2 = sp.Poly(N2, p), sp.Poly(D2, p)
-    if N2.degree() != D2.degree() + 1:
-        raise ModelError("Brune cycle: the remainder has no pole at infinity (inexact minimum?)")
-    L3 = simple(N2.LC() / D2.LC())
-    Z3 = cancel_algebraic(Z2 - L3 * p)
-    Lp, Ls, M = simple(L1 + L2), simple(L2 + L3), L2
-    load = synthesize(Z3, p, depth + 1)
-    if load is None:
-        raise ModelError("Brune cycle ended in a short circuit: unexpected for a minimum function")
-    return BruneSection(Lp, Ls, M, C, load)
+def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], list, list]:
+    """Remove the imaginary-axis poles of ``F = N/D`` (Bulgakov (1954), §9.23, Theorem IV), exactly over ``K``."""
+    parts: list[OnePort] = []
+    dn, dd = ex.dup_degree(N), ex.dup_degree(D)
+    if dn > dd + 1:
+        raise ModelError("multiple pole at infinity: not a positive-real function")
+    if dn == dd + 1:
+        k = K.quo(N[0], D[0])
+        N = ex.dup_sub(N, ex.dup_mul_ground(ex.mul_p(D, K), k, K), K)
+        kv = ex.positive(k, K, "residue at infinity")
+        parts.append(Inductor(kv) if mode == "Z" else Capacitor(kv))
+    if D and not D[-1]:
+        D1 = D[:-1]
+        if not D1[-1]:
+            raise ModelError("multiple pole at p = 0: not a positive-real function")
+        k = K.quo(ex.dup_eval(N, K.zero, K), D1[-1])
+        N = ex.exquo(ex.dup_sub(N, ex.dup_mul_ground(D1, k, K), K), [K.one, K.zero], K, "pole at zero")
+        D = D1
+        kv = ex.positive(k, K, "residue at p = 0")
+        parts.append(Capacitor(1 / kv) if mode == "Z" else Inductor(1 / kv))
+    G = dup_gcd(D, ex.reflect(D, K), K)
+    if ex.dup_degree(G) > 0:
+        H = ex.even_in_y(G, K)
+        factors = ex.dup_factor_list(H, K)[1] if K.is_QQ else [(H, 1)]
+        for h, _ in factors:
+            Hp = _in_p2(h, K)
+            D2 = ex.exquo(D, Hp, K, "denominator")
+            A = ex.dup_rem(ex.dup_mul(N, ex.dup_invert(D2, Hp, K), K), Hp, K)
+            N = ex.exquo(ex.dup_sub(N, ex.dup_mul(A, D2, K), K), Hp, K, "axis-pole remainder")
+            D = D2
+            a = ex.even_in_y(ex.exquo(A, [K.one, K.zero], K, "odd part"), K) if A else []
+            for v1, v2 in _family_values(a, h, K):
+                parts.append(_tank(v1, v2, mode))
+    N, D = ex.normalize(N, D, K)
+    return parts, N, D
+
+
+def _in_p2(h: list, K) -> list:
+    """``h(p²)`` from ``h(y)``."""
+    out: list = []
+    for i, c in enumerate(h):
+        out.append(c)
+        if i < len(h) - 1:
+            out.append(K.zero)
+    return out
+
+
+class Engine:
+    """Brune (``cycle="brune"``) or Bott–Duffin (``cycle="bott_duffin"``) synthesis over a number field."""
+
+    def __init__(self, cycle: str) -> None:
+        self.cycle = cycle
+
+    def run(self, N: list, D: list, K, depth: int = 0) -> OnePort | None:
+        if depth > _MAX_DEPTH:  # pragma: no cover - each step lowers the degree
+            raise ModelError("synthesis did not terminate")
+        N, D = ex.normalize(N, D, K)
+        if not N:
+            return None
+        if ex.dup_degree(N) == 0 and ex.dup_degree(D) == 0:
+            return Resistor(ex.positive(K.quo(N[0], D[0]), K, "resistance"))
+        parts, N, D = remove_axis_poles(N, D, K, "Z")
+        if parts:
+            return join(parts, self.run(N, D, K, depth + 1), Series)
+        parts, Yn, Yd = remove_axis_poles(D, N, K, "Y")
+        if parts:
+            inner = None if not Yn else self.run(Yd, Yn, K, depth + 1)
+            return join(parts, inner, Parallel)
+        # subtract the minimum resistance of Z, or the minimum conductance of Y = 1/Z where that one is exact in
+        # the current field (both keep the function positive real, Theorem III); prefer no field extension
+        zmin = _minimum(N, D, K)
+        if zmin[0] and (zmin[2] == K or zmin[1] in ("0", "oo")):
+            return self._remove_constant(*zmin, "Z", depth)
+        ymin = _minimum(D, N, K)
+        if ymin[0] and (ymin[2] == K or ymin[1] in ("0", "oo")):
+            return self._remove_constant(*ymin, "Y", depth)
+        if zmin[0]:
+            return self._remove_constant(*zmin, "Z", depth)
+        _R, x0, K, N, D = zmin
+        if x0 in ("0", "oo"):  # pragma: no cover - excluded by the removals above
+            raise ModelError("Re Z vanishes at 0 or infinity after the pole removals")
+        if self.cycle == "brune":
+            return self._brune(N, D, x0, K, depth)
+        return self._bott_duffin(N, D, x0, K, depth)
+
+    def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
+        """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
+        Rv = ex.positive(R, K, "minimum resistance" if mode == "Z" else "minimum conductance")
+        rest_n = ex.dup_sub(N, ex.dup_mul_ground(D, R, K), K)
+        if mode == "Z":
+            return join([Resistor(Rv)], self.run(rest_n, D, K, depth + 1), Series)
+        inner = None if not rest_n else self.run(D, rest_n, K, depth + 1)
+        return join([Resistor(ex.sym(K.quo(K.one, R), K))], inner, Parallel)
+
+    def _brune(self, N: list, D: list, x0, K, depth: int) -> OnePort:
+        pD = ex.mul_p(D, K)
+        L1 = ex.even_value(N, pD, x0, K)  # Z(iω0) = iω0 L1
+        N1 = ex.dup_sub(N, ex.dup_mul_ground(pD, L1, K), K)
+        quad = [K.one, K.zero, x0]
+        N1q = ex.exquo(N1, quad, K, "Z - L1 p by p² + ω0²")
+        twok = ex.even_value(D, ex.mul_p(N1q, K), x0, K)  # Y1 ~ 2k p/(p² + ω0²)
+        Y2n = ex.exquo(ex.dup_sub(D, ex.dup_mul_ground(ex.mul_p(N1q, K), twok, K), K), quad, K, "Y1 remainder")
+        Z2n, Z2d = ex.normalize(N1q, Y2n, K)
+        if ex.dup_degree(Z2n) != ex.dup_degree(Z2d) + 1:
+            raise ModelError("Brune cycle: the remainder has no pole at infinity")  # pragma: no cover
+        L3 = K.quo(Z2n[0], Z2d[0])
+        Z3n = ex.dup_sub(Z2n, ex.dup_mul_ground(ex.mul_p(Z2d, K), L3, K), K)
+        L2 = K.quo(K.one, twok)
+        Lp, Ls, C = K.add(L1, L2), K.add(L2, L3), K.quo(twok, x0)
+        load = self.run(Z3n, Z2d, K, depth + 1)
+        if load is None:
+            raise ModelError("Brune cycle ended in a short circuit: unexpected for a minimum function")
+        vals = [ex.positive(v, K, name) for v, name in ((Lp, "Lp"), (Ls, "Ls"), (L2, "M"), (C, "C"))]
+        return BruneSection(*[_clean(v) for v in vals], load)
+
+    def _bott_duffin(self, N: list, D: list, x0, K, depth: int) -> OnePort:
+        L = ex.even_value(N, ex.mul_p(D, K), x0, K)  # Z(iω0) = iω0 L
+        inductive = ex.sign(L, K) > 0
+        if not inductive:  # dual step on the admittance: Y(iω0) = iω0 C, C > 0
+            N, D = D, N
+            L = ex.even_value(N, ex.mul_p(D, K), x0, K)
+        # Richards' k > 0 with F(k) = L k: roots of N - L p D other than ±iω0
+        P1 = ex.dup_sub(N, ex.dup_mul_ground(ex.mul_p(D, K), L, K), K)
+        P1 = ex.exquo(P1, [K.one, K.zero, x0], K, "F - L p by p² + ω0²")
+        k, K2 = _richards_k(P1, K)
+        if K2 != K:
+            N, D, L, K = ex.to_field(N, K, K2), ex.to_field(D, K, K2), K2.convert_from(L, K), K2
+        Fk = K.mul(L, k)
+        # R = (k F - p F(k)) / (k F(k) - p F),  F = N/D
+        Rn = ex.dup_sub(ex.dup_mul_ground(N, k, K), ex.dup_mul_ground(ex.mul_p(D, K), Fk, K), K)
+        Rd = ex.dup_sub(ex.dup_mul_ground(D, K.mul(k, Fk), K), ex.mul_p(N, K), K)
+
+        def sub(n: list, d: list) -> OnePort:
+            net = self.run(n, d, K, depth + 1)
+            if net is None:  # pragma: no cover
+                raise ModelError("Bott–Duffin: a remainder vanished identically")
+            return net
+
+        ex.positive(k, K, "k")
+        C1 = ex.positive(K.quo(K.one, K.mul(k, Fk)), K, "Bott–Duffin element")
+        L1 = ex.positive(K.quo(Fk, k), K, "Bott–Duffin element")
+        if inductive:
+            first = Parallel((Capacitor(C1), sub(ex.dup_mul_ground(Rn, Fk, K), Rd)))
+            second = Parallel((Inductor(L1), sub(ex.dup_mul_ground(Rd, Fk, K), Rn)))
+            return Series((first, second))
+        first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(C1)))
+        second = Series((Capacitor(L1), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
+        return Parallel((first, second))
+
+
+def _richards_k(P1: list, K):
+    """A positive root ``k`` of ``P1`` (Bulgakov (1954), eq. (9.409)), exact; the field may be extended once."""
+    if K.is_QQ:
+        roots = sorted(
+            (r for r in ex.real_roots_qq(P1) if sp.N(r, ex._DIGITS) > 0), key=lambda r: (not r.is_Rational, 0)
+        )
+        if not roots:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0
+            raise ModelError("Bott–Duffin: Z(k) = L k has no positive root")
+        r = roots[0]
+        K2 = ex.extension(r)
+        return K2.from_sympy(r), K2
+    positive = ex.numeric_positive_roots(P1, K)
+    if not positive:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0
+        raise ModelError("Bott–Duffin: Z(k) = L k has no positive root")
+    return ex.extend_with_root(P1, K, positive[0], "Richards' k with Z(k) = L k")
+
+
+def synthesize(Z: Any, p: sp.Symbol, cycle: str) -> OnePort | None:
+    """Network with impedance ``Z`` (None for a short circuit), by the Brune or the Bott–Duffin cycle."""
+    N, D, K = to_exact(Z, p)
+    return Engine(cycle).run(N, D, K)

@@ -24,11 +24,10 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import ModelError, ParameterError
-from ._removal import even_at
-from ._synthesis import cancel_algebraic, synthesize
+from ..errors import ParameterError
+from ._synthesis import synthesize
 from ._util import P, as_symbol, rational_function
-from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
+from .oneports import OnePort
 from .positive_real import require_positive_real
 
 __all__ = ["bott_duffin_synthesis"]
@@ -53,7 +52,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (naming the failed condition).
     ModelError
-        When the equation ``Z(k) = L k`` has no exactly representable positive root.
+        When the exact element values would need a number field of degree above 8 over the rationals (e.g. an
+        irrational ``ω0`` of degree 4 followed by a Richards' ``k`` of degree 4 over it).
 
     Examples
     --------
@@ -73,43 +73,4 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
         raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, 0, _bott_duffin_cycle)
-
-
-def _richards_k(F: sp.Expr, p: sp.Symbol, L: sp.Expr) -> sp.Expr:
-    num, den = sp.fraction(cancel_algebraic(F))
-    k = sp.Dummy("k", positive=True)
-    poly = sp.Poly(sp.expand(num.subs(p, k) - L * k * den.subs(p, k)), k)
-    roots = [r for r in poly.real_roots() if r > 0] if poly.domain.is_QQ or poly.domain.is_ZZ else []
-    if not roots:
-        sols = [s for s in sp.solve(poly.as_expr(), k) if s.is_positive]
-        if not sols:
-            raise ModelError("Bott–Duffin: Z(k) = L k has no positive root in closed form")
-        roots = sols
-    return roots[0]
-
-
-def _bott_duffin_cycle(Z: sp.Expr, p: sp.Symbol, x0: sp.Expr, depth: int) -> OnePort:
-    L = even_at(Z / p, p, x0)  # Z(i w0) = i w0 L
-    if sp.N(L, 30) > 0:
-        F = Z
-    else:  # dual step on the admittance: Y(i w0) = i w0 C with C > 0
-        F = cancel_algebraic(1 / Z)
-        L = even_at(F / p, p, x0)
-    k = _richards_k(F, p, L)
-    Fk = L * k
-    R = cancel_algebraic((k * F - p * Fk) / (k * Fk - p * F))
-
-    def sub(expr: sp.Expr) -> OnePort:
-        net = synthesize(cancel_algebraic(expr), p, depth + 1, _bott_duffin_cycle)
-        if net is None:
-            raise ModelError("Bott–Duffin: a remainder vanished identically")  # pragma: no cover
-        return net
-
-    if F is Z:
-        first = Parallel((Capacitor(1 / (k * Fk)), sub(Fk * R)))
-        second = Parallel((Inductor(Fk / k), sub(Fk / R)))
-        return Series((first, second))
-    first = Series((sub(1 / (Fk * R)), Inductor(1 / (k * Fk))))
-    second = Series((Capacitor(Fk / k), sub(R / Fk)))
-    return Parallel((first, second))
+    return synthesize(Z, p, "bott_duffin")

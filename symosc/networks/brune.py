@@ -49,8 +49,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
-        When the minimum of ``Re Z(iω)`` lies at an irrational point whose exact arithmetic SymPy cannot close
-        (the network would need algebraic element values of high degree).
+        When the exact element values would need a number field of degree above 8 over the rationals (every
+        element of one network is an exact number of one field: rationals, square roots, polynomials in
+        ``CRootOf`` numbers).
 
     Examples
     --------
@@ -70,4 +71,4 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
         raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, 0)
+    return synthesize(Z, p, "brune")

@@ -1,5 +1,8 @@
 """Foster and Cauer canonical forms of reactance (LC) one-ports (Bulgakov (1954), §9.21, §9.23).
 
+Element values are exact: rational, radicals, or polynomials in a ``CRootOf`` when the resonances are roots of
+an irreducible polynomial of degree three or more in ``p²`` (one tank per root).
+
 A reactance function is positive real with ``Re Z(iω) = 0``: Foster's theorem gives
 ``Z = L p + 1/(C0 p) + Σ 2k p/(p² + ω²)`` (first form: a series chain of tanks) and the same for ``Y = 1/Z``
 (second form: parallel series-LC branches); Cauer's continued fractions at infinity (first form) and at zero
@@ -22,7 +25,8 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
-from ._removal import pole_at_infinity, pole_at_zero, remainder_is_zero, remove_axis_poles
+from . import _exact as ex
+from ._synthesis import exact_polys, remove_axis_poles
 from ._util import P, as_symbol, rational_function
 from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
 from .positive_real import real_part_on_axis, require_positive_real
@@ -50,18 +54,20 @@ def is_reactance_function(Z: Any, p: sp.Symbol = P) -> bool:
     return is_positive_real(Z, p) and real_part_on_axis(Z, p)[0].is_zero
 
 
-def _reactance(Z: Any, p: sp.Symbol) -> sp.Expr:
+def _reactance(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
+    """Exact coefficient lists ``(N, D, K)`` of a reactance function, or ParameterError saying why not."""
     p = as_symbol(p)
     N, D = rational_function(Z, p)
     require_positive_real(N.as_expr() / D.as_expr(), p)
-    if not real_part_on_axis(N.as_expr() / D.as_expr(), p)[0].is_zero:
+    Ne, De, K = exact_polys(N, D)
+    if ex.real_part_x(Ne, De, K)[0]:
         raise ParameterError(
             "Z is not a reactance function (Re Z(iω) is not identically zero): Foster and Cauer forms realise "
             "lossless LC one-ports only; use brune_synthesis or bott_duffin_synthesis for RLC targets"
         )
     if N.is_zero:
         raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
-    return N.as_expr() / D.as_expr()
+    return Ne, De, K
 
 
 def _join(parts: list[OnePort], cls: type) -> OnePort:
@@ -83,10 +89,10 @@ def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     foster_second, cauer_first
     """
-    Z = _reactance(Z, p)
-    parts, rest = remove_axis_poles(Z, p, "Z")
-    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover - exhausted by its poles
-        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    N, D, K = _reactance(Z, p)
+    parts, rest, _ = remove_axis_poles(N, D, K, "Z")
+    if rest:  # pragma: no cover - a reactance function is exhausted by its poles
+        raise ParameterError("Foster expansion left a remainder: Z is not a reactance function")
     return _join(parts, Series)
 
 
@@ -105,28 +111,41 @@ def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     foster_first, cauer_second
     """
-    Z = _reactance(Z, p)
-    parts, rest = remove_axis_poles(sp.cancel(1 / Z), p, "Y")
-    if not remainder_is_zero(rest, as_symbol(p)):  # pragma: no cover
-        raise ParameterError(f"Foster expansion left a remainder {rest}")
+    N, D, K = _reactance(Z, p)
+    parts, rest, _ = remove_axis_poles(D, N, K, "Y")
+    if rest:  # pragma: no cover
+        raise ParameterError("Foster expansion left a remainder: Z is not a reactance function")
     return _join(parts, Parallel)
 
 
-def _cauer(F: sp.Expr, p: sp.Symbol, mode: str, at_infinity: bool) -> OnePort:
-    """Continued fraction: remove the pole of ``F`` at infinity (or zero), invert, repeat."""
-    k = pole_at_infinity(F, p) if at_infinity else pole_at_zero(F, p)
-    if k == 0:
-        raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
-    if at_infinity:
-        element = Inductor(k) if mode == "Z" else Capacitor(k)
-        rem = sp.cancel(F - k * p)
-    else:
-        element = Capacitor(1 / k) if mode == "Z" else Inductor(1 / k)
-        rem = sp.cancel(F - k / p)
-    if rem == 0:
-        return element
-    rest = _cauer(sp.cancel(1 / rem), p, "Y" if mode == "Z" else "Z", at_infinity)
-    return Series((element, rest)) if mode == "Z" else Parallel((element, rest))
+def _cauer(N: list, D: list, K, mode: str, at_infinity: bool) -> OnePort:
+    """Continued fraction of ``F = N/D``: remove the pole at infinity (or zero), invert, repeat (exact over K)."""
+    elements: list[tuple[OnePort, str]] = []
+    while True:
+        if at_infinity:
+            if ex.dup_degree(N) != ex.dup_degree(D) + 1:
+                raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
+            k = K.quo(N[0], D[0])
+            kv = ex.positive(k, K, "Cauer coefficient")
+            element = Inductor(kv) if mode == "Z" else Capacitor(kv)
+            N = ex.dup_sub(N, ex.dup_mul_ground(ex.mul_p(D, K), k, K), K)
+        else:
+            if not D or D[-1] or not D[:-1] or not D[-2]:
+                raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
+            D = D[:-1]
+            k = K.quo(ex.dup_eval(N, K.zero, K), D[-1])
+            kv = ex.positive(k, K, "Cauer coefficient")
+            element = Capacitor(1 / kv) if mode == "Z" else Inductor(1 / kv)
+            N = ex.exquo(ex.dup_sub(N, ex.dup_mul_ground(D, k, K), K), [K.one, K.zero], K, "Cauer remainder")
+        elements.append((element, mode))
+        if not N:
+            break
+        N, D = ex.normalize(D, N, K)
+        mode = "Y" if mode == "Z" else "Z"
+    net = elements[-1][0]
+    for element, m in reversed(elements[:-1]):
+        net = Series((element, net)) if m == "Z" else Parallel((element, net))
+    return net
 
 
 def cauer_first(Z: Any, p: sp.Symbol = P) -> OnePort:
@@ -144,10 +163,10 @@ def cauer_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     cauer_second, foster_first
     """
-    Z = _reactance(Z, p)
-    if pole_at_infinity(Z, p) != 0:
-        return _cauer(Z, p, "Z", True)
-    return _cauer(sp.cancel(1 / Z), p, "Y", True)
+    N, D, K = _reactance(Z, p)
+    if ex.dup_degree(N) == ex.dup_degree(D) + 1:
+        return _cauer(N, D, K, "Z", True)
+    return _cauer(*ex.normalize(D, N, K), K, "Y", True)
 
 
 def cauer_second(Z: Any, p: sp.Symbol = P) -> OnePort:
@@ -165,7 +184,7 @@ def cauer_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     cauer_first, foster_second
     """
-    Z = _reactance(Z, p)
-    if pole_at_zero(Z, p) != 0:
-        return _cauer(Z, p, "Z", False)
-    return _cauer(sp.cancel(1 / Z), p, "Y", False)
+    N, D, K = _reactance(Z, p)
+    if D and not D[-1]:
+        return _cauer(N, D, K, "Z", False)
+    return _cauer(*ex.normalize(D, N, K), K, "Y", False)

@@ -1,0 +1,169 @@
+"""Richards' function and Min Nai-da's M-function realisation (Bulgakov (1954), §9.24 and §9.27, eq. (9.408)).
+
+Richards' theorem: for a positive-real ``Z`` and ``k > 0`` the function
+``R(p) = (k Z(p) - p Z(k)) / (k Z(k) - p Z(p))`` is positive real and its rank (sum of the degrees of numerator and
+denominator) does not exceed that of ``Z``.  It is the step on which the Bott–Duffin synthesis is built.
+
+An M-function is a rational ``Z`` with ``Re Z > 0`` for ``Re p > -rho``; ``Z*(p*) = Z(p* - rho)`` is then positive
+real (eqs. (9.274)–(9.276)).  Realising ``Z*`` without mutual inductance (Bott–Duffin) and substituting
+``p* = p + rho`` turns every inductor ``L`` into ``L`` in series with ``rho L`` and every capacitor ``C`` into ``C``
+in parallel with ``1/(rho C)``: a network without ideal (lossless) elements whose impedance is ``Z`` (the theorem
+of §9.24).
+
+>>> import sympy as sp
+>>> from symosc.networks import m_function_synthesis
+>>> p = sp.Symbol("p")
+>>> net = m_function_synthesis((p + 3) / (p + 2), 1, p)
+>>> net
+R(1) + (C(1) | R(1) | R(1))
+>>> sp.cancel(net.impedance(p) - (p + 3) / (p + 2))
+0
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..errors import ParameterError
+from ._util import P, as_expr, as_symbol, rational_function
+from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
+from .positive_real import positive_real_report, require_positive_real
+
+__all__ = ["m_function_synthesis", "richards_function"]
+
+
+def richards_function(Z: Any, k: Any, p: sp.Symbol = P) -> sp.Expr:
+    """Richards' function ``R(p) = (k Z(p) - p Z(k)) / (k Z(k) - p Z(p))``, Bulgakov (1954), §9.27, eq. (9.408).
+
+    For a positive-real ``Z`` and ``k > 0`` it is positive real of rank not above the rank of ``Z``; when
+    ``Z(k)/k = L`` and ``Z(iω0) = iω0 L`` it vanishes at ``p = iω0`` (eq. (9.410)), which lets the Bott–Duffin
+    procedure lower the rank without transformers.
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Positive-real rational function of ``p`` with numeric coefficients.
+    k : number or SymPy expression
+        A positive real number (exact values keep the result exact).
+    p : sympy.Symbol
+
+    Returns
+    -------
+    sympy.Expr
+        ``R(p)`` as a cancelled rational function.
+
+    Raises
+    ------
+    ParameterError
+        When ``Z`` is not positive real, ``k`` is not a positive number, or ``k Z(k) - p Z(p)`` vanishes
+        identically (``Z = c/p``, a pure capacitor).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import richards_function
+    >>> p = sp.Symbol("p")
+    >>> Z = (p**2 + p + 1) / (p**2 + p + 4)
+    >>> richards_function(Z, 1, p)
+    (p**2 + 2)/(2*p**2 + 3*p + 4)
+
+    See Also
+    --------
+    bott_duffin_synthesis, is_positive_real
+    """
+    p = as_symbol(p)
+    N, D = rational_function(Z, p)
+    k = as_expr(k, "k")
+    if k.free_symbols or not k.is_extended_real or not k.is_positive:
+        raise ParameterError(f"k must be a positive real number, got {k}")
+    Z = N.as_expr() / D.as_expr()
+    require_positive_real(Z, p)
+    Zk = N.as_expr().subs(p, k) / D.as_expr().subs(p, k)
+    den = sp.cancel(k * Zk - p * Z)
+    if den == 0:
+        raise ParameterError(
+            "Richards' function is undefined for Z = c/p, a pure capacitor (k Z(k) - p Z(p) vanishes identically)"
+        )
+    return sp.cancel((k * Z - p * Zk) / den)
+
+
+def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
+    """Replace ``p*`` by ``p + rho``: L -> L + R(rho L), C -> C | R(1/(rho C)), R unchanged."""
+    if isinstance(net, Resistor):
+        return net
+    if isinstance(net, Inductor):
+        return Series((net, Resistor(rho * net.L)))
+    if isinstance(net, Capacitor):
+        return Parallel((net, Resistor(1 / (rho * net.C))))
+    if isinstance(net, Series):
+        return Series(tuple(_shift_elements(part, rho) for part in net.parts))
+    if isinstance(net, Parallel):
+        return Parallel(tuple(_shift_elements(part, rho) for part in net.parts))
+    kind = "a Brune section" if isinstance(net, BruneSection) else type(net).__name__
+    if isinstance(net, Impedance | BruneSection):  # pragma: no cover - Bott–Duffin emits R, L, C only
+        raise ParameterError(f"cannot shift {kind}: the M-function realisation needs R, L, C only")
+    raise ParameterError(f"unknown network element {kind}")  # pragma: no cover
+
+
+def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
+    """Realise an M-function (Min Nai-da) without mutual inductance and without lossless L or C.
+
+    Bulgakov (1954), §9.24, eqs. (9.274)–(9.276): ``Z*(p*) = Z(p* - rho)`` is positive real; its Bott–Duffin
+    realisation with ``p* = p + rho`` gives every inductor ``L`` a series resistance ``rho L`` and every capacitor
+    ``C`` a parallel resistance ``1/(rho C)``, so ``R_L/L = 1/(R_C C) = rho``.
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with numeric coefficients.
+    rho : number or SymPy expression
+        Positive abscissa: ``Re Z(p) >= 0`` must hold for ``Re p >= -rho`` (test it with :func:`is_m_function`).
+    p : sympy.Symbol
+
+    Returns
+    -------
+    OnePort
+        A series/parallel tree of positive R, L, C whose impedance equals ``Z`` exactly.
+
+    Raises
+    ------
+    ParameterError
+        When ``rho`` is not a positive number or ``Z(p - rho)`` is not positive real (the message names the
+        failed condition, so ``rho`` is too large or ``Z`` is no M-function).
+    ModelError
+        When the Bott–Duffin realisation of ``Z(p - rho)`` needs algebraic numbers beyond its exact arithmetic.
+
+    Examples
+    --------
+    Bulgakov (1954), §9.24, Ex. 1: ``(a0 p + a1)/(b0 p + b1)`` is an M-function for ``rho < min(b1/b0, a1/a0)``.
+
+    >>> import sympy as sp
+    >>> from symosc.networks import m_function_synthesis
+    >>> p = sp.Symbol("p")
+    >>> m_function_synthesis((2*p + 3) / (p + 4), 1, p)
+    R(1/3) + ((L(5/9) + R(5/9)) | R(5/3))
+
+    See Also
+    --------
+    is_m_function, bott_duffin_synthesis, richards_function
+    """
+    from .bott_duffin import bott_duffin_synthesis
+
+    p = as_symbol(p)
+    N, D = rational_function(Z, p)
+    if N.is_zero:
+        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    rho = as_expr(rho, "rho")
+    if rho.free_symbols or not rho.is_extended_real or not rho.is_positive:
+        raise ParameterError(f"rho must be a positive real number, got {rho}")
+    rho = sp.nsimplify(rho) if isinstance(rho, sp.Float) else rho
+    shifted = sp.cancel(N.as_expr().subs(p, p - rho) / D.as_expr().subs(p, p - rho))
+    verdict = positive_real_report(shifted, p)
+    if not verdict:
+        raise ParameterError(
+            f"Z(p - rho) is not positive real for rho = {rho} ({verdict.failed}: {verdict.detail}); Z is not an "
+            "M-function with this rho (Bulgakov (1954), §9.24): try a smaller rho, see is_m_function"
+        )
+    return _shift_elements(bott_duffin_synthesis(shifted, p), rho)

@@ -1,0 +1,154 @@
+"""Richards' function (Bulgakov (1954), §9.27, eq. (9.408)) and the M-function realisation (§9.24).
+
+References are independent of the code under test: positive realness is checked numerically on a grid of the
+closed right half-plane (and with NumPy's polynomial roots for the poles), M-functions are built from random RLC
+networks by the substitution ``p -> p + rho`` of eq. (9.276), and every realisation is compared with the target
+exactly (``cancel`` to zero).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from symosc.errors import ParameterError
+from symosc.networks import (
+    Capacitor,
+    Inductor,
+    Parallel,
+    Resistor,
+    Series,
+    m_function_synthesis,
+    richards_function,
+)
+
+p = sp.Symbol("p")
+pos = st.fractions(min_value=sp.Rational(1, 5), max_value=5, max_denominator=6).map(lambda f: sp.Rational(f))
+
+
+@st.composite
+def rlc(draw, size=3):
+    """Random series/parallel tree of ``size`` positive R, L, C elements."""
+    if size == 1:
+        kind = draw(st.sampled_from([Resistor, Inductor, Capacitor]))
+        return kind(draw(pos))
+    left = draw(st.integers(1, size - 1))
+    a, b = draw(rlc(left)), draw(rlc(size - left))
+    return a + b if draw(st.booleans()) else a | b
+
+
+def _rank(Z):
+    N, D = sp.fraction(sp.cancel(Z))
+    return sp.degree(N, p) + sp.degree(D, p)
+
+
+def _numerically_positive_real(Z, shift=0.0) -> bool:
+    """Poles in Re p < -shift (NumPy roots) and Re Z >= 0 on Re p = -shift + sigma, sigma in [0, 3] (grid)."""
+    _N, D = sp.fraction(sp.cancel(Z))
+    den = np.array([float(c) for c in sp.Poly(D, p).all_coeffs()])
+    if den.size > 1 and np.max(np.roots(den).real) > -shift + 1e-9:
+        return False
+    f = sp.lambdify(p, Z, "numpy")
+    w = np.concatenate([np.linspace(-40, 40, 4001), [1e4, -1e4]])
+    for sigma in (1e-9, 0.3, 1.0, 3.0):
+        vals = f(-shift + sigma + 1j * w)
+        if np.min(np.real(vals)) < -1e-9 * (1 + np.max(np.abs(vals))):
+            return False
+    return True
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(2, 4).flatmap(rlc), pos)
+def test_richards_function_is_positive_real_of_no_higher_rank(net, k):
+    """Richards' theorem (9.406)-(9.408): R is positive real and rank R <= rank Z, for random RLC impedances."""
+    Z = net.impedance(p)
+    if sp.cancel(k * Z.subs(p, k) - p * Z) == 0:  # Z = c/p: Richards' function undefined
+        return
+    R = richards_function(Z, k, p)
+    assert _rank(R) <= _rank(Z)
+    assert _numerically_positive_real(R)
+    # the defining identity, solved back for Z (9.411): Z = (k Z(k) R + p Z(k)) / (k + p R)
+    Zk = Z.subs(p, k)
+    assert sp.cancel((k * Zk * R + p * Zk) / (k + p * R) - Z) == 0
+
+
+def test_richards_function_vanishes_at_the_real_part_zero():
+    """(9.409)-(9.410): with Z(k)/k = L and Z(i w0) = i w0 L, R(i w0) = 0.  Z = (p²+p+1)/(p²+p+4), w0² = 2."""
+    Z = (p**2 + p + 1) / (p**2 + p + 4)
+    assert sp.simplify(Z.subs(p, sp.I * sp.sqrt(2)) - sp.I * sp.sqrt(2) / 2) == 0  # L = 1/2
+    k = 1  # Z(1)/1 = 3/6 = L
+    R = richards_function(Z, k, p)
+    assert sp.simplify(R.subs(p, sp.I * sp.sqrt(2))) == 0
+
+
+def test_richards_function_rejects_bad_input():
+    with pytest.raises(ParameterError, match="k must be a positive"):
+        richards_function((p + 1) / (p + 2), -1, p)
+    with pytest.raises(ParameterError, match="not positive real"):
+        richards_function((p - 1) / (p + 2), 1, p)
+    with pytest.raises(ParameterError, match="undefined for Z = c/p"):
+        richards_function(3 / p, 2, p)
+
+
+def _lossy_everywhere(net, rho) -> bool:
+    """Every inductor has a series resistor rho L, every capacitor a parallel resistor 1/(rho C)."""
+    if isinstance(net, Resistor):
+        return True
+    if isinstance(net, Inductor | Capacitor):
+        return False  # a bare L or C that is not wrapped with its loss resistor
+    parts = net.parts
+    wrapped = [q for q in parts if isinstance(q, Inductor | Capacitor)]
+    for q in wrapped:
+        if isinstance(q, Inductor) and not (isinstance(net, Series) and Resistor(rho * q.L) in parts):
+            return False
+        if isinstance(q, Capacitor) and not (isinstance(net, Parallel) and Resistor(1 / (rho * q.C)) in parts):
+            return False
+    return all(_lossy_everywhere(q, rho) for q in parts if not isinstance(q, Inductor | Capacitor))
+
+
+def _check_realisation(net, Z, rho):
+    assert sp.cancel(net.impedance(p) - Z) == 0
+    assert all(v > 0 for e in net.elements() for v in vars(e).values())
+    assert _lossy_everywhere(net, rho)
+
+
+def test_m_function_example_1_realised():
+    """§9.24, Ex. 1: Z = (2p + 3)/(p + 4) is an M-function for rho < min(4, 3/2)."""
+    Z = (2 * p + 3) / (p + 4)
+    for rho in (sp.Rational(1, 2), sp.Rational(7, 5)):
+        _check_realisation(m_function_synthesis(Z, rho, p), Z, rho)
+    assert _numerically_positive_real(Z, shift=1.4)
+    with pytest.raises(ParameterError, match="not an M-function with this rho"):
+        m_function_synthesis(Z, sp.Rational(8, 5), p)
+
+
+def test_m_function_example_2_realised():
+    """§9.24, Ex. 2: Z = (p² + 5p + 4)/(p + 2); rho < min(b2/b1 = 2, roots of rho² - 5 rho + 4: 1, 4) = 1."""
+    Z = (p**2 + 5 * p + 4) / (p + 2)
+    rho = sp.Rational(1, 2)
+    _check_realisation(m_function_synthesis(Z, rho, p), Z, rho)
+    assert _numerically_positive_real(Z, shift=0.99)
+    assert not _numerically_positive_real(Z, shift=1.2)
+    with pytest.raises(ParameterError, match="not an M-function"):
+        m_function_synthesis(Z, sp.Rational(6, 5), p)
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(2, 4).flatmap(rlc), pos)
+def test_random_m_functions_are_realised_exactly(net, rho):
+    """(9.276): Z(p) = Z*(p + rho) with Z* the impedance of a random RLC network is an M-function; its
+    realisation reproduces Z exactly with lossy inductors and capacitors only."""
+    Zstar = net.impedance(p)
+    Z = sp.cancel(Zstar.subs(p, p + rho))
+    assert _numerically_positive_real(Z, shift=float(rho) * 0.999)
+    _check_realisation(m_function_synthesis(Z, rho, p), Z, rho)
+
+
+def test_m_function_bad_rho():
+    with pytest.raises(ParameterError, match="rho must be a positive"):
+        m_function_synthesis((p + 1) / (p + 2), 0, p)
+    with pytest.raises(ParameterError, match="rho must be a positive"):
+        m_function_synthesis((p + 1) / (p + 2), sp.Symbol("r"), p)
