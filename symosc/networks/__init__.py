@@ -67,6 +67,16 @@ from .positive_real import (
     positive_real_report,
     real_part_on_axis,
 )
+from .correcting import (
+    CORRECTING_LINKS,
+    BridgedTLink,
+    CorrectingLink,
+    constant_resistance_bridged_t,
+    correcting_link,
+    link_transfer,
+)
+from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
+from .junctions import CascadeJunctions, cascade_junctions
 from .sections import (
     bridged_t_section,
     ideal_transformer,
@@ -160,6 +170,19 @@ __all__ = [
     "twin_t_notch",
     "twin_t_section",
     "working_loss",
+    "CORRECTING_LINKS",
+    "BridgedTLink",
+    "CorrectingLink",
+    "constant_resistance_bridged_t",
+    "correcting_link",
+    "link_transfer",
+    "EnergyFunctions",
+    "EnergyValues",
+    "ReactanceCheck",
+    "check_reactance_theorem",
+    "energy_functions",
+    "CascadeJunctions",
+    "cascade_junctions",
 ]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
