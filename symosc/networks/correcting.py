@@ -18,6 +18,7 @@ same ``W`` multiplies the transfers.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -34,6 +35,7 @@ from ._correcting import (
     positive,
     require_less,
 )
+from ._nodal import Netlist
 from ._synthesis import minimum_real_part
 from ._util import P, as_symbol, element_value, rational_function
 from .fourpoles import FourPole
@@ -147,9 +149,24 @@ def link_transfer(
     return 1 / (k * (T * p + 1))
 
 
+def _rational_cycle(Z: sp.Expr, p: sp.Symbol) -> bool:
+    """True when the minimum real parts of ``Z`` and ``1/Z`` lie at rational points with rational values.
+
+    Then a Bott–Duffin cycle keeps rational element values; otherwise its exact arithmetic in nested square roots
+    is very slow and Brune's cycle (coupled coils) is used instead.
+    """
+    for F in (Z, sp.cancel(1 / Z)):
+        value, x0 = minimum_real_part(F, p)
+        if not all(v == sp.oo or v.is_Rational for v in (value, x0)):
+            return False
+    return True
+
+
 def _synthesize(Z: sp.Expr, p: sp.Symbol, method: str) -> OnePort:
     if not Z.has(p):
         return Resistor(Z)
+    if method == "auto":
+        method = "bott-duffin" if _rational_cycle(Z, p) else "brune"
     if method == "brune":
         from .brune import brune_synthesis
 
@@ -207,10 +224,19 @@ class CorrectingLink:
     p: sp.Symbol = P
     max_gain: float = 1.0
 
-    @property
+    @functools.cached_property
     def four_pole(self) -> FourPole:
-        """The symmetric lattice as a :class:`FourPole` (chain matrix from its arms, eq. (8.360))."""
-        return lattice(self.Za.impedance(self.p), self.Zb.impedance(self.p), p=self.p)
+        """The symmetric lattice as a :class:`FourPole`, chain matrix from its arms by eqs. (8.360)–(8.364).
+
+        ``A11 = A22 = (Zb + Za)/(Zb - Za)``, ``A12 = 2 Za Zb/(Zb - Za)``, ``A21 = 2/(Zb - Za)``.
+        """
+        p = self.p
+        za, zb = self.Za.impedance(p), self.Zb.impedance(p)
+        d = zb - za
+        chain = [[sp.cancel((zb + za) / d), sp.cancel(2 * za * zb / d)], [sp.cancel(2 / d), sp.cancel((zb + za) / d)]]
+        net = lattice(sp.Symbol("Z_a"), sp.Symbol("Z_b")).netlist
+        branches = tuple((pairs, sp.ImmutableMatrix([[za if Zb[0, 0] == sp.Symbol("Z_a") else zb]])) for pairs, Zb in net.branches)
+        return FourPole(chain, p, Netlist(branches, net.terminals), name="constant-resistance lattice")
 
     def realized_transfer(self) -> sp.Expr:
         """``Ey/Ex`` of the lattice closed by ``W``, computed from its chain matrix: ``1/(A11 + A12/W)``."""
@@ -290,11 +316,11 @@ def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
     return N, D
 
 
-def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "bott-duffin") -> CorrectingLink:
+def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "auto") -> CorrectingLink:
     """Constant-resistance lattice realising the transfer ``X(p)`` (Bulgakov (1954), §9.34–9.39).
 
     ``Za = W (1 - X)/(1 + X)`` (9.513) and ``Zb = W²/Za`` are positive real when ``X`` is regular in the closed
-    right half-plane and ``|X(iω)| <= 1`` (9.518); both are realised as R, L, C networks: ``Za`` by Bott–Duffin
+    right half-plane and ``|X(iω)| <= 1`` (9.518); both are realised as networks: ``Za`` by Bott–Duffin
     (or Brune) synthesis, which for first-order links gives the forms of Tables 8–9 (a resistor with an R–L or
     R–C pair), and ``Zb`` as its inverse (dual) network.
 
@@ -305,8 +331,10 @@ def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "bott
     W : positive number
         The constant resistance between which the link works.
     p : sympy.Symbol
-    method : {"bott-duffin", "brune"}
-        One-port synthesis for ``Za`` when it is of second or higher degree ("brune" uses coupled coils).
+    method : {"auto", "bott-duffin", "brune"}
+        One-port synthesis of ``Za``: "bott-duffin" uses R, L, C only, "brune" perfectly coupled coils where the
+        real part of ``Za`` touches zero; "auto" takes Bott–Duffin when its element values stay rational and
+        Brune otherwise (the book's aim of avoiding mutual inductances cannot always be met exactly).
 
     Returns
     -------
@@ -339,8 +367,8 @@ def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "bott
     W = element_value(W, "W")
     if not W.is_number:
         raise ParameterError(f"W must be a positive number, got {W}")
-    if method not in ("bott-duffin", "brune"):
-        raise ParameterError(f"method must be 'bott-duffin' or 'brune', got {method!r}")
+    if method not in ("auto", "bott-duffin", "brune"):
+        raise ParameterError(f"method must be 'auto', 'bott-duffin' or 'brune', got {method!r}")
     N, D = _check_transfer(X, p)
     Xe = sp.cancel(N.as_expr() / D.as_expr())
     if Xe in (1, -1):
@@ -377,7 +405,7 @@ class BridgedTLink:
     crossed: bool = False
     p: sp.Symbol = P
 
-    @property
+    @functools.cached_property
     def four_pole(self) -> FourPole:
         """Chain matrix from the bridged-T's own Y-parameters (eq. (8.420)); negated when ``crossed``."""
         p = self.p
@@ -407,7 +435,7 @@ class BridgedTLink:
 
 
 def constant_resistance_bridged_t(
-    link: CorrectingLink, R1: Any = None, *, method: str = "bott-duffin"
+    link: CorrectingLink, R1: Any = None, *, method: str = "auto"
 ) -> BridgedTLink:
     """Convert a constant-resistance lattice to a symmetric bridged T where realisable (Bulgakov (1954), §9.40).
 
@@ -426,8 +454,8 @@ def constant_resistance_bridged_t(
     link : CorrectingLink
     R1 : positive number, optional
         Series resistors (default ``W``).
-    method : {"bott-duffin", "brune"}
-        Synthesis of the bridge and shunt arms.
+    method : {"auto", "bott-duffin", "brune"}
+        Synthesis of the bridge and shunt arms (as in :func:`correcting_link`).
 
     Returns
     -------
@@ -453,8 +481,8 @@ def constant_resistance_bridged_t(
     """
     if not isinstance(link, CorrectingLink):
         raise ParameterError(f"link must be a CorrectingLink (from correcting_link), got {type(link).__name__}")
-    if method not in ("bott-duffin", "brune"):
-        raise ParameterError(f"method must be 'bott-duffin' or 'brune', got {method!r}")
+    if method not in ("auto", "bott-duffin", "brune"):
+        raise ParameterError(f"method must be 'auto', 'bott-duffin' or 'brune', got {method!r}")
     p, W = link.p, link.W
     Za = link.Za.impedance(p)
     crossed = False
