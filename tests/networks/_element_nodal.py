@@ -52,7 +52,7 @@ def node_voltages(branches: list, fixed: dict, injected: dict | None = None) -> 
         expr = sum(((V[n] - V[b]) * y for a, b, y in branches if a == n), sp.Integer(0))
         expr += sum(((V[n] - V[a]) * y for a, b, y in branches if b == n), sp.Integer(0))
         eqs.append(expr - (injected or {}).get(n, 0))
-    sol = sp.solve(eqs, [V[n] for n in nodes], dict=True)[0]
+    sol = sp.solve(eqs, [V[n] for n in nodes], dict=True)[0] if nodes else {}
     return {n: sp.cancel(sp.sympify(V[n]).subs(sol)) for n in V}
 
 
