@@ -26,6 +26,15 @@ from .bott_duffin import bott_duffin_synthesis
 from .brune import brune_synthesis, minimum_real_part
 from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
 from .conversions import PARAMETER_KINDS, convert_parameters
+from .correcting import (
+    CORRECTING_LINKS,
+    BridgedTLink,
+    CorrectingLink,
+    constant_resistance_bridged_t,
+    correcting_link,
+    link_transfer,
+)
+from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
 from .filters import (
     FilterSection,
     bandpass_attenuation_poles,
@@ -47,6 +56,7 @@ from .image import (
     terminated_response,
     working_loss,
 )
+from .junctions import CascadeJunctions, cascade_junctions
 from .oneports import (
     BruneSection,
     Capacitor,
@@ -67,16 +77,6 @@ from .positive_real import (
     positive_real_report,
     real_part_on_axis,
 )
-from .correcting import (
-    CORRECTING_LINKS,
-    BridgedTLink,
-    CorrectingLink,
-    constant_resistance_bridged_t,
-    correcting_link,
-    link_transfer,
-)
-from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
-from .junctions import CascadeJunctions, cascade_junctions
 from .sections import (
     bridged_t_section,
     ideal_transformer,
@@ -93,11 +93,17 @@ from .sections import (
 )
 
 __all__ = [
+    "CORRECTING_LINKS",
     "PARAMETER_KINDS",
     "Absorber",
+    "BridgedTLink",
     "BruneSection",
     "Capacitor",
+    "CascadeJunctions",
+    "CorrectingLink",
     "Damper",
+    "EnergyFunctions",
+    "EnergyValues",
     "FilterSection",
     "FourPole",
     "HInfinityOptimum",
@@ -113,6 +119,7 @@ __all__ = [
     "OnePort",
     "Parallel",
     "PositiveRealReport",
+    "ReactanceCheck",
     "Resistor",
     "Series",
     "Spring",
@@ -128,12 +135,17 @@ __all__ = [
     "brune_synthesis",
     "brune_test",
     "cascade",
+    "cascade_junctions",
     "cauer_first",
     "cauer_second",
     "chain_driving_point",
     "chain_power",
+    "check_reactance_theorem",
     "constant_k_section",
+    "constant_resistance_bridged_t",
     "convert_parameters",
+    "correcting_link",
+    "energy_functions",
     "equivalent_two_pole",
     "foster_first",
     "foster_second",
@@ -150,6 +162,7 @@ __all__ = [
     "lattice",
     "lattice_from_transmission",
     "lattice_phase_network",
+    "link_transfer",
     "m_derived_section",
     "matching_l_pad",
     "minimum_real_part",
@@ -170,19 +183,6 @@ __all__ = [
     "twin_t_notch",
     "twin_t_section",
     "working_loss",
-    "CORRECTING_LINKS",
-    "BridgedTLink",
-    "CorrectingLink",
-    "constant_resistance_bridged_t",
-    "correcting_link",
-    "link_transfer",
-    "EnergyFunctions",
-    "EnergyValues",
-    "ReactanceCheck",
-    "check_reactance_theorem",
-    "energy_functions",
-    "CascadeJunctions",
-    "cascade_junctions",
 ]
 
 # public functions refuse invalid arguments with ParameterError (symosc/_validate.py)

@@ -235,7 +235,8 @@ class CorrectingLink:
         d = zb - za
         chain = [[sp.cancel((zb + za) / d), sp.cancel(2 * za * zb / d)], [sp.cancel(2 / d), sp.cancel((zb + za) / d)]]
         net = lattice(sp.Symbol("Z_a"), sp.Symbol("Z_b")).netlist
-        branches = tuple((pairs, sp.ImmutableMatrix([[za if Zb[0, 0] == sp.Symbol("Z_a") else zb]])) for pairs, Zb in net.branches)
+        arm = {sp.Symbol("Z_a"): za, sp.Symbol("Z_b"): zb}
+        branches = tuple((pairs, sp.ImmutableMatrix([[arm[Zb[0, 0]]]])) for pairs, Zb in net.branches)
         return FourPole(chain, p, Netlist(branches, net.terminals), name="constant-resistance lattice")
 
     def realized_transfer(self) -> sp.Expr:
@@ -288,7 +289,8 @@ def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
     N, D = rational_function(X, p, "X")
     free = (N.as_expr().free_symbols | D.as_expr().free_symbols) - {p}
     if free:
-        raise ParameterError(f"X must have numeric coefficients to be realised; substitute values for {sorted(free, key=str)}")
+        names = sorted(free, key=str)
+        raise ParameterError(f"X must have numeric coefficients to be realised; substitute values for {names}")
     if N.is_zero:
         raise ParameterError("X = 0: the lattice would be a balanced bridge transmitting nothing")
     if N.degree() > D.degree():
@@ -428,15 +430,14 @@ class BridgedTLink:
 
     def _latex(self, printer: Any) -> str:
         bridge = r"\infty" if self.bridge is None else sp.latex(self.bridge.impedance(self.p))
-        return rf"R_1 = {sp.latex(self.R1)},\ Z_{{bridge}} = {bridge},\ Z_{{shunt}} = {sp.latex(self.shunt.impedance(self.p))}"
+        shunt = sp.latex(self.shunt.impedance(self.p))
+        return rf"R_1 = {sp.latex(self.R1)},\ Z_{{bridge}} = {bridge},\ Z_{{shunt}} = {shunt}"
 
     def _repr_latex_(self) -> str:
         return f"${self._latex(None)}$"
 
 
-def constant_resistance_bridged_t(
-    link: CorrectingLink, R1: Any = None, *, method: str = "auto"
-) -> BridgedTLink:
+def constant_resistance_bridged_t(link: CorrectingLink, R1: Any = None, *, method: str = "auto") -> BridgedTLink:
     """Convert a constant-resistance lattice to a symmetric bridged T where realisable (Bulgakov (1954), §9.40).
 
     The bridged T with series resistors ``R1``, bridge ``Z3`` and shunt ``Z2`` equals the lattice with

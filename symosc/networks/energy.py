@@ -93,7 +93,8 @@ class EnergyValues:
         return repr(self)
 
     def _latex(self, printer: Any) -> str:
-        return rf"F_0 = {sp.latex(self.F0)},\ T_0 = {sp.latex(self.T0)},\ V_0 = {sp.latex(self.V0)},\ Z = {sp.latex(self.impedance)}"
+        forms = rf"F_0 = {sp.latex(self.F0)},\ T_0 = {sp.latex(self.T0)},\ V_0 = {sp.latex(self.V0)}"
+        return rf"{forms},\ Z = {sp.latex(self.impedance)}"
 
     def _repr_latex_(self) -> str:
         return f"${self._latex(None)}$"

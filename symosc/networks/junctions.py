@@ -66,7 +66,7 @@ class CascadeJunctions:
 
     at: Any
     E: tuple
-    I: tuple  # noqa: E741 - the book's name of the current
+    I: tuple
     Z1: Any
     Z2: Any
     s: tuple
@@ -168,7 +168,7 @@ def cascade_junctions(
     r2 = (zh - Z1) / (zh + Z2)
     den = (zr + Z1) * (zh + Z2) * (mpmath.exp(S) - r1 * r2 * mpmath.exp(-S))
     if den == 0:
-        raise ParameterError(f"the terminated cascade is at resonance at p = {at} (the denominator of (8.427) vanishes)")
+        raise ParameterError(f"the terminated cascade is at resonance at p = {at} (the denominator of (8.427) is 0)")
     Es, Is = [], []
     n = len(sections)
     for j in range(n + 1):

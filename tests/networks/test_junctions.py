@@ -40,7 +40,8 @@ def direct(sections, E, Zr, ZH, at):
     return out
 
 
-def assert_close(result, reference, tol=mpmath.mpf(10) ** -25):
+def assert_close(result, reference):
+    tol = mpmath.mpf(10) ** -25
     for j, ref in enumerate(reference):
         scale = 1 + abs(ref[0]) + abs(ref[1])
         assert abs(result.E[j] - ref[0]) < tol * scale, j
