@@ -61,7 +61,8 @@ class EnergyValues:
     --------
     >>> import sympy as sp
     >>> from symosc.networks import Capacitor, Inductor, energy_functions
-    >>> energy_functions(Inductor(1) + Capacitor(1)).evaluate(2 * sp.I)
+    >>> values = energy_functions(Inductor(1) + Capacitor(1)).evaluate(2 * sp.I)
+    >>> values
     EnergyValues(at=2*I, F0=0, T0=1, V0=1, Z=3*I/2)
 
     See Also
