@@ -172,7 +172,7 @@ def realisable_transfers(draw):
     return sp.cancel(P / (k * Q))
 
 
-@settings(max_examples=5, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(realisable_transfers())
 def test_random_realisable_transfers_are_realised_exactly(X):
     """Any X regular in Re p >= 0 with |X(iω)| <= 1 (9.518) is realised; nodal analysis reproduces it."""

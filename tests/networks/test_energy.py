@@ -30,7 +30,7 @@ from ._element_nodal import driving_point_impedance, flatten
 
 p = sp.Symbol("p")
 pos = st.fractions(min_value=sp.Rational(1, 5), max_value=5, max_denominator=7).map(lambda f: sp.Rational(f))
-SETTINGS = settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def networks(kinds=(Resistor, Inductor, Capacitor), depth: int = 3):
