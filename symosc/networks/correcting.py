@@ -298,6 +298,12 @@ def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
             "X is not regular at p = oo (numerator degree above the denominator's): not realisable by a "
             "passive lattice, Bulgakov (1954), §9.36"
         )
+    if D.degree() > 2:
+        raise ParameterError(
+            f"X has degree {D.degree()}: a single link realises first- and second-order transfers; factor X into "
+            "first- and second-order factors and realise each as its own link with the same W (their cascade "
+            "multiplies the transfers), Bulgakov (1954), §9.37"
+        )
     if not is_strictly_hurwitz(D):
         poles = [complex(r) for r in D.nroots(n=15) if sp.re(r) >= -1e-12]
         raise ParameterError(
@@ -346,7 +352,8 @@ def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "auto
     ------
     ParameterError
         When ``X`` is not realisable (pole in ``Re p >= 0``, not regular at infinity, ``|X(iω)| > 1``), is 0 or
-        ±1, or ``W`` is not positive.
+        ±1, is of degree above 2 (cascade first- and second-order links instead, §9.37), or ``W`` is not
+        positive.
 
     Examples
     --------

@@ -249,6 +249,7 @@ def test_series_resistance_range_of_guillemins_device():
         (sp.Integer(0), "X = 0"),
         (sp.Integer(1), "X = 1"),
         (sp.Symbol("a") / (p + 1), "numeric"),
+        (1 / ((p + 1) * (p + 2) * (p + 3)), "9.37"),
     ],
 )
 def test_unrealisable_transfers_are_refused_with_the_condition(X, match):
