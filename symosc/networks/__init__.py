@@ -34,6 +34,7 @@ from .correcting import (
     correcting_link,
     link_transfer,
 )
+from .correcting_cascade import CorrectingCascade, correcting_cascade
 from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
 from .filters import (
     FilterSection,
@@ -100,6 +101,7 @@ __all__ = [
     "BruneSection",
     "Capacitor",
     "CascadeJunctions",
+    "CorrectingCascade",
     "CorrectingLink",
     "Damper",
     "EnergyFunctions",
@@ -144,6 +146,7 @@ __all__ = [
     "constant_k_section",
     "constant_resistance_bridged_t",
     "convert_parameters",
+    "correcting_cascade",
     "correcting_link",
     "energy_functions",
     "equivalent_two_pole",

@@ -122,3 +122,25 @@ LINKS: dict[str, tuple[str, str, str]] = {
     "low-pass": ("VIII", "Table 9", "X = (1/k) /(T p + 1)"),
     "second-order": ("IX-XV", "§9.39", "X = (1/k) (T1² p² + 2 ζ1 T1 p ± 1)/(T2² p² + 2 ζ2 T2 p + 1)"),
 }
+
+
+def axis_gain_at_most(N: sp.Poly, D: sp.Poly, k: sp.Expr) -> bool:
+    """Exact test of ``|N(iω)/D(iω)| <= k`` for all real ``ω``."""
+    x = sp.Dummy("x")
+    p = N.gens[0]
+
+    def sq(Pl: sp.Poly) -> sp.Expr:
+        return sp.expand(Pl.as_expr().subs(p, sp.I * sp.sqrt(x)) * Pl.as_expr().subs(p, -sp.I * sp.sqrt(x)))
+
+    return nonnegative_on_half_line(sp.Poly(k**2 * sq(D) - sq(N), x))
+
+
+def flat_factor(N: sp.Poly, D: sp.Poly) -> sp.Expr:
+    """A simple rational ``k >= max |N(iω)/D(iω)|``: the exact maximum when it is rational, else 6 digits above."""
+    import math
+
+    m = max_gain_on_axis(N, D)
+    k = sp.nsimplify(m, rational=True, tolerance=1e-12)
+    if k > 0 and axis_gain_at_most(N, D, k):
+        return k
+    return sp.Rational(math.ceil(m * 10**6), 10**6)

@@ -156,7 +156,10 @@ def _rational_cycle(Z: sp.Expr, p: sp.Symbol) -> bool:
     is very slow and Brune's cycle (coupled coils) is used instead.
     """
     for F in (Z, sp.cancel(1 / Z)):
-        value, x0 = minimum_real_part(F, p)
+        try:
+            value, x0 = minimum_real_part(F, p)
+        except TypeError:  # a pole at p = 0 makes Re F(iω) undefined at ω = 0: let Brune's removals go first
+            return False
         if not all(v == sp.oo or v.is_Rational for v in (value, x0)):
             return False
     return True
@@ -285,7 +288,7 @@ class CorrectingLink:
         return f"${self._latex(None)}$"
 
 
-def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
+def _check_transfer(X: Any, p: sp.Symbol, max_degree: int | None = 2) -> tuple[sp.Poly, sp.Poly]:
     N, D = rational_function(X, p, "X")
     free = (N.as_expr().free_symbols | D.as_expr().free_symbols) - {p}
     if free:
@@ -298,11 +301,11 @@ def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
             "X is not regular at p = oo (numerator degree above the denominator's): not realisable by a "
             "passive lattice, Bulgakov (1954), §9.36"
         )
-    if D.degree() > 2:
+    if max_degree is not None and D.degree() > max_degree:
         raise ParameterError(
             f"X has degree {D.degree()}: a single link realises first- and second-order transfers; factor X into "
             "first- and second-order factors and realise each as its own link with the same W (their cascade "
-            "multiplies the transfers), Bulgakov (1954), §9.37"
+            "multiplies the transfers: correcting_cascade does this), Bulgakov (1954), §9.37"
         )
     if not is_strictly_hurwitz(D):
         poles = [complex(r) for r in D.nroots(n=15) if sp.re(r) >= -1e-12]
@@ -310,6 +313,8 @@ def _check_transfer(X: Any, p: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
             f"X has poles in the closed right half-plane Re p >= 0 (at {poles}): not realisable by a passive "
             "lattice, Bulgakov (1954), §9.36, (9.518)"
         )
+    if max_degree is None:
+        return N, D
     x = sp.Dummy("x")
 
     def sq(Pl: sp.Poly) -> sp.Expr:

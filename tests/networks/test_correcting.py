@@ -19,6 +19,7 @@ from symosc.networks import (
     Inductor,
     Resistor,
     constant_resistance_bridged_t,
+    correcting_cascade,
     correcting_link,
     link_transfer,
 )
@@ -272,3 +273,34 @@ def test_bad_link_parameters():
         link_transfer("notch", T=1)
     with pytest.raises(ParameterError, match="W"):
         correcting_link(1 / (p + 2), W=-1)
+
+
+@pytest.mark.parametrize(
+    "X",
+    [
+        1 / ((p + 1) * (p + 2) * (p + 3)),
+        (p - 1) * (p**2 + 4) / ((p + 1) * (p**2 + 2 * p + 2)),
+        (p**2 + 1) / ((p + 1) * (p + 2)),
+        3 * (p + 1) ** 2 / ((p + 2) ** 2 * (4 * p + 1)),
+    ],
+)
+def test_cascade_of_links_realises_higher_order_transfers(X):
+    """§9.37: X = gain · Π X_j, each X_j a passive link (|X_j(iω)| <= 1); the product of the links' transfers,
+    each from nodal analysis of its own lattice (matched links multiply), times the gain is X."""
+    net = correcting_cascade(X, W=1)
+    product = sp.Integer(1)
+    for link in net.links:
+        transfer, z_in = lattice_response(link)
+        assert sp.cancel(z_in - 1) == 0
+        assert link.max_gain <= 1 + 1e-12
+        product *= transfer
+    assert sp.cancel(net.gain * product - X) == 0
+    assert sp.cancel(net.realized_transfer() - X) == 0
+    assert all(sp.Poly(sp.fraction(link.transfer)[1], p).degree() <= 2 for link in net.links)
+
+
+def test_cascade_refuses_irreducible_cubics():
+    with pytest.raises(ParameterError, match="irreducible factor of degree 3"):
+        correcting_cascade(1 / (p**3 + 2 * p**2 + 2 * p + 3), W=1)
+    with pytest.raises(ParameterError, match="right half-plane"):
+        correcting_cascade(1 / ((p - 1) * (p + 2) * (p + 3)), W=1)
