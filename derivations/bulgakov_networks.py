@@ -31,6 +31,7 @@ from symosc.networks import (
     check_reactance_theorem,
     constant_k_section,
     constant_resistance_bridged_t,
+    correcting_cascade,
     correcting_link,
     energy_functions,
     equivalent_two_pole,
@@ -226,6 +227,13 @@ def correcting() -> dict:
         convertible.append(numeral)
         assert tee.four_pole.chain == correcting_link(link_transfer(kind, **params)).four_pole.chain
     row("§9.40 links with a bridged-T form", "I, II, IV, VII, VIII", ", ".join(convertible), "same chain matrix")
+    net = correcting_cascade(1 / ((p + 1) * (p + 2) * (p + 3)), W=1)
+    row(
+        "§9.37 1/((p+1)(p+2)(p+3)) as a cascade",
+        "3 first-order links",
+        f"{len(net.links)} links, gain {net.gain}",
+        f"transfer error {sp.cancel(net.realized_transfer() - net.transfer)}",
+    )
     return {"link": link, "convertible": convertible}
 
 
