@@ -245,7 +245,9 @@ def energy() -> dict:
     w = sp.Symbol("w", positive=True)
     X = sp.cancel(-sp.I * net.impedance(p).subs(p, sp.I * w))
     slope = sp.diff(X, w).subs(w, sp.Rational(1, 2))
-    row("(9.250) dX/dω at ω = 1/2", sp.nsimplify(slope), values.reactance_slope(), "T0 + V0/ω² from the loop currents")
+    row(
+        "(9.250) dX/dω at ω = 1/2", sp.nsimplify(slope), values.reactance_slope(), "book: d/dω of X; symosc: T0 + V0/ω²"
+    )
     row("(9.250) Foster's theorem on the same network", "dX/dω > 0", bool(check_reactance_theorem(net)), "")
     return {"slope": slope, "energy": values.reactance_slope()}
 
