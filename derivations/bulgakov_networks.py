@@ -1,7 +1,8 @@
 """Bulgakov (1954) §8.31-8.49 and ch. 9 B-D: two-poles, four-poles, synthesis, filters, vibration absorbers.
 
 Run ``python derivations/bulgakov_networks.py [--out DIR]``.  Prints one table "quantity | book | symosc | note"
-per worked example (E15, E16, E18, T9, T10, T11 and the legible formulas of §8.34, §8.41, §9.23, §9.26) and
+per worked example (E15, E16, E18, T9, T10, T11 and the legible formulas of §8.34, §8.41, §8.46, §9.21, §9.23,
+§9.26, §9.38–9.40) and
 saves the absorber response curves to ``DIR/absorber.png`` (default ``derivations/out/bulgakov_networks/``).
 Where the printed value cannot be read the book column says so; nothing is tuned to match.
 """
@@ -14,20 +15,31 @@ from pathlib import Path
 import mpmath
 import sympy as sp
 
+from symosc.errors import ParameterError
 from symosc.networks import (
     Absorber,
+    Capacitor,
     Impedance,
+    Inductor,
     absorber_fixed_points,
     absorber_hinf_optimum,
     absorber_optimum,
     biquadratic_is_positive_real,
     brune_synthesis,
     cascade,
+    cascade_junctions,
+    check_reactance_theorem,
     constant_k_section,
+    constant_resistance_bridged_t,
+    correcting_cascade,
+    correcting_link,
+    energy_functions,
     equivalent_two_pole,
     image_parameters,
     is_positive_real,
+    l_section,
     lattice_phase_network,
+    link_transfer,
     matching_l_pad,
     t_section,
     twin_t_notch,
@@ -175,6 +187,94 @@ def t11() -> dict:
     return {"pad": pad}
 
 
+def correcting() -> dict:
+    """§9.38–9.40, Tables 8–9: constant-resistance links, their element values and the bridged-T conversion."""
+    T1, T2, k, W = 1, 4, 2, 1
+    link = correcting_link(link_transfer("lag", T1=T1, T2=T2, k=k), W=W)
+    a0, a1, b0, b1 = k * T2 - T1, k - 1, k * T2 + T1, k + 1
+    book = sp.factor((a0 * p + a1) * W / (b0 * p + b1))
+    row("§9.38 link IV Za (T1=1, T2=4, k=2)", book, sp.factor(link.Za.impedance(p)), "Table 8: a0=kT2-T1, b0=kT2+T1")
+    row("§9.38 link IV lattice arms", "R + (R||L), R || (R+C)", f"{link.Za!r}; {link.Zb!r}", "")
+    row(
+        "  transfer error, input impedance",
+        "0, W",
+        f"{sp.cancel(link.realized_transfer() - link.transfer)}, {link.input_impedance()}",
+        "from the chain matrix (8.360)",
+    )
+    vi = correcting_link(link_transfer("all-pass", T=2, k=3), W=10)
+    caps = [e.C for e in vi.Za.elements() if isinstance(e, Capacitor)]
+    row("Table 9 link VI C = (k+1)²T/(4kW), T=2, k=3, W=10", sp.Rational(16 * 2, 4 * 3 * 10), caps[0], "")
+    vii = correcting_link(link_transfer("differentiating", T=2), W=10)
+    Ls = [e.L for e in vii.Zb.elements() if isinstance(e, Inductor)]
+    Cs = [e.C for e in vii.Za.elements() if isinstance(e, Capacitor)]
+    row("Table 9 link VII L = 2TW, C = 2T/W (T=2, W=10)", "40, 2/5", f"{Ls[0]}, {Cs[0]}", "")
+    kinds = {
+        "I": ("attenuator", {"k": 3}),
+        "II": ("lead", {"T1": 2, "T2": 1}),
+        "III": ("lead-stabilizing", {"T1": 2, "T2": 1}),
+        "IV": ("lag", {"T1": 1, "T2": 4, "k": 2}),
+        "V": ("lag-stabilizing", {"T1": 1, "T2": 4, "k": 2}),
+        "VI": ("all-pass", {"T": 1}),
+        "VII": ("differentiating", {"T": 1}),
+        "VIII": ("low-pass", {"T": 1, "k": 2}),
+    }
+    convertible = []
+    for numeral, (kind, params) in kinds.items():
+        try:
+            tee = constant_resistance_bridged_t(correcting_link(link_transfer(kind, **params)))
+        except ParameterError:  # the conversion is refused, naming the failed condition (9.578)
+            continue
+        convertible.append(numeral)
+        assert tee.four_pole.chain == correcting_link(link_transfer(kind, **params)).four_pole.chain
+    row("§9.40 links with a bridged-T form", "I, II, IV, VII, VIII", ", ".join(convertible), "same chain matrix")
+    net = correcting_cascade(1 / ((p + 1) * (p + 2) * (p + 3)), W=1)
+    row(
+        "§9.37 1/((p+1)(p+2)(p+3)) as a cascade",
+        "3 first-order links",
+        f"{len(net.links)} links, gain {net.gain}",
+        f"transfer error {sp.cancel(net.realized_transfer() - net.transfer)}",
+    )
+    return {"link": link, "convertible": convertible}
+
+
+def energy() -> dict:
+    """§9.21: Z|I1|² = F0 + p T0 + V0/p; Foster's theorem dX/dω = (T0 + V0/ω²)/|I1|² (9.250)."""
+    net = (Inductor(1) | Capacitor(2)) + Inductor(3) + ((Inductor(1) + Capacitor(1)) | Capacitor(1))
+    at = sp.I * sp.Rational(1, 2)
+    values = energy_functions(net).evaluate(at)
+    w = sp.Symbol("w", positive=True)
+    X = sp.cancel(-sp.I * net.impedance(p).subs(p, sp.I * w))
+    slope = sp.diff(X, w).subs(w, sp.Rational(1, 2))
+    row(
+        "(9.250) dX/dω at ω = 1/2", sp.nsimplify(slope), values.reactance_slope(), "book: d/dω of X; symosc: T0 + V0/ω²"
+    )
+    row("(9.250) Foster's theorem on the same network", "dX/dω > 0", bool(check_reactance_theorem(net)), "")
+    return {"slope": slope, "energy": values.reactance_slope()}
+
+
+def junctions() -> dict:
+    """§8.46, (8.427): junction currents of four identical Γ sections against the direct chain solution."""
+    sections = [l_section(p + 2, 3 / p + 1, shunt_first=True)] * 4
+    at = mpmath.mpc(0.3, 1.7)
+    result = cascade_junctions(sections, 1, 2, 1, at)
+    total = mpmath.eye(2)
+    for fp in sections:
+        total = total * fp.evaluate(at)
+    z_in = (total[0, 0] + total[0, 1]) / (total[1, 0] + total[1, 1])
+    ix = 1 / (2 + z_in)
+    row(
+        "(8.427) I_0 of 4 Γ sections at p = 0.3+1.7i",
+        mpmath.nstr(ix, 10),
+        mpmath.nstr(result.I[0], 10),
+        "book column: direct chain solution (no iterative parameters)",
+    )
+    state = mpmath.matrix([1 - 2 * ix, ix])
+    for fp in sections:
+        state = mpmath.inverse(fp.evaluate(at)) * state
+    row("(8.427) I_4 (load current)", mpmath.nstr(state[1], 10), mpmath.nstr(result.I[-1], 10), "")
+    return {"direct": state[1], "formula": result.I[-1]}
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=Path(__file__).parent / "out" / "bulgakov_networks")
@@ -188,6 +288,9 @@ def main(argv: list[str] | None = None) -> int:
     t9(args.out)
     t10()
     t11()
+    correcting()
+    energy()
+    junctions()
     width = [max(len(r[i]) for r in ROWS) for i in range(4)]
     header = ("quantity", "book", "symosc", "note")
     print(" | ".join(h.ljust(min(w, 60)) for h, w in zip(header, width, strict=True)))

@@ -26,6 +26,16 @@ from .bott_duffin import bott_duffin_synthesis
 from .brune import brune_synthesis, minimum_real_part
 from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
 from .conversions import PARAMETER_KINDS, convert_parameters
+from .correcting import (
+    CORRECTING_LINKS,
+    BridgedTLink,
+    CorrectingLink,
+    constant_resistance_bridged_t,
+    correcting_link,
+    link_transfer,
+)
+from .correcting_cascade import CorrectingCascade, correcting_cascade
+from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
 from .filters import (
     FilterSection,
     bandpass_attenuation_poles,
@@ -47,6 +57,7 @@ from .image import (
     terminated_response,
     working_loss,
 )
+from .junctions import CascadeJunctions, cascade_junctions
 from .m_functions import m_function_synthesis, richards_function
 from .oneports import (
     BruneSection,
@@ -84,11 +95,18 @@ from .sections import (
 )
 
 __all__ = [
+    "CORRECTING_LINKS",
     "PARAMETER_KINDS",
     "Absorber",
+    "BridgedTLink",
     "BruneSection",
     "Capacitor",
+    "CascadeJunctions",
+    "CorrectingCascade",
+    "CorrectingLink",
     "Damper",
+    "EnergyFunctions",
+    "EnergyValues",
     "FilterSection",
     "FourPole",
     "HInfinityOptimum",
@@ -104,6 +122,7 @@ __all__ = [
     "OnePort",
     "Parallel",
     "PositiveRealReport",
+    "ReactanceCheck",
     "Resistor",
     "Series",
     "Spring",
@@ -119,12 +138,18 @@ __all__ = [
     "brune_synthesis",
     "brune_test",
     "cascade",
+    "cascade_junctions",
     "cauer_first",
     "cauer_second",
     "chain_driving_point",
     "chain_power",
+    "check_reactance_theorem",
     "constant_k_section",
+    "constant_resistance_bridged_t",
     "convert_parameters",
+    "correcting_cascade",
+    "correcting_link",
+    "energy_functions",
     "equivalent_two_pole",
     "foster_first",
     "foster_second",
@@ -141,6 +166,7 @@ __all__ = [
     "lattice",
     "lattice_from_transmission",
     "lattice_phase_network",
+    "link_transfer",
     "m_derived_section",
     "m_function_synthesis",
     "matching_l_pad",

@@ -229,6 +229,15 @@ def _operator_cycle():
     return system.cycles(5.0)
 
 
+def _one_ports():
+    import sympy as sp
+
+    from symosc.networks import BruneSection, Capacitor, Impedance, Inductor, Resistor
+
+    R = Resistor(1)
+    return (R, Inductor(2), Capacitor(3), Impedance(sp.Symbol("Z_A")), BruneSection(1, 4, 2, 1, load=R), R + R, R | R)
+
+
 FACTORIES: dict[str, Callable[[], Any]] = {
     "DesignLinearization": _design_linearization,
     "ImplicitMapCycle": _implicit_map_cycle,
@@ -260,6 +269,7 @@ FACTORIES: dict[str, Callable[[], Any]] = {
     "SpectralComponent": _spectral_component,
     "StepGenerator": _step_generator,
     "TableEntry": _table_entry,
+    "OnePort": _one_ports,  # symosc.networks: every element kind (other examples may find a OnePort first)
 }
 
 __all__ = ["FACTORIES", "np"]

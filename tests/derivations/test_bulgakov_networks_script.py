@@ -44,3 +44,9 @@ def test_script_runs_and_reproduces(tmp_path, capsys):
     assert abs(float(pad.Ra) - np.sqrt(1500 * 1000)) < 1e-9 and abs(float(pad.loss) - np.arccosh(np.sqrt(3))) < 1e-12
     g = mod.e18()["g"]
     assert abs(complex(g) - 2j * np.arctan(0.8)) < 1e-12
+    # §9.40: the book's list of links with a bridged-T form; (9.250) and (8.427) against direct computations
+    assert mod.correcting()["convertible"] == ["I", "II", "IV", "VII", "VIII"]
+    energy = mod.energy()
+    assert energy["slope"] == energy["energy"]
+    junction = mod.junctions()
+    assert abs(junction["direct"] - junction["formula"]) < 1e-12 * abs(junction["direct"])
