@@ -81,22 +81,42 @@ def _reversed_polys(P: Any, t: Trig, n: int, parity: int | None = None) -> tuple
     """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms.
 
     With ``parity`` (of the harmonics of ``t``) the reversed polynomials are taken in ``z**2`` from the offset
-    ``(n - parity) % 2``.
+    ``(n - parity) % 2``.  The reversal of ``t``'s own length is built once; other ``n`` are shifts of it (in C).
     """
     cache = t.polys if t.polys is not None else {}
     key = ("r", n, parity)
     if key not in cache:
-        shift = n - (len(t.cos) - 1)
-        pad = [0] * shift
-        rc, rs = pad + t.cos[::-1].tolist(), pad + t.sin[::-1].tolist()
-        if parity is not None:
-            lo = (n - parity) % 2
-            rc, rs = rc[lo::2], rs[lo::2]
-        rc, rs = P(rc), P(rs)
+        own = len(t.cos) - 1
+        base_key = ("r0", parity)
+        if base_key not in cache:
+            rc, rs = t.cos[::-1].tolist(), t.sin[::-1].tolist()
+            if parity is not None:
+                lo0 = (own - parity) % 2
+                rc, rs = rc[lo0::2], rs[lo0::2]
+            rc, rs = P(rc), P(rs)
+            cache[base_key] = (rc, rs, rc - rs)
+        rc, rs, rd = cache[base_key]
+        shift = n - own if parity is None else ((n - (n - parity) % 2) - (own - (own - parity) % 2)) // 2
+        if shift:
+            rc, rs, rd = rc.left_shift(shift), rs.left_shift(shift), rd.left_shift(shift)
         c, s, _ = _forward_polys(P, t, parity)
-        cache[key] = (rc, rs, rc - rs, c, s, c + s)
+        cache[key] = (rc, rs, rd, c, s, c + s)
         t.polys = cache
     return cache[key]
+
+
+def _kind(t: Trig) -> str | None:
+    """"c" when the sine numerators all vanish, "s" when the cosine ones do, None otherwise (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "k" not in cache:
+        if not any(t.sin.tolist()):
+            cache["k"] = "c"
+        elif not any(t.cos.tolist()):
+            cache["k"] = "s"
+        else:
+            cache["k"] = None
+        t.polys = cache
+    return cache["k"]
 
 
 def _spread(p: Any, offset: int, n: int) -> np.ndarray:
@@ -128,6 +148,20 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
     for (a, b), f in zip(pairs, factors, strict=True):
         a_c, a_s, a_sum = _forward_polys(P, a, pa)
         r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
+        ka, kb = _kind(a), _kind(b)
+        if ka is not None and kb is not None:
+            # one part of each factor vanishes: two products (n + m and n - m) instead of six
+            x = a_c if ka == "c" else a_s
+            plus, minus = (x * b_c, x * r_c) if kb == "c" else (x * b_s, x * r_s)
+            if f != 1:
+                plus, minus = plus * f, minus * f
+            if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
+                acc[0] = acc[0] + plus if ka == "c" else acc[0] - plus
+                acc[2] += minus
+            else:  # cos sin = (sin(n+m) - sin(n-m))/2, sin cos = (sin(n+m) + sin(n-m))/2
+                acc[1] += plus
+                acc[3] = acc[3] - minus if ka == "c" else acc[3] + minus
+            continue
         p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
         p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
         if f == 1:
