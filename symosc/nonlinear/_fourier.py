@@ -219,6 +219,13 @@ class _Arith:
         """Return ``t + value * cos(n tau)`` (kind "c") or ``... sin(n tau)`` (kind "s")."""
         return self.add(t, self.monomial(kind, n, value))
 
+    def sine_moment(self, t: Trig, start: int = 2) -> Any:
+        """``sum n * b_n`` over the sine coefficients from harmonic ``start`` on (``d/dtau`` of them at 0)."""
+        acc = self.scalar(0)
+        for n in range(start, len(t.cos)):
+            acc = acc + self.smul(self.scalar(n), self.coeff(t, "s", n))
+        return acc
+
     def values(self, t: Trig) -> tuple[list, list]:
         """Coefficient lists (user-facing numbers)."""
         return [self.coeff(t, "c", k) for k in range(len(t.cos))], [self.coeff(t, "s", k) for k in range(len(t.cos))]
@@ -348,6 +355,11 @@ class ExactArith(_Arith):
         arr = t.cos if kind == "c" else t.sin
         return Fraction(int(arr[n]), t.den) if n < len(arr) else Fraction(0)
 
+    def sine_moment(self, t: Trig, start: int = 2) -> Fraction:
+        """``sum n * b_n`` (n >= start) summed on the integer numerators, reduced once."""
+        sin = t.sin.tolist()
+        return Fraction(sum(n * int(sin[n]) for n in range(start, len(sin))), t.den)
+
     def _set(self, t: Trig, kind: str, n: int, value: Fraction) -> None:
         value = Fraction(value)
         t.polys = None
@@ -433,6 +445,11 @@ class FixedArith(_Arith):
     def coeff(self, t: Trig, kind: str, n: int) -> int:
         arr = t.cos if kind == "c" else t.sin
         return int(arr[n]) if n < len(arr) else 0
+
+    def sine_moment(self, t: Trig, start: int = 2) -> int:
+        """``sum n * b_n`` (n >= start): integer weights, so the fixed-point sum is exact."""
+        sin = t.sin.tolist()
+        return sum(n * int(sin[n]) for n in range(start, len(sin)))
 
     def _set(self, t: Trig, kind: str, n: int, value: int) -> None:
         (t.cos if kind == "c" else t.sin)[n] = value

@@ -81,28 +81,41 @@ def _reversed_polys(P: Any, t: Trig, n: int, parity: int | None = None) -> tuple
     """Reversed numerators shifted to degree ``n`` (the n - m terms), their difference, and the forward forms.
 
     With ``parity`` (of the harmonics of ``t``) the reversed polynomials are taken in ``z**2`` from the offset
-    ``(n - parity) % 2``.  The reversal of ``t``'s own length is built once; other ``n`` are shifts of it (in C).
+    ``(n - parity) % 2``.
     """
     cache = t.polys if t.polys is not None else {}
     key = ("r", n, parity)
     if key not in cache:
-        own = len(t.cos) - 1
-        base_key = ("r0", parity)
-        if base_key not in cache:
-            rc, rs = t.cos[::-1].tolist(), t.sin[::-1].tolist()
-            if parity is not None:
-                lo0 = (own - parity) % 2
-                rc, rs = rc[lo0::2], rs[lo0::2]
-            rc, rs = P(rc), P(rs)
-            cache[base_key] = (rc, rs, rc - rs)
-        rc, rs, rd = cache[base_key]
-        shift = n - own if parity is None else ((n - (n - parity) % 2) - (own - (own - parity) % 2)) // 2
+        rc, rs, rd = _reversed_base(P, t, parity)
+        shift = _reversal_shift(t, n, parity)
         if shift:
             rc, rs, rd = rc.left_shift(shift), rs.left_shift(shift), rd.left_shift(shift)
-        c, s, _ = _forward_polys(P, t, parity)
-        cache[key] = (rc, rs, rd, c, s, c + s)
+        cache[key] = (rc, rs, rd, *_forward_polys(P, t, parity))
         t.polys = cache
     return cache[key]
+
+
+def _reversed_base(P: Any, t: Trig, parity: int | None) -> tuple:
+    """Reversed (cos, sin, cos - sin) numerators of ``t`` at its own length (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    key = ("r0", parity)
+    if key not in cache:
+        rc, rs = t.cos[::-1].tolist(), t.sin[::-1].tolist()
+        if parity is not None:
+            lo = (len(t.cos) - 1 - parity) % 2
+            rc, rs = rc[lo::2], rs[lo::2]
+        rc, rs = P(rc), P(rs)
+        cache[key] = (rc, rs, rc - rs)
+        t.polys = cache
+    return cache[key]
+
+
+def _reversal_shift(t: Trig, n: int, parity: int | None) -> int:
+    """Power of ``z`` (of ``z**2`` with ``parity``) that moves the reversal of ``t`` to degree ``n``."""
+    own = len(t.cos) - 1
+    if parity is None:
+        return n - own
+    return ((n - (n - parity) % 2) - (own - (own - parity) % 2)) // 2
 
 
 def _kind(t: Trig) -> str | None:
@@ -147,12 +160,16 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
         offsets = None
     for (a, b), f in zip(pairs, factors, strict=True):
         a_c, a_s, a_sum = _forward_polys(P, a, pa)
-        r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
         ka, kb = _kind(a), _kind(b)
         if ka is not None and kb is not None:
             # one part of each factor vanishes: two products (n + m and n - m) instead of six
             x = a_c if ka == "c" else a_s
-            plus, minus = (x * b_c, x * r_c) if kb == "c" else (x * b_s, x * r_s)
+            i = 0 if kb == "c" else 1
+            shift = _reversal_shift(b, nb, pb)
+            plus = x * _forward_polys(P, b, pb)[i]
+            minus = x * _reversed_base(P, b, pb)[i]
+            if shift:
+                minus = minus.left_shift(shift)
             if f != 1:
                 plus, minus = plus * f, minus * f
             if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
@@ -162,6 +179,7 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
                 acc[1] += plus
                 acc[3] = acc[3] - minus if ka == "c" else acc[3] + minus
             continue
+        r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
         p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
         p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
         if f == 1:

@@ -265,18 +265,20 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
             R = ar.add(R, ar.scale(L, a))
         R = ar.add_coeff(R, "c", 1, sk)
         s.append(sk)
-        acc = sk
-        for i in range(1, k):
-            acc = _sadd(ar, acc, _neg(ar, ar.smul(w[i], w[k - i])))
+        # omega = sqrt(omega**2): 2 w_k = s_k - sum_{i=1}^{k-1} w_i w_{k-i} (each product once, doubled)
+        cross = ar.scalar(0)
+        for i in range(1, (k + 1) // 2):
+            cross = _sadd(ar, cross, ar.smul(w[i], w[k - i]))
+        cross = _sadd(ar, cross, cross)
+        if k % 2 == 0 and k > 0:
+            cross = _sadd(ar, cross, ar.smul(w[k // 2], w[k // 2]))
+        acc = _sadd(ar, sk, _neg(ar, cross))
         w.append(ar.sdiv(acc, ar.scalar(2)))
         if k == order + 1:
             break
         xk = ar.solve_forced(R)
         # phase condition x_k'(0) = 0: sum_n n b_n + D = 0
-        D = ar.scalar(0)
-        for n in range(2, len(xk.cos)):
-            D = _sadd(ar, D, ar.smul(ar.scalar(n), ar.coeff(xk, "s", n)))
-        xk = ar.add_coeff(xk, "s", 1, _neg(ar, D))
+        xk = ar.add_coeff(xk, "s", 1, _neg(ar, ar.sine_moment(xk, 2)))
         x.append(xk)
     lam = []
     for mm in range(order + 1):
