@@ -36,6 +36,7 @@ import numpy as np
 
 from ._fourier_products import (
     _flint_dot,
+    _flint_lincomb,
     _float_kind,
     _int_products_flint,
     _object_array,
@@ -317,6 +318,9 @@ class ExactArith(_Arith):
         dens = [c.denominator * t.den for c, t in zip(scalars, series, strict=True)]
         den = math.lcm(*dens)
         n = max(len(t.cos) for t in series)
+        P = _fmpz_poly()
+        if P:
+            return self._norm(Trig(*_flint_lincomb(P, scalars, series, [den // d for d in dens], n), den))
         out_c = np.zeros(n, dtype=object)
         out_s = np.zeros(n, dtype=object)
         for c, t, d in zip(scalars, series, dens, strict=True):

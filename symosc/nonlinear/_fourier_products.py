@@ -118,6 +118,27 @@ def _reversal_shift(t: Trig, n: int, parity: int | None) -> int:
     return ((n - (n - parity) % 2) - (own - (own - parity) % 2)) // 2
 
 
+def _pure_plan(P: Any, t: Trig, parity: int | None) -> tuple | None:
+    """For a pure cosine or sine series: (kind, forward poly, reversed poly, reference degree), else None.
+
+    The reversed polynomial is taken at ``t``'s own length; the reference degree (``own`` rounded down to the
+    parity) tells by how much a product with it must be shifted to stand for the reversal at another length.
+    """
+    cache = t.polys if t.polys is not None else {}
+    key = ("plan", parity)
+    if key not in cache:
+        kind = _kind(t)
+        if kind is None:
+            cache[key] = None
+        else:
+            i = 0 if kind == "c" else 1
+            own = len(t.cos) - 1
+            ref = own if parity is None else own - (own - parity) % 2
+            cache[key] = (kind, _forward_polys(P, t, parity)[i], _reversed_base(P, t, parity)[i], ref)
+        t.polys = cache
+    return cache[key]
+
+
 def _kind(t: Trig) -> str | None:
     """"c" when the sine numerators all vanish, "s" when the cosine ones do, None otherwise (cached on ``t``)."""
     cache = t.polys if t.polys is not None else {}
@@ -158,20 +179,19 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
     else:
         pa = pb = None
         offsets = None
+    ref_b = nb if pb is None else nb - (nb - pb) % 2
+    step = 1 if pb is None else 2
     for (a, b), f in zip(pairs, factors, strict=True):
-        a_c, a_s, a_sum = _forward_polys(P, a, pa)
-        ka, kb = _kind(a), _kind(b)
-        if ka is not None and kb is not None:
+        plan_a, plan_b = _pure_plan(P, a, pa), _pure_plan(P, b, pb)
+        if plan_a is not None and plan_b is not None:
             # one part of each factor vanishes: two products (n + m and n - m) instead of six
-            x = a_c if ka == "c" else a_s
-            i = 0 if kb == "c" else 1
-            shift = _reversal_shift(b, nb, pb)
-            plus = x * _forward_polys(P, b, pb)[i]
-            minus = x * _reversed_base(P, b, pb)[i]
-            if shift:
-                minus = minus.left_shift(shift)
+            ka, x, _, _ = plan_a
+            kb, y, ry, ref = plan_b
             if f != 1:
-                plus, minus = plus * f, minus * f
+                x = x * f
+            plus, minus = x * y, x * ry
+            if ref != ref_b:
+                minus = minus.left_shift((ref_b - ref) // step)
             if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
                 acc[0] = acc[0] + plus if ka == "c" else acc[0] - plus
                 acc[2] += minus
@@ -179,6 +199,7 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
                 acc[1] += plus
                 acc[3] = acc[3] - minus if ka == "c" else acc[3] + minus
             continue
+        a_c, a_s, a_sum = _forward_polys(P, a, pa)
         r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
         p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
         p4, p5, p6 = a_c * r_c, a_s * r_s, a_sum * r_diff
@@ -200,6 +221,24 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
     _fold_differences(out_c, out_s, dc, ds, na, nb)
     top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
     return out_c[:top].copy(), out_s[:top].copy()
+
+
+def _flint_lincomb(P: Any, scalars: list, series: list[Trig], factors: list[int], n: int) -> tuple:
+    """Numerators of ``sum s * t`` (Fraction ``s``; ``factors`` bring each term to the common denominator).
+
+    Summed as FLINT polynomials (in ``z**2`` when every term has only odd or only even harmonics).
+    """
+    used = [(c.numerator * f, t) for c, t, f in zip(scalars, series, factors, strict=True) if c.numerator != 0]
+    parities = {_parity(t) for _, t in used}
+    parity = parities.pop() if len(parities) == 1 else None
+    acc_c = acc_s = P(0)
+    for f, t in used:
+        c, s, _ = _forward_polys(P, t, parity)
+        acc_c += c * f
+        acc_s += s * f
+    if parity is None:
+        return _object_array(_int_list(acc_c, n)), _object_array(_int_list(acc_s, n))
+    return _spread(acc_c, parity, n), _spread(acc_s, parity, n)
 
 
 def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:

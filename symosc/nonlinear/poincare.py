@@ -17,6 +17,7 @@ References: Bulgakov (1954) §§5.16–5.22; Andersen & Geer, SIAM J. Appl. Math
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -363,11 +364,9 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
     harmonics = []
     amp = []
     for xk in raw.x[: order + 1]:
-        if isinstance(ar, ExactArith):  # straight from the integer numerators (the same reduced Rationals)
+        if isinstance(ar, ExactArith):  # integer numerators; the Rationals are built when first read
             den = int(xk.den)
-            cs = [sp.Rational(int(c), den) for c in xk.cos]
-            ss = [sp.Rational(int(c), den) for c in xk.sin]
-            harmonics.append((cs, ss))
+            harmonics.append((den, tuple(xk.cos.tolist()), tuple(xk.sin.tolist())))
             amp.append(sp.Rational(int(sum(xk.cos.tolist())), den))
             continue
         cs, ss = ar.values(xk)
@@ -393,5 +392,38 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
         amplitude=EpsSeries(tuple(amp), eps, order, A0s, name="amplitude"),
         floquet_exponent=EpsSeries(lam, eps, order + 1, name="floquet_exponent"),
         stable=stable,
-        _harmonics=tuple(harmonics),
+        _harmonics=_ExactHarmonics(tuple(harmonics)) if isinstance(ar, ExactArith) else tuple(harmonics),
     )
+
+
+class _ExactHarmonics(Sequence):
+    """Per order ``(cos list, sin list)`` of the scaled ``x_k`` as SymPy Rationals, built on first access.
+
+    Stored as ``(denominator, cos numerators, sin numerators)`` per order (Python ints: picklable); indexing and
+    slicing return the same values as a tuple of ``(list, list)`` of Rationals.
+    """
+
+    def __init__(self, raw: tuple):
+        self._raw = raw
+        self._built: dict[int, tuple[list, list]] = {}
+
+    def __len__(self) -> int:
+        return len(self._raw)
+
+    def __getitem__(self, k: Any) -> Any:
+        if isinstance(k, slice):
+            return tuple(self[i] for i in range(*k.indices(len(self._raw))))
+        k = range(len(self._raw))[k]
+        if k not in self._built:
+            den, cos, sin = self._raw[k]
+            self._built[k] = ([sp.Rational(c, den) for c in cos], [sp.Rational(c, den) for c in sin])
+        return self._built[k]
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
+
+    def __getstate__(self) -> tuple:
+        return self._raw
+
+    def __setstate__(self, raw: tuple) -> None:
+        self.__init__(raw)
