@@ -314,10 +314,13 @@ class ExactArith(_Arith):
 
     def lincomb(self, scalars: list[Fraction], series: list[Trig]) -> Trig:
         """``sum s * t`` on one common denominator, reduced once."""
-        scalars = [Fraction(c) for c in scalars]
-        dens = [c.denominator * t.den for c, t in zip(scalars, series, strict=True)]
-        den = math.lcm(*dens)
         n = max(len(t.cos) for t in series)
+        terms = [(Fraction(c), t) for c, t in zip(scalars, series, strict=True) if c]
+        if not terms:  # zero terms do not change the reduced result
+            return Trig(np.zeros(n, dtype=object), np.zeros(n, dtype=object), 1)
+        scalars, series = [c for c, _ in terms], [t for _, t in terms]
+        dens = [c.denominator * t.den for c, t in terms]
+        den = math.lcm(*dens)
         P = _fmpz_poly()
         if P:
             return self._norm(Trig(*_flint_lincomb(P, scalars, series, [den // d for d in dens], n), den))

@@ -260,9 +260,10 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
         else:
             a = _neg(ar, ar.sdiv(ar.coeff(R, "s", 1), ar.coeff(L, "s", 1)))
             sk = _neg(ar, _sadd(ar, ar.coeff(R, "c", 1), ar.smul(a, ar.coeff(L, "c", 1))))
-            x[m] = ar.add_coeff(x[m], "c", 1, a)
-            tables.correct(m, a, var)
-            R = ar.add(R, ar.scale(L, a))
+            if not ar.is_zero(a):  # (zero for every other order of an odd nonlinearity)
+                x[m] = ar.add_coeff(x[m], "c", 1, a)
+                tables.correct(m, a, var)
+                R = ar.add(R, ar.scale(L, a))
         R = ar.add_coeff(R, "c", 1, sk)
         s.append(sk)
         # omega = sqrt(omega**2): 2 w_k = s_k - sum_{i=1}^{k-1} w_i w_{k-i} (each product once, doubled)
