@@ -140,7 +140,7 @@ def _pure_plan(P: Any, t: Trig, parity: int | None) -> tuple | None:
 
 
 def _kind(t: Trig) -> str | None:
-    """"c" when the sine numerators all vanish, "s" when the cosine ones do, None otherwise (cached on ``t``)."""
+    """ "c" when the sine numerators all vanish, "s" when the cosine ones do, None otherwise (cached on ``t``)."""
     cache = t.polys if t.polys is not None else {}
     if "k" not in cache:
         if not any(t.sin.tolist()):
@@ -272,12 +272,62 @@ def _float_structure(t: Trig) -> Any:
     return cache["fs"]
 
 
-def _float_kind(a: Trig, b: Trig) -> Any:
-    """Which coefficients of ``a * b`` can be nonzero: (kind, parity) as in :func:`_float_structure`, or "0"."""
-    sa, sb = _float_structure(a), _float_structure(b)
-    if sa == "0" or sb == "0":
-        return "0"
-    (ka, pa), (kb, pb) = sa, sb
-    kind = None if ka is None or kb is None else ("c" if ka == kb else "s")
-    parity = None if pa is None or pb is None else (pa + pb) % 2
-    return kind, parity
+def _float_direct_dot(pairs: list[tuple[Trig, Trig]], products: Any) -> tuple[np.ndarray, np.ndarray]:
+    """``sum a * b`` of float series by direct convolution (each coefficient a plain sum of products).
+
+    Pairs of pure cosine/sine series with odd-only or even-only harmonics (the usual case for odd nonlinearities)
+    take two :func:`numpy.convolve` calls on the half-length arrays: the ``n + m`` terms, and the ``n - m`` terms
+    from the reversed second factor.  Other pairs go through ``products(a, b)`` (twice the product, all terms).
+    """
+    top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)
+    out_c = np.zeros(top)
+    out_s = np.zeros(top)
+    structured = []
+    for a, b in pairs:
+        sa, sb = _float_structure(a), _float_structure(b)
+        if sa == "0" or sb == "0":
+            continue
+        if sa[0] is None or sb[0] is None or sa[1] is None or sb[1] is None:
+            c, s = products(a, b)
+            out_c[: len(c)] += c
+            out_s[: len(s)] += s
+            continue
+        structured.append((a, b, sa, sb))
+    groups: dict[tuple[int, int], list] = {}
+    for a, b, sa, sb in structured:
+        groups.setdefault((sa[1], sb[1]), []).append((a, b, sa[0], sb[0]))
+    for (pa, pb), group in groups.items():
+        lb_max = max((len(b.cos) - 1 - pb) // 2 + 1 for _, b, _, _ in group)
+        la_max = max((len(a.cos) - 1 - pa) // 2 + 1 for a, _, _, _ in group)
+        plus = {"c": np.zeros(la_max + lb_max - 1), "s": np.zeros(la_max + lb_max - 1)}
+        minus = {"c": np.zeros(la_max + lb_max - 1), "s": np.zeros(la_max + lb_max - 1)}
+        for a, b, ka, kb in group:
+            x = (a.cos if ka == "c" else a.sin)[pa::2]
+            y = (b.cos if kb == "c" else b.sin)[pb::2]
+            p = np.convolve(x, y)
+            q = np.convolve(x, y[::-1])
+            lo = lb_max - len(y)  # q[s] is the harmonic difference pa - pb - 2 (len(y) - 1) + 2 s
+            if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
+                if ka == "c":
+                    plus["c"][: len(p)] += p
+                else:
+                    plus["c"][: len(p)] -= p
+                minus["c"][lo : lo + len(q)] += q
+            else:  # cos sin = (sin(n+m) - sin(n-m))/2, sin cos = (sin(n+m) + sin(n-m))/2
+                plus["s"][: len(p)] += p
+                if ka == "c":
+                    minus["s"][lo : lo + len(q)] -= q
+                else:
+                    minus["s"][lo : lo + len(q)] += q
+        h = pa + pb + 2 * np.arange(la_max + lb_max - 1)
+        keep = h < top
+        out_c[h[keep]] += plus["c"][keep]
+        out_s[h[keep]] += plus["s"][keep]
+        j = pa - pb - 2 * (lb_max - 1) + 2 * np.arange(la_max + lb_max - 1)
+        pos, neg = j >= 0, j < 0
+        out_c[j[pos]] += minus["c"][pos]
+        out_c[-j[neg]] += minus["c"][neg]
+        out_s[j[pos]] += minus["s"][pos]
+        out_s[-j[neg]] -= minus["s"][neg]
+    out_s[0] = 0.0
+    return 0.5 * out_c, 0.5 * out_s
