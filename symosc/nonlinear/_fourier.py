@@ -200,6 +200,15 @@ class _Arith:
             acc = self.add(acc, self.mul(a, b))
         return acc
 
+    def symmetric_dot(self, pairs: list[tuple[Trig, Trig]], middle: tuple[Trig, Trig] | None) -> Trig:
+        """``2 * sum a * b`` over ``pairs`` plus ``middle[0] * middle[1]``: a Cauchy square ``sum_i a_i a_(m-i)``
+        with the equal pairs ``(i, m - i)``, ``(m - i, i)`` formed once."""
+        out = self.scale_int(self.dot(pairs), 2) if pairs else None
+        if middle is not None:
+            mid = self.mul(*middle)
+            out = mid if out is None else self.add(out, mid)
+        return out
+
     def lincomb(self, scalars: list[Any], series: list[Trig]) -> Trig:
         """``sum s * t`` over scalars and series (the Cauchy products with a scalar series)."""
         acc = self.scale(series[0], scalars[0])
@@ -300,8 +309,22 @@ class ExactArith(_Arith):
         return self._norm(Trig(a.cos * k, a.sin * k, a.den))
 
     def mul(self, a: Trig, b: Trig) -> Trig:
+        if _fmpz_poly():
+            return self.dot([(a, b)])
         c, s = self._products(a, b)
         return self._norm(Trig(c, s, 2 * a.den * b.den))
+
+    def symmetric_dot(self, pairs: list[tuple[Trig, Trig]], middle: tuple[Trig, Trig] | None) -> Trig:
+        """One FLINT sum with the doubled pairs weighted by 2 (the same reduced fractions as the generic form)."""
+        P = _fmpz_poly()
+        if not P:
+            return super().symmetric_dot(pairs, middle)
+        terms = pairs + ([middle] if middle is not None else [])
+        dens = [2 * a.den * b.den for a, b in terms]
+        den = math.lcm(*dens)
+        weights = [2] * len(pairs) + [1] * (middle is not None)
+        out_c, out_s = _flint_dot(P, terms, [den // d * w for d, w in zip(dens, weights, strict=True)])
+        return self._norm(Trig(out_c, out_s, den))
 
     def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
         """``sum a * b`` on one common denominator, reduced once (the same reduced fraction as adding products)."""

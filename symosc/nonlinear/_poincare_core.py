@@ -159,9 +159,8 @@ class _Tables:
         if a is not b or m == 0:
             return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
         # a square: the pairs (i, m - i) and (m - i, i) give the same product
-        ar = self.ar
-        half = ar.scale_int(ar.dot([(a[i], b[m - i]) for i in range((m + 1) // 2)]), 2)
-        return ar.add(half, ar.mul(a[m // 2], a[m // 2])) if m % 2 == 0 else half
+        pairs = [(a[i], b[m - i]) for i in range((m + 1) // 2)]
+        return self.ar.symmetric_dot(pairs, (a[m // 2], a[m // 2]) if m % 2 == 0 else None)
 
     def push(self, xm: Trig, vm: Trig) -> None:
         """Append the coefficients of order m = len(X[1]) given x_m and v_m."""
