@@ -1,9 +1,19 @@
-"""The old import path of :mod:`symosc.nonlinear.harmonic_linearization` (the same module object).
+"""The old import path of :mod:`symosc.nonlinear.harmonic_linearization`: every name is read from that module.
 
-Kept from before the project settled on American spelling; the module's British-spelled names warn once.
+Kept from before the project settled on American spelling; the British-spelled names warn once.
 """
 
-import importlib
-import sys
+from __future__ import annotations
 
-sys.modules[__name__] = importlib.import_module("symosc.nonlinear.harmonic_linearization")
+import importlib
+from typing import Any
+
+_MODULE = importlib.import_module("symosc.nonlinear.harmonic_linearization")
+
+
+def __getattr__(name: str) -> Any:
+    return getattr(_MODULE, name)
+
+
+def __dir__() -> list[str]:
+    return dir(_MODULE)
