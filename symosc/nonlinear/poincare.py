@@ -359,7 +359,8 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
         if isinstance(ar, FloatArith):
             acc = 0.0
         for i in range(1, k + 1):
-            acc = acc - ar.smul(raw.w[i], inv[k - i])
+            if raw.w[i]:  # (every odd coefficient vanishes for an odd nonlinearity)
+                acc = acc - ar.smul(raw.w[i], inv[k - i])
         inv.append(acc)
     harmonics = []
     amp = []
