@@ -6,6 +6,7 @@ The scaled problem ``y'' + y = eps g(y, w, eps)`` (generating amplitude 1) is so
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -79,6 +80,7 @@ def canonical_symbols(f: sp.Expr, gens: tuple[sp.Symbol, ...], eps: sp.Symbol) -
     return f.xreplace(ren) if ren else f
 
 
+@functools.lru_cache(maxsize=256)
 def _trig_power_coefficients(p: int, q: int) -> tuple[Fraction, Fraction]:
     """(cos tau, sin tau) Fourier coefficients of ``cos(tau)**p * (-sin(tau))**q`` (exact)."""
     ar = ExactArith()
@@ -108,6 +110,15 @@ def amplitude_functions(terms: dict[tuple, sp.Expr], A: sp.Symbol) -> tuple[sp.E
 
 def _positive_roots(H: sp.Expr, A: sp.Symbol) -> list[tuple[sp.Expr, int]]:
     """Positive real roots of the polynomial ``H`` with multiplicities (exact when the coefficients are rational)."""
+    return list(_positive_roots_cached(H, A))
+
+
+@functools.lru_cache(maxsize=256)
+def _positive_roots_cached(H: sp.Expr, A: sp.Symbol) -> tuple[tuple[sp.Expr, int], ...]:
+    return tuple(_find_positive_roots(H, A))
+
+
+def _find_positive_roots(H: sp.Expr, A: sp.Symbol) -> list[tuple[sp.Expr, int]]:
     poly = sp.Poly(H, A)
     out: list[tuple[sp.Expr, int]] = []
     if poly.is_zero:
