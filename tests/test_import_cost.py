@@ -47,3 +47,35 @@ def test_the_parser_sees_a_scipy_import():
     """The check above can fail: a module that does import SciPy is reported."""
     names = imported_modules("import symosc.periodic; symosc.periodic.mathieu_a(3, 2.5)")
     assert "scipy.special" in names
+
+
+def loaded_modules(statement: str) -> set[str]:
+    """``sys.modules`` after ``statement`` in a fresh interpreter (also modules loaded by importlib)."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    code = f"{statement}; import sys; print(' '.join(sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True).stdout
+    return set(out.split())
+
+
+def test_nonlinear_loads_its_modules_on_first_use():
+    """``import symosc.nonlinear`` loads none of its modules; ``limit_cycle`` loads the series modules only."""
+    bare = {n for n in loaded_modules("import symosc.nonlinear") if n.startswith("symosc.nonlinear.")}
+    assert bare == set()
+    used = {n for n in loaded_modules("import symosc.nonlinear as nl; nl.limit_cycle") if n.startswith("symosc.")}
+    assert "symosc.nonlinear.poincare" in used
+    assert not used & {
+        "symosc.nonlinear.delay",
+        "symosc.nonlinear.averaging",
+        "symosc.nonlinear.harmonic_linearization",
+    }
+
+
+def test_nonlinear_public_names_are_the_functions_after_submodule_imports():
+    """Importing a module named like its function (``lindstedt``) does not replace the function on the package."""
+    code = (
+        "import symosc.nonlinear.lindstedt, symosc.nonlinear.harmonic_linearization, symosc.nonlinear as nl, "
+        "inspect; assert inspect.isfunction(nl.lindstedt) and inspect.isfunction(nl.harmonic_linearization); "
+        "assert nl.limit_cycle.__symosc_guarded__"
+    )
+    env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    subprocess.run([sys.executable, "-c", code], check=True, env=env)

@@ -12,15 +12,16 @@ Arithmetic modes (:class:`_Arith` subclasses):
            multiplication when python-flint is installed (``pip install symosc[exact]``), else on
            :func:`numpy.convolve` -- the same integers either way.  A Cauchy sum is accumulated on one common
            denominator and reduced once; series with only odd (or only even) harmonics are multiplied as
-           polynomials in ``z**2`` (half the length);
+           polynomials in ``z**2`` (half the length), and a pair of pure cosine or sine series takes two products
+           (the ``n + m`` and ``n - m`` terms) instead of six;
 ``fixed``  numerators are Python ``int`` with the implicit denominator ``2**prec`` (the mpmath option: binary
            fixed point, converted to ``mpmath.mpf`` on output); a Cauchy sum is formed exactly and rounded once;
-``float``  float64 arrays; the Cauchy sums ``sum_i a_i * b_(m-i)`` are formed on a sampling grid (one batched real
-           FFT per side, products summed pointwise, one FFT back) and the coefficients that vanish by symmetry
-           (odd/even harmonics, cosine/sine parts) are set to exact zeros.  The FFT's rounding error is relative to
-           the largest coefficient, so the small high-order coefficients are less accurate than with direct
-           convolution (van der Pol, order 100: 1e-11 relative up to order 20, ~1e-5 at the last orders, against
-           ~1e-12 and ~1e-6 before); use ``mpmath`` arithmetic for accurate high-order coefficients;
+``float``  float64 arrays; the Cauchy sums ``sum_i a_i * b_(m-i)`` are formed by direct convolution, on the
+           half-length arrays when each factor is a pure cosine or sine series with odd-only or even-only
+           harmonics, so every coefficient is a plain sum of products and small high-harmonic coefficients keep
+           their relative accuracy (van der Pol: coefficient errors relative to the neighbouring coefficients'
+           size ~1e-13 at order 20, ~1e-7 at order 100, ~1e-6 at order 120, growing with the order through the
+           recurrence itself); use ``mpmath`` arithmetic for accurate high-order coefficients;
 ``ring``   elements of a SymPy polynomial ring over QQ (symbolic parameters such as the amplitude ``A``).
 """
 
@@ -36,7 +37,8 @@ import numpy as np
 
 from ._fourier_products import (
     _flint_dot,
-    _float_kind,
+    _flint_lincomb,
+    _float_direct_dot,
     _int_products_flint,
     _object_array,
 )
@@ -198,6 +200,15 @@ class _Arith:
             acc = self.add(acc, self.mul(a, b))
         return acc
 
+    def symmetric_dot(self, pairs: list[tuple[Trig, Trig]], middle: tuple[Trig, Trig] | None) -> Trig:
+        """``2 * sum a * b`` over ``pairs`` plus ``middle[0] * middle[1]``: a Cauchy square ``sum_i a_i a_(m-i)``
+        with the equal pairs ``(i, m - i)``, ``(m - i, i)`` formed once."""
+        out = self.scale_int(self.dot(pairs), 2) if pairs else None
+        if middle is not None:
+            mid = self.mul(*middle)
+            out = mid if out is None else self.add(out, mid)
+        return out
+
     def lincomb(self, scalars: list[Any], series: list[Trig]) -> Trig:
         """``sum s * t`` over scalars and series (the Cauchy products with a scalar series)."""
         acc = self.scale(series[0], scalars[0])
@@ -218,6 +229,13 @@ class _Arith:
     def add_coeff(self, t: Trig, kind: str, n: int, value: Any) -> Trig:
         """Return ``t + value * cos(n tau)`` (kind "c") or ``... sin(n tau)`` (kind "s")."""
         return self.add(t, self.monomial(kind, n, value))
+
+    def sine_moment(self, t: Trig, start: int = 2) -> Any:
+        """``sum n * b_n`` over the sine coefficients from harmonic ``start`` on (``d/dtau`` of them at 0)."""
+        acc = self.scalar(0)
+        for n in range(start, len(t.cos)):
+            acc = acc + self.smul(self.scalar(n), self.coeff(t, "s", n))
+        return acc
 
     def values(self, t: Trig) -> tuple[list, list]:
         """Coefficient lists (user-facing numbers)."""
@@ -291,8 +309,22 @@ class ExactArith(_Arith):
         return self._norm(Trig(a.cos * k, a.sin * k, a.den))
 
     def mul(self, a: Trig, b: Trig) -> Trig:
+        if _fmpz_poly():
+            return self.dot([(a, b)])
         c, s = self._products(a, b)
         return self._norm(Trig(c, s, 2 * a.den * b.den))
+
+    def symmetric_dot(self, pairs: list[tuple[Trig, Trig]], middle: tuple[Trig, Trig] | None) -> Trig:
+        """One FLINT sum with the doubled pairs weighted by 2 (the same reduced fractions as the generic form)."""
+        P = _fmpz_poly()
+        if not P:
+            return super().symmetric_dot(pairs, middle)
+        terms = pairs + ([middle] if middle is not None else [])
+        dens = [2 * a.den * b.den for a, b in terms]
+        den = math.lcm(*dens)
+        weights = [2] * len(pairs) + [1] * (middle is not None)
+        out_c, out_s = _flint_dot(P, terms, [den // d * w for d, w in zip(dens, weights, strict=True)])
+        return self._norm(Trig(out_c, out_s, den))
 
     def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
         """``sum a * b`` on one common denominator, reduced once (the same reduced fraction as adding products)."""
@@ -306,10 +338,16 @@ class ExactArith(_Arith):
 
     def lincomb(self, scalars: list[Fraction], series: list[Trig]) -> Trig:
         """``sum s * t`` on one common denominator, reduced once."""
-        scalars = [Fraction(c) for c in scalars]
-        dens = [c.denominator * t.den for c, t in zip(scalars, series, strict=True)]
-        den = math.lcm(*dens)
         n = max(len(t.cos) for t in series)
+        terms = [(Fraction(c), t) for c, t in zip(scalars, series, strict=True) if c]
+        if not terms:  # zero terms do not change the reduced result
+            return Trig(np.zeros(n, dtype=object), np.zeros(n, dtype=object), 1)
+        scalars, series = [c for c, _ in terms], [t for _, t in terms]
+        dens = [c.denominator * t.den for c, t in terms]
+        den = math.lcm(*dens)
+        P = _fmpz_poly()
+        if P:
+            return self._norm(Trig(*_flint_lincomb(P, scalars, series, [den // d for d in dens], n), den))
         out_c = np.zeros(n, dtype=object)
         out_s = np.zeros(n, dtype=object)
         for c, t, d in zip(scalars, series, dens, strict=True):
@@ -347,6 +385,11 @@ class ExactArith(_Arith):
     def coeff(self, t: Trig, kind: str, n: int) -> Fraction:
         arr = t.cos if kind == "c" else t.sin
         return Fraction(int(arr[n]), t.den) if n < len(arr) else Fraction(0)
+
+    def sine_moment(self, t: Trig, start: int = 2) -> Fraction:
+        """``sum n * b_n`` (n >= start) summed on the integer numerators, reduced once."""
+        sin = t.sin.tolist()
+        return Fraction(sum(n * int(sin[n]) for n in range(start, len(sin))), t.den)
 
     def _set(self, t: Trig, kind: str, n: int, value: Fraction) -> None:
         value = Fraction(value)
@@ -434,6 +477,11 @@ class FixedArith(_Arith):
         arr = t.cos if kind == "c" else t.sin
         return int(arr[n]) if n < len(arr) else 0
 
+    def sine_moment(self, t: Trig, start: int = 2) -> int:
+        """``sum n * b_n`` (n >= start): integer weights, so the fixed-point sum is exact."""
+        sin = t.sin.tolist()
+        return sum(n * int(sin[n]) for n in range(start, len(sin)))
+
     def _set(self, t: Trig, kind: str, n: int, value: int) -> None:
         (t.cos if kind == "c" else t.sin)[n] = value
 
@@ -466,36 +514,9 @@ class FloatArith(_Arith):
         return Trig(0.5 * c, 0.5 * s, 1)
 
     def dot(self, pairs: list[tuple[Trig, Trig]]) -> Trig:
-        """``sum a * b`` by sampling: one batched real FFT per side, products summed on the grid, one FFT back."""
-        na = max(len(a.cos) for a, _ in pairs)
-        nb = max(len(b.cos) for _, b in pairs)
-        top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)
-        size = 1 << (2 * top).bit_length()  # more grid points than twice the highest harmonic: no aliasing
-        k = len(pairs)
-        ya = np.zeros((k, na), dtype=complex)
-        yb = np.zeros((k, nb), dtype=complex)
-        for i, (a, b) in enumerate(pairs):
-            ya[i, : len(a.cos)] = a.cos - 1j * a.sin
-            yb[i, : len(b.cos)] = b.cos - 1j * b.sin
-        ya[:, 1:] *= 0.5
-        yb[:, 1:] *= 0.5
-        grid = np.einsum("ij,ij->j", np.fft.irfft(ya, size, axis=1), np.fft.irfft(yb, size, axis=1))
-        spec = np.fft.rfft(grid)[:top] * size
-        c = spec.real
-        c[1:] *= 2.0
-        s = -2.0 * spec.imag
-        s[0] = 0.0
-        # coefficients that vanish by symmetry are set to exact zeros (no rounding noise from the transform)
-        kinds = {_float_kind(a, b) for a, b in pairs} - {"0"}
-        if len(kinds) == 1:
-            kind, parity = kinds.pop()
-            if kind == "c":
-                s[:] = 0.0
-            elif kind == "s":
-                c[:] = 0.0
-            if parity is not None:
-                c[1 - parity :: 2] = 0.0
-                s[1 - parity :: 2] = 0.0
+        """``sum a * b`` by direct convolution: every coefficient is a sum of products, so small (high harmonic)
+        coefficients keep their relative accuracy (a transform would spread the rounding error of the largest)."""
+        c, s = _float_direct_dot(pairs, self._products)
         return Trig(c, s, 1)
 
     def solve_forced(self, r: Trig) -> Trig:

@@ -86,17 +86,71 @@ def _reversed_polys(P: Any, t: Trig, n: int, parity: int | None = None) -> tuple
     cache = t.polys if t.polys is not None else {}
     key = ("r", n, parity)
     if key not in cache:
-        shift = n - (len(t.cos) - 1)
-        pad = [0] * shift
-        rc, rs = pad + t.cos[::-1].tolist(), pad + t.sin[::-1].tolist()
-        if parity is not None:
-            lo = (n - parity) % 2
-            rc, rs = rc[lo::2], rs[lo::2]
-        rc, rs = P(rc), P(rs)
-        c, s, _ = _forward_polys(P, t, parity)
-        cache[key] = (rc, rs, rc - rs, c, s, c + s)
+        rc, rs, rd = _reversed_base(P, t, parity)
+        shift = _reversal_shift(t, n, parity)
+        if shift:
+            rc, rs, rd = rc.left_shift(shift), rs.left_shift(shift), rd.left_shift(shift)
+        cache[key] = (rc, rs, rd, *_forward_polys(P, t, parity))
         t.polys = cache
     return cache[key]
+
+
+def _reversed_base(P: Any, t: Trig, parity: int | None) -> tuple:
+    """Reversed (cos, sin, cos - sin) numerators of ``t`` at its own length (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    key = ("r0", parity)
+    if key not in cache:
+        rc, rs = t.cos[::-1].tolist(), t.sin[::-1].tolist()
+        if parity is not None:
+            lo = (len(t.cos) - 1 - parity) % 2
+            rc, rs = rc[lo::2], rs[lo::2]
+        rc, rs = P(rc), P(rs)
+        cache[key] = (rc, rs, rc - rs)
+        t.polys = cache
+    return cache[key]
+
+
+def _reversal_shift(t: Trig, n: int, parity: int | None) -> int:
+    """Power of ``z`` (of ``z**2`` with ``parity``) that moves the reversal of ``t`` to degree ``n``."""
+    own = len(t.cos) - 1
+    if parity is None:
+        return n - own
+    return ((n - (n - parity) % 2) - (own - (own - parity) % 2)) // 2
+
+
+def _pure_plan(P: Any, t: Trig, parity: int | None) -> tuple | None:
+    """For a pure cosine or sine series: (kind, forward poly, reversed poly, reference degree), else None.
+
+    The reversed polynomial is taken at ``t``'s own length; the reference degree (``own`` rounded down to the
+    parity) tells by how much a product with it must be shifted to stand for the reversal at another length.
+    """
+    cache = t.polys if t.polys is not None else {}
+    key = ("plan", parity)
+    if key not in cache:
+        kind = _kind(t)
+        if kind is None:
+            cache[key] = None
+        else:
+            i = 0 if kind == "c" else 1
+            own = len(t.cos) - 1
+            ref = own if parity is None else own - (own - parity) % 2
+            cache[key] = (kind, _forward_polys(P, t, parity)[i], _reversed_base(P, t, parity)[i], ref)
+        t.polys = cache
+    return cache[key]
+
+
+def _kind(t: Trig) -> str | None:
+    """ "c" when the sine numerators all vanish, "s" when the cosine ones do, None otherwise (cached on ``t``)."""
+    cache = t.polys if t.polys is not None else {}
+    if "k" not in cache:
+        if not any(t.sin.tolist()):
+            cache["k"] = "c"
+        elif not any(t.cos.tolist()):
+            cache["k"] = "s"
+        else:
+            cache["k"] = None
+        t.polys = cache
+    return cache["k"]
 
 
 def _spread(p: Any, offset: int, n: int) -> np.ndarray:
@@ -125,7 +179,26 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
     else:
         pa = pb = None
         offsets = None
+    ref_b = nb if pb is None else nb - (nb - pb) % 2
+    step = 1 if pb is None else 2
     for (a, b), f in zip(pairs, factors, strict=True):
+        plan_a, plan_b = _pure_plan(P, a, pa), _pure_plan(P, b, pb)
+        if plan_a is not None and plan_b is not None:
+            # one part of each factor vanishes: two products (n + m and n - m) instead of six
+            ka, x, _, _ = plan_a
+            kb, y, ry, ref = plan_b
+            if f != 1:
+                x = x * f
+            plus, minus = x * y, x * ry
+            if ref != ref_b:
+                minus = minus.left_shift((ref_b - ref) // step)
+            if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
+                acc[0] = acc[0] + plus if ka == "c" else acc[0] - plus
+                acc[2] += minus
+            else:  # cos sin = (sin(n+m) - sin(n-m))/2, sin cos = (sin(n+m) + sin(n-m))/2
+                acc[1] += plus
+                acc[3] = acc[3] - minus if ka == "c" else acc[3] + minus
+            continue
         a_c, a_s, a_sum = _forward_polys(P, a, pa)
         r_c, r_s, r_diff, b_c, b_s, b_sum = _reversed_polys(P, b, nb, pb)
         p1, p2, p3 = a_c * b_c, a_s * b_s, a_sum * b_sum
@@ -148,6 +221,24 @@ def _flint_dot(P: Any, pairs: list[tuple[Trig, Trig]], factors: list[int]) -> tu
     _fold_differences(out_c, out_s, dc, ds, na, nb)
     top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)  # as long as the longest single product
     return out_c[:top].copy(), out_s[:top].copy()
+
+
+def _flint_lincomb(P: Any, scalars: list, series: list[Trig], factors: list[int], n: int) -> tuple:
+    """Numerators of ``sum s * t`` (Fraction ``s``; ``factors`` bring each term to the common denominator).
+
+    Summed as FLINT polynomials (in ``z**2`` when every term has only odd or only even harmonics).
+    """
+    used = [(c.numerator * f, t) for c, t, f in zip(scalars, series, factors, strict=True) if c.numerator != 0]
+    parities = {_parity(t) for _, t in used}
+    parity = parities.pop() if len(parities) == 1 else None
+    acc_c = acc_s = P(0)
+    for f, t in used:
+        c, s, _ = _forward_polys(P, t, parity)
+        acc_c += c * f
+        acc_s += s * f
+    if parity is None:
+        return _object_array(_int_list(acc_c, n)), _object_array(_int_list(acc_s, n))
+    return _spread(acc_c, parity, n), _spread(acc_s, parity, n)
 
 
 def _fold_differences(out_c, out_s, dc, ds, na: int, nb: int) -> None:
@@ -181,12 +272,62 @@ def _float_structure(t: Trig) -> Any:
     return cache["fs"]
 
 
-def _float_kind(a: Trig, b: Trig) -> Any:
-    """Which coefficients of ``a * b`` can be nonzero: (kind, parity) as in :func:`_float_structure`, or "0"."""
-    sa, sb = _float_structure(a), _float_structure(b)
-    if sa == "0" or sb == "0":
-        return "0"
-    (ka, pa), (kb, pb) = sa, sb
-    kind = None if ka is None or kb is None else ("c" if ka == kb else "s")
-    parity = None if pa is None or pb is None else (pa + pb) % 2
-    return kind, parity
+def _float_direct_dot(pairs: list[tuple[Trig, Trig]], products: Any) -> tuple[np.ndarray, np.ndarray]:
+    """``sum a * b`` of float series by direct convolution (each coefficient a plain sum of products).
+
+    Pairs of pure cosine/sine series with odd-only or even-only harmonics (the usual case for odd nonlinearities)
+    take two :func:`numpy.convolve` calls on the half-length arrays: the ``n + m`` terms, and the ``n - m`` terms
+    from the reversed second factor.  Other pairs go through ``products(a, b)`` (twice the product, all terms).
+    """
+    top = max(len(a.cos) + len(b.cos) - 1 for a, b in pairs)
+    out_c = np.zeros(top)
+    out_s = np.zeros(top)
+    structured = []
+    for a, b in pairs:
+        sa, sb = _float_structure(a), _float_structure(b)
+        if sa == "0" or sb == "0":
+            continue
+        if sa[0] is None or sb[0] is None or sa[1] is None or sb[1] is None:
+            c, s = products(a, b)
+            out_c[: len(c)] += c
+            out_s[: len(s)] += s
+            continue
+        structured.append((a, b, sa, sb))
+    groups: dict[tuple[int, int], list] = {}
+    for a, b, sa, sb in structured:
+        groups.setdefault((sa[1], sb[1]), []).append((a, b, sa[0], sb[0]))
+    for (pa, pb), group in groups.items():
+        lb_max = max((len(b.cos) - 1 - pb) // 2 + 1 for _, b, _, _ in group)
+        la_max = max((len(a.cos) - 1 - pa) // 2 + 1 for a, _, _, _ in group)
+        plus = {"c": np.zeros(la_max + lb_max - 1), "s": np.zeros(la_max + lb_max - 1)}
+        minus = {"c": np.zeros(la_max + lb_max - 1), "s": np.zeros(la_max + lb_max - 1)}
+        for a, b, ka, kb in group:
+            x = (a.cos if ka == "c" else a.sin)[pa::2]
+            y = (b.cos if kb == "c" else b.sin)[pb::2]
+            p = np.convolve(x, y)
+            q = np.convolve(x, y[::-1])
+            lo = lb_max - len(y)  # q[s] is the harmonic difference pa - pb - 2 (len(y) - 1) + 2 s
+            if ka == kb:  # cos cos = (cos(n+m) + cos(n-m))/2, sin sin = (cos(n-m) - cos(n+m))/2
+                if ka == "c":
+                    plus["c"][: len(p)] += p
+                else:
+                    plus["c"][: len(p)] -= p
+                minus["c"][lo : lo + len(q)] += q
+            else:  # cos sin = (sin(n+m) - sin(n-m))/2, sin cos = (sin(n+m) + sin(n-m))/2
+                plus["s"][: len(p)] += p
+                if ka == "c":
+                    minus["s"][lo : lo + len(q)] -= q
+                else:
+                    minus["s"][lo : lo + len(q)] += q
+        h = pa + pb + 2 * np.arange(la_max + lb_max - 1)
+        keep = h < top
+        out_c[h[keep]] += plus["c"][keep]
+        out_s[h[keep]] += plus["s"][keep]
+        j = pa - pb - 2 * (lb_max - 1) + 2 * np.arange(la_max + lb_max - 1)
+        pos, neg = j >= 0, j < 0
+        out_c[j[pos]] += minus["c"][pos]
+        out_c[-j[neg]] += minus["c"][neg]
+        out_s[j[pos]] += minus["s"][pos]
+        out_s[-j[neg]] -= minus["s"][neg]
+    out_s[0] = 0.0
+    return 0.5 * out_c, 0.5 * out_s

@@ -6,6 +6,7 @@ The scaled problem ``y'' + y = eps g(y, w, eps)`` (generating amplitude 1) is so
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -79,6 +80,7 @@ def canonical_symbols(f: sp.Expr, gens: tuple[sp.Symbol, ...], eps: sp.Symbol) -
     return f.xreplace(ren) if ren else f
 
 
+@functools.lru_cache(maxsize=256)
 def _trig_power_coefficients(p: int, q: int) -> tuple[Fraction, Fraction]:
     """(cos tau, sin tau) Fourier coefficients of ``cos(tau)**p * (-sin(tau))**q`` (exact)."""
     ar = ExactArith()
@@ -108,6 +110,15 @@ def amplitude_functions(terms: dict[tuple, sp.Expr], A: sp.Symbol) -> tuple[sp.E
 
 def _positive_roots(H: sp.Expr, A: sp.Symbol) -> list[tuple[sp.Expr, int]]:
     """Positive real roots of the polynomial ``H`` with multiplicities (exact when the coefficients are rational)."""
+    return list(_positive_roots_cached(H, A))
+
+
+@functools.lru_cache(maxsize=256)
+def _positive_roots_cached(H: sp.Expr, A: sp.Symbol) -> tuple[tuple[sp.Expr, int], ...]:
+    return tuple(_find_positive_roots(H, A))
+
+
+def _find_positive_roots(H: sp.Expr, A: sp.Symbol) -> list[tuple[sp.Expr, int]]:
     poly = sp.Poly(H, A)
     out: list[tuple[sp.Expr, int]] = []
     if poly.is_zero:
@@ -159,9 +170,8 @@ class _Tables:
         if a is not b or m == 0:
             return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
         # a square: the pairs (i, m - i) and (m - i, i) give the same product
-        ar = self.ar
-        half = ar.scale_int(ar.dot([(a[i], b[m - i]) for i in range((m + 1) // 2)]), 2)
-        return ar.add(half, ar.mul(a[m // 2], a[m // 2])) if m % 2 == 0 else half
+        pairs = [(a[i], b[m - i]) for i in range((m + 1) // 2)]
+        return self.ar.symmetric_dot(pairs, (a[m // 2], a[m // 2]) if m % 2 == 0 else None)
 
     def push(self, xm: Trig, vm: Trig) -> None:
         """Append the coefficients of order m = len(X[1]) given x_m and v_m."""
@@ -260,23 +270,26 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
         else:
             a = _neg(ar, ar.sdiv(ar.coeff(R, "s", 1), ar.coeff(L, "s", 1)))
             sk = _neg(ar, _sadd(ar, ar.coeff(R, "c", 1), ar.smul(a, ar.coeff(L, "c", 1))))
-            x[m] = ar.add_coeff(x[m], "c", 1, a)
-            tables.correct(m, a, var)
-            R = ar.add(R, ar.scale(L, a))
+            if not ar.is_zero(a):  # (zero for every other order of an odd nonlinearity)
+                x[m] = ar.add_coeff(x[m], "c", 1, a)
+                tables.correct(m, a, var)
+                R = ar.add(R, ar.scale(L, a))
         R = ar.add_coeff(R, "c", 1, sk)
         s.append(sk)
-        acc = sk
-        for i in range(1, k):
-            acc = _sadd(ar, acc, _neg(ar, ar.smul(w[i], w[k - i])))
+        # omega = sqrt(omega**2): 2 w_k = s_k - sum_{i=1}^{k-1} w_i w_{k-i} (each product once, doubled)
+        cross = ar.scalar(0)
+        for i in range(1, (k + 1) // 2):
+            cross = _sadd(ar, cross, ar.smul(w[i], w[k - i]))
+        cross = _sadd(ar, cross, cross)
+        if k % 2 == 0 and k > 0:
+            cross = _sadd(ar, cross, ar.smul(w[k // 2], w[k // 2]))
+        acc = _sadd(ar, sk, _neg(ar, cross))
         w.append(ar.sdiv(acc, ar.scalar(2)))
         if k == order + 1:
             break
         xk = ar.solve_forced(R)
         # phase condition x_k'(0) = 0: sum_n n b_n + D = 0
-        D = ar.scalar(0)
-        for n in range(2, len(xk.cos)):
-            D = _sadd(ar, D, ar.smul(ar.scalar(n), ar.coeff(xk, "s", n)))
-        xk = ar.add_coeff(xk, "s", 1, _neg(ar, D))
+        xk = ar.add_coeff(xk, "s", 1, _neg(ar, ar.sine_moment(xk, 2)))
         x.append(xk)
     lam = []
     for mm in range(order + 1):

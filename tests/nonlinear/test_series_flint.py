@@ -81,24 +81,66 @@ def _random_trig(rng, n, parity=None, kind=None):
     return _fourier.Trig(c, s, 1)
 
 
-@pytest.mark.parametrize(("parity", "kind"), [(None, None), (1, "c"), (0, None)])
-def test_float_fft_dot_matches_direct_convolution(parity, kind):
+@pytest.mark.parametrize(("parity", "kind"), [(None, None), (1, "c"), (0, None), (1, "s"), (0, "c")])
+def test_float_dot_matches_per_pair_convolution(parity, kind):
     import numpy as np
 
     rng = np.random.default_rng(7)
     ar = _fourier.FloatArith()
+    # mixed kinds in one sum (cos x sin, sin x sin, ...) as in the van der Pol tables
     pairs = [
-        (_random_trig(rng, 5 + 3 * i, parity, kind), _random_trig(rng, 40 - 2 * i, parity, kind)) for i in range(12)
+        (_random_trig(rng, 5 + 3 * i, parity, kind), _random_trig(rng, 40 - 2 * i, parity, "c" if i % 2 else kind))
+        for i in range(12)
     ]
     fast = ar.dot(pairs)
-    direct = _fourier._Arith.dot(ar, pairs)  # numpy.convolve on each pair
+    direct = _fourier._Arith.dot(ar, pairs)  # numpy.convolve on each pair, all eight products
     assert len(fast.cos) == len(direct.cos)
     assert np.allclose(fast.cos, direct.cos, rtol=0, atol=1e-12)
     assert np.allclose(fast.sin, direct.sin, rtol=0, atol=1e-12)
     if parity is not None:  # products of equal parity: odd harmonics vanish exactly, not up to rounding noise
         assert not np.any(fast.cos[1::2]) and not np.any(fast.sin[1::2])
-    if kind == "c":
-        assert not np.any(fast.sin)
+
+
+def test_float_dot_keeps_small_high_harmonics_accurate():
+    """Geometrically decaying coefficients (as in the series): every product coefficient to 1e-13 relative."""
+    from fractions import Fraction
+
+    import numpy as np
+
+    n = 60
+    ar, ex = _fourier.FloatArith(), _fourier.ExactArith()
+    pairs_f, pairs_x = [], []
+    for i in range(8):
+        # odd harmonics, cos-only / sin-only alternating, size 10**(-k/3): 20 decades across the series
+        vals = [
+            [Fraction(((-1) ** (k + i) * (k + 1 + i)), 10 ** (k // 3)) if k % 2 else Fraction(0) for k in range(n)]
+            for _ in range(2)
+        ]
+        a_cos, b_sin = vals
+        zero = [Fraction(0)] * n
+        for (fc, fs), dst in (((a_cos, zero), "a"), ((zero, b_sin), "b")):
+            tf = _fourier.Trig(np.array([float(v) for v in fc]), np.array([float(v) for v in fs]), 1)
+            den = 10 ** (n // 3)
+            tx = _fourier.Trig(
+                _fourier._object_array([int(v * den) for v in fc]),
+                _fourier._object_array([int(v * den) for v in fs]),
+                den,
+            )
+            if dst == "a":
+                af, ax = tf, tx
+            else:
+                bf, bx = tf, tx
+        pairs_f.append((af, bf))
+        pairs_x.append((ax, bx))
+    got = ar.dot(pairs_f)
+    ref = ex.dot(pairs_x)
+    for kind, arr in (("c", got.cos), ("s", got.sin)):
+        for h in range(len(arr)):
+            exact = ex.coeff(ref, kind, h)
+            if exact == 0:
+                assert arr[h] == 0.0
+            else:
+                assert abs(Fraction(float(arr[h])) - exact) <= Fraction(1, 10**13) * abs(exact)
 
 
 def test_fixed_point_dot_is_the_exact_sum_rounded_once():
@@ -128,3 +170,38 @@ def test_fixed_point_dot_is_the_exact_sum_rounded_once():
         for n in range(len(got.cos)):
             value = exact.coeff(ref, kind, n) * (1 << prec)
             assert abs(fixed.coeff(got, kind, n) - value) <= R(1, 2)
+
+
+def test_exact_order_48_against_50_digit_fixed_point_series():
+    """The exact rationals against the series computed in 50-digit binary fixed point (rounded arithmetic)."""
+    f = (1 - x**2) * v
+    ex = limit_cycle(f, 48)
+    mp = limit_cycle(f, 48, arithmetic="mpmath", dps=50)
+    for s_ex, s_mp in [(ex.frequency, mp.frequency), (ex.amplitude, mp.amplitude), (ex.period, mp.period)]:
+        assert len(s_ex.coefficients) == 49
+        for a, b in zip(s_ex.coefficients, s_mp.coefficients, strict=True):
+            assert abs(sp.N(a, 60) - sp.N(b, 60)) <= sp.Float("1e-40", 60) * abs(sp.N(a, 60)) + sp.Float("1e-80", 60)
+
+
+def _envelope_errors(ref, got):
+    """|got_k - ref_k| relative to the largest |ref_j|, |j - k| <= 4 (coefficients near a sign change are small)."""
+    return [
+        abs(float(g) - float(r)) / max(abs(float(c)) for c in ref[max(0, k - 4) : k + 5])
+        for k, (r, g) in enumerate(zip(ref, got, strict=True))
+    ]
+
+
+def test_float_series_accuracy_to_order_120():
+    """Float coefficients against the 30-digit fixed-point series, orders 1..120 (van der Pol).
+
+    Stated accuracy (relative to the size of the neighbouring coefficients): 1e-10 to order 40, 3e-7 to order 100,
+    2e-5 to order 120.  A transform-based product loses the small high harmonics (about 1e-6 at order 100).
+    """
+    f = (1 - x**2) * v
+    fl = limit_cycle(f, 120, arithmetic="float")
+    mp = limit_cycle(f, 120, arithmetic="mpmath", dps=30)
+    for name in ("frequency", "amplitude"):
+        err = _envelope_errors(getattr(mp, name).coefficients, getattr(fl, name).coefficients)
+        assert max(err[:41]) <= 1e-10, name
+        assert max(err[:101]) <= 3e-7, name
+        assert max(err) <= 2e-5, name
