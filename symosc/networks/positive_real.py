@@ -21,6 +21,7 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
+from ..operational._rational import exactify
 from ..operational.integral_square import _hurwitz_verdict
 from ._util import P, as_expr, as_symbol, rational_function
 
@@ -141,7 +142,7 @@ def positive_real_report(Z: Any, p: sp.Symbol = P) -> PositiveRealReport:
     is_positive_real, real_part_on_axis
     """
     p = as_symbol(p)
-    N, D = rational_function(Z, p)
+    N, D = rational_function(exactify(Z), p)  # floats taken at their exact binary values: Sturm counts stay exact
     free = (N.free_symbols | D.free_symbols) - {p}
     if free:
         raise ParameterError(f"Z must have numeric coefficients for the positive-real test; free symbols: {free}")

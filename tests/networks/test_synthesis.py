@@ -177,6 +177,18 @@ def test_positive_real_reports_name_the_failed_condition():
     assert vals.min() < 0
 
 
+def test_float_coefficients_are_tested_at_their_exact_values():
+    """Floats enter the Sturm counts as the rationals they equal (an inexact RR-domain count once gave IndexError).
+
+    Reference: Re Z(iω) of (a p² + b p + c)/(p² + d p + e) on a dense grid in NumPy."""
+    cases = [(1.5, 0.1, 2.0, 0.3, 1.0), (1.0, 2.0, 1.5, 0.1, 3.0), (1.0, 2.0, 1.5, 0.5, 1.0), (0.1, 0.7, 0.3, 0.2, 0.9)]
+    for a, b, c, d, e in cases:
+        w = np.linspace(0.0, 20.0, 200001)
+        s = 1j * w
+        re = ((a * s**2 + b * s + c) / (s**2 + d * s + e)).real
+        assert is_positive_real((a * p**2 + b * p + c) / (p**2 + d * p + e), p) == bool(re.min() >= 0)
+
+
 def test_non_positive_real_target_is_rejected():
     with pytest.raises(ParameterError, match=r"not positive real .*right half-plane"):
         brune_synthesis((p + 1) / (p - 1), p)
