@@ -233,20 +233,13 @@ def poincare_second_approximation(
     """
     from scipy.optimize import brentq
 
-    if not isinstance(D, sp.Symbol):
-        raise ParameterError(f"D must be a Symbol, got {type(D).__name__}")
-    try:
-        f = sp.Matrix(fD)
-    except (TypeError, ValueError, sp.SympifyError) as exc:
-        raise ParameterError(f"fD must be a square SymPy matrix, got {type(fD).__name__}") from exc
+    from ._normal_form_support import _operator
+
+    f = _operator(fD, D)
     n = f.shape[0]
-    if n == 0 or f.shape != (n, n):
-        raise ParameterError(f"fD must be square and non-empty, got shape {f.shape}")
     ys, dys = tuple(y), tuple(dy)
     if len(psi) != n or len(ys) != n or len(dys) != n:
         raise ParameterError(f"psi, y and dy must each have {n} entries (the size of fD)")
-    if f.free_symbols - {D}:
-        raise ParameterError(f"fD must be numeric apart from {D}; substitute {sorted(map(str, f.free_symbols - {D}))}")
     Amax = check_positive("A_max", A_max)
     H = check_int("n_harmonics", n_harmonics, minimum=4, maximum=1024)
     psis = [sp.sympify(e) for e in psi]
