@@ -219,3 +219,21 @@ def test_bott_duffin_transformerless(Z):
     net = bott_duffin_synthesis(Z, p)
     _check(net, Z)
     assert not any(isinstance(e, BruneSection) for e in net.elements())
+
+
+@SETTINGS
+@given(pos, pos, pos, pos)
+def test_first_degree_realizations_have_the_book_elements(a0, a1, b0, b1):
+    """Bulgakov (1954), §9.25, 1°: Z = (a0 p + a1)/(b0 p + b1) is R1 + (R2 | L) with R1 = a1/b1,
+    R2 = (a0 b1 - a1 b0)/(b0 b1), L = (a0 b1 - a1 b0)/b1² when a0 b1 - a1 b0 > 0 (9.292), and R1 + (R2 | C) with
+    R1 = a0/b0, C = b0²/(a1 b0 - a0 b1), R2 = (a1 b0 - a0 b1)/(b0 b1) otherwise (9.297); the element formulas are the
+    book's, written out here, and the synthesis must find exactly these three elements."""
+    d = a0 * b1 - a1 * b0
+    net = brune_synthesis((a0 * p + a1) / (b0 * p + b1), p)
+    if d == 0:
+        expected = [Resistor(a0 / b0)]
+    elif d > 0:
+        expected = [Resistor(a1 / b1), Resistor(d / (b0 * b1)), Inductor(d / b1**2)]
+    else:
+        expected = [Resistor(a0 / b0), Resistor(-d / (b0 * b1)), Capacitor(b0**2 / -d)]
+    assert sorted(map(str, net.elements())) == sorted(map(str, expected))
