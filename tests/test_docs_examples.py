@@ -8,7 +8,8 @@ A reader copies the examples of a page into a fresh session, in order. So, for e
 * nothing that looks like a runnable example escapes both: a ``>>>`` line outside a fenced block, or a fenced block
   tagged as Python in another spelling, fails the page.
 
-Figures are drawn on the Agg canvas and closed; files an example writes go to a temporary working directory.
+Figures are drawn on the Agg canvas (set in conftest.py) and closed; files an example writes go to a temporary
+working directory.
 """
 
 from __future__ import annotations
@@ -19,11 +20,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-
-import pytest  # noqa: E402
+import pytest
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 PAGES = sorted(DOCS.glob("*.md"))
@@ -91,17 +88,36 @@ def doctest_source(text: str, blocks: list[Block]) -> str:
     return "\n".join(out) + "\n"
 
 
-@pytest.fixture
-def clean_session(tmp_path, monkeypatch):
-    """Run in an empty working directory, close every figure afterwards."""
-    import matplotlib.pyplot as plt
+ROOT = DOCS.parent
+_SCRIPT = re.compile(r"^# (?P<name>[A-Za-z_][A-Za-z0-9_]*\.py)\s*$")
 
+
+@pytest.fixture
+def reader_session(tmp_path, monkeypatch):
+    """A fresh working directory that holds the repository's ``examples/`` (the pages load scenes from it), on
+    ``sys.path`` (a block headed ``# name.py`` is a module the next blocks import); figures, mpmath precision and
+    NumPy print options are restored afterwards."""
+    import sys
+
+    import matplotlib.pyplot as plt
+    import mpmath
+    import numpy as np
+
+    (tmp_path / "examples").symlink_to(ROOT / "examples", target_is_directory=True)
     monkeypatch.chdir(tmp_path)
-    yield
+    monkeypatch.syspath_prepend(str(tmp_path))
+    modules, dps, printoptions = set(sys.modules), mpmath.mp.dps, np.get_printoptions()
+    yield tmp_path
     plt.close("all")
+    mpmath.mp.dps = dps
+    np.set_printoptions(**printoptions)
+    for name in set(sys.modules) - modules:  # the page's own modules (mc_demo.py, ...), not library imports
+        if getattr(sys.modules[name], "__file__", None) and str(tmp_path) in sys.modules[name].__file__:
+            del sys.modules[name]
 
 
 def run_doctests(page: Path) -> tuple[int, int, str]:
+    """Run the page's ``>>>`` examples as one session with empty globals: (failures, tries, report)."""
     text = page.read_text()
     blocks, _ = fenced_blocks(text)
     test = doctest.DocTestParser().get_doctest(doctest_source(text, blocks), {}, page.name, str(page), 0)
@@ -111,32 +127,78 @@ def run_doctests(page: Path) -> tuple[int, int, str]:
     return runner.failures, runner.tries, report.getvalue()
 
 
-def run_python_blocks(page: Path) -> int:
+def run_python_blocks(page: Path, workdir: Path) -> int:
+    """Execute the page's plain ```` ```python ```` blocks in order in one namespace; return how many ran.
+
+    A block whose first line is ``# name.py`` is a file the reader saves: it is written to ``workdir`` and run
+    as a script (``__name__ == "__main__"``), and the names it defines join the namespace."""
+    import runpy
+
     blocks, _ = fenced_blocks(page.read_text())
     namespace: dict = {"__name__": "__main__"}
     count = 0
     for block in blocks:
-        if block.is_python:
-            source = "\n" * (block.lineno - 1) + "\n".join(block.lines) + "\n"
-            exec(compile(source, str(page), "exec"), namespace)
-            count += 1
+        if not block.is_python:
+            continue
+        source = "\n".join(block.lines) + "\n"
+        script = _SCRIPT.match(block.lines[0]) if block.lines else None
+        if script:
+            path = workdir / script["name"]
+            path.write_text(source)
+            namespace.update(runpy.run_path(str(path), run_name="__main__"))
+        else:
+            exec(compile("\n" * (block.lineno - 1) + source, str(page), "exec"), namespace)
+        count += 1
     return count
 
 
 @pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
-def test_page_examples_run(page, clean_session):
+def test_page_examples_run_as_written(page, reader_session):
     blocks, stray = fenced_blocks(page.read_text())
-    assert stray == [], f"{page.name}: '>>>' lines outside a fenced block at lines {stray}"
-    untagged = [b.lineno for b in blocks if b.language.startswith("py") and not (b.is_python or b.is_doctest)]
-    assert untagged == []
+    assert stray == [], f"{page.name}: '>>>' lines outside a fenced block (never run) at lines {stray}"
+    odd = [b.lineno for b in blocks if b.language.startswith("py") and not (b.is_python or b.is_doctest)]
+    assert odd == [], f"{page.name}: Python blocks with an unknown tag at lines {odd}"
     failures, tries, report = run_doctests(page)
     assert failures == 0, f"{page.name}: {failures} of {tries} examples failed\n{report[-20000:]}"
-    assert tries == sum(b.is_doctest for b in blocks) == 0 or tries >= sum(b.is_doctest for b in blocks)
-    run_python_blocks(page)
+    ran = run_python_blocks(page, reader_session)
+    assert ran == sum(b.is_python for b in blocks)
 
 
-def test_the_pages_have_examples():
-    """Guard against a parser change silently running nothing: the guide as a whole has hundreds of examples."""
-    doctests = sum(len(doctest.DocTestParser().get_examples(doctest_source(p.read_text(), fenced_blocks(p.read_text())[0]))) for p in PAGES)
-    python = sum(b.is_python for p in PAGES for b in fenced_blocks(p.read_text())[0])
-    assert doctests > 300 and python > 20
+def test_fenced_block_parser():
+    """The parser finds ``>>>`` blocks, plain Python blocks, indented fences and stray prompts."""
+    text = "\n".join(
+        [
+            "intro >>> not a prompt",
+            "```python",
+            ">>> 1 + 1",
+            "2",
+            "```",
+            "  ```python",
+            "  x = 1",
+            "  ```",
+            "````text",
+            "```python",
+            "````",
+            ">>> stray",
+        ]
+    )
+    blocks, stray = fenced_blocks(text)
+    assert [(b.language, b.lineno, b.is_doctest, b.is_python) for b in blocks] == [
+        ("python", 3, True, False),
+        ("python", 7, False, True),
+        ("text", 10, False, False),
+    ]
+    assert blocks[1].lines == ("x = 1",) and stray == [12]
+    examples = doctest.DocTestParser().get_examples(doctest_source(text, blocks))
+    assert [(e.source, e.want, e.lineno) for e in examples] == [("1 + 1\n", "2\n", 2)]
+
+
+def test_the_guide_has_examples():
+    """Guard against a parser change that silently runs nothing: the guide holds hundreds of examples."""
+    n_doctest = n_python = 0
+    for page in PAGES:
+        text = page.read_text()
+        blocks, _ = fenced_blocks(text)
+        n_doctest += len(doctest.DocTestParser().get_examples(doctest_source(text, blocks)))
+        n_python += sum(b.is_python for b in blocks)
+    assert n_doctest > 300 and n_python > 20
