@@ -4,7 +4,8 @@ A reader copies the examples of a page into a fresh session, in order. So, for e
 
 * its ``>>>`` examples (in any fenced block) run as ONE doctest session with empty globals, in page order, with
   ``ELLIPSIS | NORMALIZE_WHITESPACE`` -- the page imports what it uses in its first example;
-* its plain ```` ```python ```` blocks (no ``>>>``) are executed in order in one fresh namespace of their own;
+* its plain ```` ```python ```` blocks (no ``>>>``) are executed in order in one fresh namespace of their own; an
+  untagged block right after one shows what it prints, and is compared with what it prints;
 * nothing that looks like a runnable example escapes both: a ``>>>`` line outside a fenced block, or a fenced block
   tagged as Python in another spelling, fails the page.
 
@@ -127,29 +128,51 @@ def run_doctests(page: Path) -> tuple[int, int, str]:
     return runner.failures, runner.tries, report.getvalue()
 
 
-def run_python_blocks(page: Path, workdir: Path) -> int:
-    """Execute the page's plain ```` ```python ```` blocks in order in one namespace; return how many ran.
+def printed_output_block(text: str, blocks: list[Block], index: int) -> Block | None:
+    """The untagged block right after ``blocks[index]`` (only blank lines between): the output it prints."""
+    if index + 1 >= len(blocks) or blocks[index + 1].language != "":
+        return None
+    lines = text.splitlines()
+    block, nxt = blocks[index], blocks[index + 1]
+    between = lines[block.lineno + len(block.lines) : nxt.lineno - 2]  # after the closing fence, before the opening
+    return nxt if all(not line.strip() for line in between) else None
+
+
+def run_python_blocks(page: Path, workdir: Path) -> tuple[int, list[str]]:
+    """Execute the page's plain ```` ```python ```` blocks in order in one namespace.
 
     A block whose first line is ``# name.py`` is a file the reader saves: it is written to ``workdir`` and run
-    as a script (``__name__ == "__main__"``), and the names it defines join the namespace."""
+    as a script (``__name__ == "__main__"``), and the names it defines join the namespace.  A block followed
+    directly by an untagged block shows what it prints there: the printed text is compared with it (as doctest
+    compares, with the same flags).  Returns the number of blocks run and the output mismatches."""
+    import contextlib
     import runpy
 
-    blocks, _ = fenced_blocks(page.read_text())
+    text = page.read_text()
+    blocks, _ = fenced_blocks(text)
     namespace: dict = {"__name__": "__main__"}
-    count = 0
-    for block in blocks:
+    checker = doctest.OutputChecker()
+    count, mismatches = 0, []
+    for k, block in enumerate(blocks):
         if not block.is_python:
             continue
         source = "\n".join(block.lines) + "\n"
         script = _SCRIPT.match(block.lines[0]) if block.lines else None
-        if script:
-            path = workdir / script["name"]
-            path.write_text(source)
-            namespace.update(runpy.run_path(str(path), run_name="__main__"))
-        else:
-            exec(compile("\n" * (block.lineno - 1) + source, str(page), "exec"), namespace)
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed):
+            if script:
+                path = workdir / script["name"]
+                path.write_text(source)
+                namespace.update(runpy.run_path(str(path), run_name="__main__"))
+            else:
+                exec(compile("\n" * (block.lineno - 1) + source, str(page), "exec"), namespace)
         count += 1
-    return count
+        shown = printed_output_block(text, blocks, k)
+        if shown is not None:
+            want = "\n".join(shown.lines) + "\n"
+            if not checker.check_output(want, printed.getvalue(), OPTIONFLAGS):
+                mismatches.append(f"line {shown.lineno}:\nshown:\n{want}printed:\n{printed.getvalue()}")
+    return count, mismatches
 
 
 @pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
@@ -160,7 +183,8 @@ def test_page_examples_run_as_written(page, reader_session):
     assert odd == [], f"{page.name}: Python blocks with an unknown tag at lines {odd}"
     failures, tries, report = run_doctests(page)
     assert failures == 0, f"{page.name}: {failures} of {tries} examples failed\n{report[-20000:]}"
-    ran = run_python_blocks(page, reader_session)
+    ran, mismatches = run_python_blocks(page, reader_session)
+    assert mismatches == [], f"{page.name}: printed output differs from the page\n" + "\n".join(mismatches)
     assert ran == sum(b.is_python for b in blocks)
 
 
