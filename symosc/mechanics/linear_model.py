@@ -108,6 +108,8 @@ class LinearModel(SymPyPrintable):
         for i in range(n):
             for j in range(n):
                 for term in sp.Add.make_args(sp.expand(self.K[i, j])):
+                    if term == 0:  # a zero entry is no harmonic (it used to add a spurious key 0)
+                        continue
                     coeff, tpart = term.as_independent(t, as_Add=False)
                     if tpart not in parts:
                         parts[tpart] = sp.zeros(n, n)
