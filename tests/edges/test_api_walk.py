@@ -24,10 +24,16 @@ from symosc.errors import ParameterError
 WALK = Path(__file__).with_name("_api_walk.py")
 
 
-def test_public_api_bad_input_walk():
+def test_public_api_bad_input_walk(tmp_path):
     env = {**os.environ, "PYTHONPATH": str(Path(symosc.__file__).parents[1])}
-    proc = subprocess.run(
-        [sys.executable, str(WALK), "20", "4"], capture_output=True, text=True, timeout=600, env=env, check=False
+    proc = subprocess.run(  # in a scratch folder: bad paths such as "abc" may be written as files
+        [sys.executable, str(WALK), "20", "4"],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        env=env,
+        check=False,
+        cwd=tmp_path,
     )
     assert proc.returncode == 0, proc.stderr[-3000:]
     problems = [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
@@ -152,32 +158,32 @@ def test_message_from_a_real_function_names_argument_and_expectation():
 FREE_TEXT = {("symosc.codegen.export", "name")}
 
 
-def _probe(mode: str) -> list[list[str]]:
+def _probe(mode: str, cwd: Path) -> list[list[str]]:
     script = WALK.with_name("_example_probe.py")
     env = {**os.environ, "PYTHONPATH": str(Path(symosc.__file__).parents[1])}
-    proc = subprocess.run(
-        [sys.executable, str(script), mode], capture_output=True, text=True, timeout=900, env=env, check=False
+    proc = subprocess.run(  # in a scratch folder: bad paths such as "abc" may be written as files
+        [sys.executable, str(script), mode], capture_output=True, text=True, timeout=900, env=env, check=False, cwd=cwd
     )
     assert proc.returncode == 0, proc.stderr[-3000:]
     return [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
 
 
-def test_misspelt_options_get_the_closest_valid_value():
+def test_misspelt_options_get_the_closest_valid_value(tmp_path):
     """Every string option of every public function with a documented example: the example called again with the
     option misspelt (default + "x") raises a symosc error that names the option and the closest valid value."""
-    checked = [r for r in _probe("options") if ": " in r[1]]
+    checked = [r for r in _probe("options", tmp_path) if ": " in r[1]]
     assert len(checked) >= 25  # the probe reached the options (not just "no example")
     bad = [r for r in checked if not r[1].endswith(": ok") and (r[0], r[1].split(":")[0]) not in FREE_TEXT]
     assert bad == [], "\n".join(map(str, bad))
 
 
 @pytest.mark.slow
-def test_bad_numeric_options_are_refused_explicitly():
+def test_bad_numeric_options_are_refused_explicitly(tmp_path):
     """Every numeric keyword of every public function with a documented example set to -1, nan, inf, "abc" (and 1.5
     for integers): the call returns, or raises a symosc error that names an argument and states an expectation;
     never a generic exception, never a hang (20 s cap per call).  Tolerances, limits and seeds used to hang or
     return nonsense (``rtol=nan`` integrated forever, ``tol=-1`` ran to the iteration cap)."""
-    checked = [r for r in _probe("numbers") if ": " in r[1]]
+    checked = [r for r in _probe("numbers", tmp_path) if ": " in r[1]]
     assert len(checked) >= 400
     bad = [r for r in checked if not (r[1].endswith(": ok") or r[1].endswith(": ACCEPTED"))]
     assert bad == [], "\n".join(map(str, bad))
