@@ -90,6 +90,9 @@ class CharacteristicExponentSeries(SymPyPrintable):
     def __repr__(self) -> str:
         lines = [f"CharacteristicExponentSeries(order={self.order}, rad/s;"]
         for lab, c in zip(self.labels, self.coefficients, strict=True):
+            c = np.asarray(c, dtype=complex)
+            tol = 1e-12 * float(np.max(np.abs(c), initial=0.0))  # rounding noise of the recurrence shown as 0
+            c = np.where(np.abs(c.real) > tol, c.real, 0.0) + 1j * np.where(np.abs(c.imag) > tol, c.imag, 0.0)
             head = ", ".join(f"{z.real:.8g}{z.imag:+.8g}j" for z in c[:4])
             lines.append(f"  {lab}: [{head}{', ...' if len(c) > 4 else ''}]")
         return "\n".join(lines) + ")"
