@@ -34,8 +34,8 @@ class FirstOrderSystem:
     >>> from scipy.integrate import solve_ivp
     >>> from symosc.models import n_link_pendulum
     >>> fo = n_link_pendulum(1).first_order()
-    >>> [s.name for s in fo.state]
-    ['phi1', 'phi1_dot']
+    >>> fo
+    FirstOrderSystem(state: phi1, phi1_dot; parameters: g, l1, m1; diag(I, M) x' = (q', F))
     >>> f = fo.rhs({"m1": 1.0, "l1": 1.0, "g": 9.81})
     >>> f(0.0, [0.1, 0.0]).round(4).tolist()
     [0.0, -0.9794]
@@ -48,6 +48,12 @@ class FirstOrderSystem:
     @property
     def state(self) -> tuple[sp.Symbol, ...]:
         return self.system.coordinates + self.system.velocities
+
+    def __repr__(self) -> str:  # cheap: names only, the forcing is not formed
+        names = ", ".join(s.name for s in self.state)
+        params = ", ".join(s.name for s in self.system.parameters)
+        kind = "rheonomic; " if self.system.is_rheonomic else ""
+        return f"FirstOrderSystem({kind}state: {names}; parameters: {params}; diag(I, M) x' = (q', F))"
 
     @cached_property
     def mass_matrix_full(self) -> sp.Matrix:

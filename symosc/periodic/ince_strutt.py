@@ -319,11 +319,11 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         q = _as_float_array(q, "q")
         a, q = np.broadcast_arrays(a, q)
         if principal or self.lower_terms is not None or self.upper_terms is not None:
-            return (a > self.lower(q)) & (a < self.upper(q))
+            return ((a > self.lower(q)) & (a < self.upper(q)))[()]  # scalar input gives a NumPy bool, as ufuncs do
         out = np.ones(a.shape, dtype=bool)
         for r in self.ratios:
             out &= mathieu_stable(a / r, q / r)
-        return out
+        return out[()]
 
     def __repr__(self) -> str:
         rs = ", ".join(f"{r:.6g}" for r in self.ratios)

@@ -342,3 +342,13 @@ def test_property_scaled_curves_monotone_in_ratio(r, q):
     lowest eigenvalues a_0, b_1 in q), so mode 1 gives the highest a_0 curve and mode N the lowest b_1 curve."""
     assert r * mathieu_a(0, q / r) <= mathieu_a(0, q) + 1e-12 * (1 + abs(q))
     assert r * mathieu_b(1, q / r) <= mathieu_b(1, q) + 1e-12 * (1 + abs(q))
+
+
+def test_scalar_point_gives_a_scalar_verdict():
+    """A scalar (a, q) gives a scalar answer, as NumPy ufuncs do; for one mode (ratio 1) it is the Mathieu chart:
+    at q = 0.1, a0 = -0.0050, b1 = 0.8988, a1 = 1.0987 (DLMF 28.6), so a = 0.5 is stable and a = 1.0 is not."""
+    d = modified_ince_strutt([1.0])
+    inside, outside = d.is_stable(0.5, 0.1), d.is_stable(1.0, 0.1)
+    assert not isinstance(inside, np.ndarray) and not isinstance(outside, np.ndarray)  # a NumPy bool, not array(True)
+    assert bool(inside) and not bool(outside)
+    assert d.is_stable(np.array([0.5, 1.0]), 0.1).tolist() == [True, False]
