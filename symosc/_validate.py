@@ -515,6 +515,12 @@ def guard(fn):
             k: v for k, v in bound.items() if params[k].kind not in (params[k].VAR_POSITIONAL, params[k].VAR_KEYWORD)
         }
         named = [k for k in ordinary if names_argument(message, k)]
+        if isinstance(exc, ModelError) and not isinstance(exc, ParameterError):
+            # a model error that merely mentions an argument ("f(A) is not defined") is about the model: completed
+            # only for arguments whose value itself looks wrong (nan, a string, zero, an array where a matrix was meant)
+            named = [k for k in named if _suspicious(ordinary[k], str(params[k].annotation))]
+            if not named and not any(_suspicious(v, str(params[k].annotation)) for k, v in ordinary.items()):
+                return exc
         if explicit:
             text = message + _closest_option(message, [ordinary[k] for k in named if isinstance(ordinary[k], str)])
             if text == message:

@@ -118,7 +118,7 @@ def inverse_carson(
     >>> inverse_carson(p**2 / (p + 1), p, t)
     Traceback (most recent call last):
     ...
-    symosc.errors.ModelError: improper Carson image: deg numerator 2 > deg denominator 1 (delta functions) ...
+    symosc.errors.ModelError: improper Carson image: deg numerator 2 > deg denominator 1 (delta functions)
     """
     check_symbol(p, "p")
     check_symbol(t, "t")

@@ -187,3 +187,24 @@ def test_bad_numeric_options_are_refused_explicitly(tmp_path):
     assert len(checked) >= 400
     bad = [r for r in checked if not (r[1].endswith(": ok") or r[1].endswith(": ACCEPTED"))]
     assert bad == [], "\n".join(map(str, bad))
+
+
+def test_model_errors_about_the_model_are_not_decorated():
+    """A ModelError that only mentions an argument's name ("f(A) is not defined") describes the model: the guard
+    must not append what the (valid) arguments must be; one caused by a bad value (nan) still says it."""
+    import sympy as sp
+
+    from symosc.algebra import matrix_function
+    from symosc.errors import ModelError
+    from symosc.operational import heaviside_expand, inverse_carson
+
+    with pytest.raises(ModelError) as info:
+        matrix_function(sp.Matrix([[0, 1], [0, 0]]), sp.sqrt)
+    assert str(info.value).endswith("f(A) is not defined") and "must be" not in str(info.value)
+    p, t = sp.symbols("p t")
+    with pytest.raises(ModelError) as info:
+        inverse_carson(p**2 / (p + 1), p, t)
+    assert "must be" not in str(info.value) and "improper Carson image" in str(info.value)
+    with pytest.raises((ModelError, ParameterError)) as info:
+        heaviside_expand(float("nan"), float("nan"))
+    assert "nan" in str(info.value) and ("must be" in str(info.value) or "expected" in str(info.value))
