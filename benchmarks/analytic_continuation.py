@@ -7,46 +7,15 @@ continuation steps taken and the times.  The cases are those of the matrix-funct
 
 from __future__ import annotations
 
+import sys
 import time
 import warnings
-
-import mpmath
-import numpy as np
-import scipy.linalg as sla
-import sympy as sp
+from pathlib import Path
 
 from symosc.algebra import analytic_continuation
 
-MP = {"log": mpmath.log, "sqrt": mpmath.sqrt}
-SP = {"log": sp.log, "sqrt": sp.sqrt}
-SCIPY = {"log": sla.logm, "sqrt": sla.sqrtm}
-
-
-def reference(A: np.ndarray, name: str) -> np.ndarray:
-    n = A.shape[0]
-    with mpmath.workdps(50):
-        E, V = mpmath.eig(mpmath.matrix(A.tolist()))
-        R = V * mpmath.diag([MP[name](e) for e in E]) * mpmath.inverse(V)
-        return np.array([[complex(R[i, j]) for j in range(n)] for i in range(n)])
-
-
-def err(F, R) -> float:
-    return float(np.linalg.norm(np.asarray(F, dtype=complex) - R) / np.linalg.norm(R))
-
-
-def cases():
-    Q, _ = np.linalg.qr(np.random.default_rng(0).normal(size=(5, 5)))
-    spd = Q @ np.diag([0.002, 0.04, 0.06, 0.5, 540.0]) @ Q.T
-    yield "SPD, spectrum 0.002..540", (spd + spd.T) / 2
-    J = np.diag([0.01, 0.01, 0.02, 0.02, 100.0])
-    J[0, 1] = J[2, 3] = 1.0
-    S = np.eye(5) + 0.25 * np.random.default_rng(11).normal(size=(5, 5))
-    yield f"Jordan 0.01(x2) 0.02(x2) 100, cond S {np.linalg.cond(S):.1f}", S @ J @ np.linalg.inv(S)
-    rng = np.random.default_rng(7)
-    for k in range(3):
-        eigs = 10.0 ** np.sort(np.r_[-6, 6, rng.uniform(-6, 6, 3)])
-        S = rng.normal(size=(5, 5)) + 2 * np.eye(5)
-        yield f"random 5x5, spectrum 1e-6..1e6 #{k}", S @ np.diag(eigs) @ np.linalg.inv(S)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from matrix_function_wide_spectra import SCIPY, SP, cases, err, reference  # the same cases and 50-digit reference
 
 
 def main() -> None:
