@@ -74,3 +74,12 @@ def is_zero(expr: sp.Expr) -> bool:
 
 def matrix_latex(printer: Any, M: sp.MatrixBase) -> str:
     return printer._print(M) if printer is not None else sp.latex(M)
+
+
+def synthesis_target(Z: Any, p: Any) -> tuple[sp.Symbol, sp.Poly, sp.Poly]:
+    """``(p, N, D)`` of a one-port to synthesise: a rational function of the Symbol ``p`` that is not zero."""
+    p = as_symbol(p)
+    N, D = rational_function(Z, p)
+    if N.is_zero:
+        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    return p, N, D

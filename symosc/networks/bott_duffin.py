@@ -24,9 +24,8 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import ParameterError
 from ._synthesis import synthesize
-from ._util import P, as_symbol, rational_function
+from ._util import P, synthesis_target
 from .oneports import OnePort
 from .positive_real import require_positive_real
 
@@ -67,10 +66,7 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     brune_synthesis, is_positive_real
     """
-    p = as_symbol(p)
-    N, D = rational_function(Z, p)
-    if N.is_zero:
-        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    p, N, D = synthesis_target(Z, p)
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
     return synthesize(Z, p, "bott_duffin")

@@ -20,9 +20,8 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import ParameterError
 from ._synthesis import minimum_real_part, synthesize
-from ._util import P, as_symbol, rational_function
+from ._util import P, synthesis_target
 from .oneports import OnePort
 from .positive_real import require_positive_real
 
@@ -65,10 +64,7 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     bott_duffin_synthesis, is_positive_real, foster_first
     """
-    p = as_symbol(p)
-    N, D = rational_function(Z, p)
-    if N.is_zero:
-        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    p, N, D = synthesis_target(Z, p)
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
     return synthesize(Z, p, "brune")

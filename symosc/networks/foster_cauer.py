@@ -27,7 +27,7 @@ import sympy as sp
 from ..errors import ParameterError
 from . import _exact as ex
 from ._synthesis import exact_polys, remove_axis_poles
-from ._util import P, as_symbol, rational_function
+from ._util import P, synthesis_target
 from .oneports import Capacitor, Inductor, OnePort, Parallel, Series
 from .positive_real import real_part_on_axis, require_positive_real
 
@@ -56,8 +56,7 @@ def is_reactance_function(Z: Any, p: sp.Symbol = P) -> bool:
 
 def _reactance(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
     """Exact coefficient lists ``(N, D, K)`` of a reactance function, or ParameterError saying why not."""
-    p = as_symbol(p)
-    N, D = rational_function(Z, p)
+    p, N, D = synthesis_target(Z, p)
     require_positive_real(N.as_expr() / D.as_expr(), p)
     Ne, De, K = exact_polys(N, D)
     if ex.real_part_x(Ne, De, K)[0]:
@@ -65,8 +64,6 @@ def _reactance(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
             "Z is not a reactance function (Re Z(iω) is not identically zero): Foster and Cauer forms realise "
             "lossless LC one-ports only; use brune_synthesis or bott_duffin_synthesis for RLC targets"
         )
-    if N.is_zero:
-        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
     return Ne, De, K
 
 

@@ -27,7 +27,7 @@ from typing import Any
 import sympy as sp
 
 from ..errors import ParameterError
-from ._util import P, as_expr, as_symbol, rational_function
+from ._util import P, as_expr, as_symbol, rational_function, synthesis_target
 from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
 from .positive_real import positive_real_report, require_positive_real
 
@@ -151,10 +151,7 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
     """
     from .bott_duffin import bott_duffin_synthesis
 
-    p = as_symbol(p)
-    N, D = rational_function(Z, p)
-    if N.is_zero:
-        raise ParameterError("Z is identically zero (a short circuit): nothing to synthesise")
+    p, N, D = synthesis_target(Z, p)
     rho = as_expr(rho, "rho")
     if rho.free_symbols or not rho.is_extended_real or not rho.is_positive:
         raise ParameterError(f"rho must be a positive real number, got {rho}")

@@ -264,21 +264,19 @@ class ShortenedEquations(SymPyPrintable):
             raise ParameterError("missing values for: " + ", ".join(missing))
         return out
 
-    def rate_values(self, state: Sequence[float], values: Mapping | None = None) -> np.ndarray:
-        """Averaged rates of :attr:`variables` at ``state`` (exact averages compiled, or torus quadrature)."""
+    def _rates_at(self, state: Sequence[float], values: Mapping | None) -> tuple[np.ndarray, np.ndarray]:
         x = np.asarray(state, dtype=float)
         if x.shape != (len(self.variables),) or not np.all(np.isfinite(x)):
             raise ParameterError(f"state must be {len(self.variables)} finite numbers (for {self.variables})")
-        p = self._param_values(values)
-        return _rates(self, x, p)[0]
+        return _rates(self, x, self._param_values(values))
+
+    def rate_values(self, state: Sequence[float], values: Mapping | None = None) -> np.ndarray:
+        """Averaged rates of :attr:`variables` at ``state`` (exact averages compiled, or torus quadrature)."""
+        return self._rates_at(state, values)[0]
 
     def phase_rate_values(self, state: Sequence[float], values: Mapping | None = None) -> np.ndarray:
         """Averaged phase rates ``u_h'`` of the active pairs at ``state`` (rad/s)."""
-        x = np.asarray(state, dtype=float)
-        if x.shape != (len(self.variables),) or not np.all(np.isfinite(x)):
-            raise ParameterError(f"state must be {len(self.variables)} finite numbers (for {self.variables})")
-        p = self._param_values(values)
-        return _rates(self, x, p)[1]
+        return self._rates_at(state, values)[1]
 
     def regime(
         self, guess: Sequence[float], values: Mapping | None = None, *, tol: float = 1e-10
