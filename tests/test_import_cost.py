@@ -34,7 +34,19 @@ def imported_modules(statement: str) -> set[str]:
 
 
 @pytest.mark.parametrize(
-    "module", ["symosc", "symosc.models", "symosc.periodic", "symosc.nonlinear", "symosc.identification"]
+    "module",
+    [
+        "symosc",
+        "symosc.models",
+        "symosc.periodic",
+        "symosc.nonlinear",
+        "symosc.identification",
+        "symosc.algebra",
+        "symosc.linear",
+        "symosc.networks",
+        "symosc.operational",
+        "symosc.mechanics",
+    ],
 )
 def test_subpackage_imports_no_scipy_and_no_optional_library(module):
     names = imported_modules(f"import {module}")

@@ -16,8 +16,6 @@ from collections.abc import Callable
 
 import mpmath
 import numpy as np
-import scipy.linalg as sla
-from scipy.linalg import lapack
 
 from ..errors import ConvergenceError, ModelError
 from . import _taylor
@@ -58,6 +56,8 @@ def relative_clusters(
 
 def eigenvalue_conditions(A: np.ndarray, eigs: np.ndarray) -> np.ndarray:
     """Condition numbers ``||x|| ||y|| / |y^H x|`` of the eigenvalues, matched to ``eigs`` by nearest value."""
+    import scipy.linalg as sla  # SciPy on first use, not at import
+
     w, vl, vr = sla.eig(A, left=True, right=True)
     with np.errstate(divide="ignore", invalid="ignore"):
         k = np.linalg.norm(vl, axis=0) * np.linalg.norm(vr, axis=0) / np.abs(np.sum(vl.conj() * vr, axis=0))
@@ -88,6 +88,9 @@ def safe_matmul(A: np.ndarray, B: np.ndarray) -> np.ndarray:
 
 def ordered_schur(A: np.ndarray, cluster_tol: float) -> tuple[np.ndarray, np.ndarray, list[list[int]]]:
     """Complex Schur form ``A = Q T Q^H`` with each cluster contiguous; returns T, Q and the block index ranges."""
+    import scipy.linalg as sla
+    from scipy.linalg import lapack
+
     A = A.astype(complex)
     if np.array_equal(A, A.conj().T):
         # Hermitian: the symmetric eigensolver is more accurate than the general QR algorithm
@@ -126,6 +129,8 @@ def ordered_schur(A: np.ndarray, cluster_tol: float) -> tuple[np.ndarray, np.nda
 
 def _sylvester(T11: np.ndarray, T22: np.ndarray, C: np.ndarray) -> np.ndarray:
     """Solve ``T11 X - X T22 = C`` for upper triangular T11, T22."""
+    from scipy.linalg import lapack
+
     if T11.shape == (1, 1) and T22.shape == (1, 1):
         with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
             return C / (T11[0, 0] - T22[0, 0])
