@@ -518,9 +518,10 @@ def guard(fn):
         if isinstance(exc, ModelError) and not isinstance(exc, ParameterError):
             # a model error that merely mentions an argument ("f(A) is not defined") is about the model: completed
             # only for arguments whose value itself looks wrong (nan, a string, zero, an array where a matrix was meant)
-            named = [k for k in named if _suspicious(ordinary[k], str(params[k].annotation))]
-            if not named and not any(_suspicious(v, str(params[k].annotation)) for k, v in ordinary.items()):
+            suspicious = {k for k, v in ordinary.items() if _suspicious(v, str(params[k].annotation))}
+            if not suspicious:
                 return exc
+            named = [k for k in named if k in suspicious]
         if explicit:
             text = message + _closest_option(message, [ordinary[k] for k in named if isinstance(ordinary[k], str)])
             if text == message:
