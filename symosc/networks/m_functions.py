@@ -149,7 +149,7 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
     --------
     is_m_function, bott_duffin_synthesis, richards_function
     """
-    from .bott_duffin import bott_duffin_synthesis
+    from ._synthesis import synthesize
 
     p, N, D = synthesis_target(Z, p)
     rho = as_expr(rho, "rho")
@@ -163,4 +163,4 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
             f"Z(p - rho) is not positive real for rho = {rho} ({verdict.failed}: {verdict.detail}); Z is not an "
             "M-function with this rho (Bulgakov (1954), §9.24): try a smaller rho, see is_m_function"
         )
-    return _shift_elements(bott_duffin_synthesis(shifted, p), rho)
+    return _shift_elements(synthesize(shifted, p, "bott_duffin"), rho)  # PR already checked just above
