@@ -23,7 +23,7 @@ from sympy.polys.densearith import (
     dup_sub,
 )
 from sympy.polys.densebasic import dup_degree, dup_LC, dup_strip
-from sympy.polys.densetools import dup_diff, dup_eval
+from sympy.polys.densetools import dup_diff, dup_eval, dup_monic, dup_shift
 from sympy.polys.euclidtools import dup_inner_gcd, dup_invert
 from sympy.polys.factortools import dup_factor_list
 from sympy.polys.polyerrors import ExactQuotientFailed
@@ -31,8 +31,11 @@ from sympy.polys.polyerrors import ExactQuotientFailed
 from ..errors import ModelError
 
 _DIGITS = 40
-#: largest degree over QQ of the number field holding one network's element values
+#: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
+#: the same with python-flint installed (beyond it the big-number arithmetic in the primitive element's basis takes
+#: minutes: a degree-18 field of a random degree-5 Bott–Duffin case ran past two minutes)
+MAX_FIELD_DEGREE_FLINT = 16
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of a polynomial whose coefficients are themselves algebraic numbers: {what}); exact synthesis keeps every "
@@ -52,11 +55,25 @@ def sym(c, K) -> sp.Expr:
 _GENERATORS: dict = {}
 
 
+def flint_module():
+    """python-flint when installed (``pip install symosc[exact]``), else None."""
+    try:
+        import flint
+    except ImportError:  # pragma: no cover - the test environment installs python-flint
+        return None
+    return flint
+
+
 def _generator_value(K, digits: int):
     key = (K, digits)
     if key not in _GENERATORS:
-        with mpmath.workdps(digits + 10):
-            _GENERATORS[key] = mpmath.mpf(str(sp.N(K.ext.as_expr(), digits + 10)))
+        root = K.ext.as_expr()
+        if flint_module() is not None and isinstance(root, sp.CRootOf) and root.is_real:
+            coeffs = [QQ.from_sympy(c) for c in root.poly.all_coeffs()]
+            _GENERATORS[key] = real_roots_numeric(coeffs, digits + 10)[root.index]
+        else:
+            with mpmath.workdps(digits + 10):
+                _GENERATORS[key] = mpmath.mpf(str(sp.N(root, digits + 10)))
     return _GENERATORS[key]
 
 
@@ -129,9 +146,61 @@ def normalize(N: list, D: list, K) -> tuple[list, list]:
     """Cancel the common factor and make the denominator monic."""
     if not N:
         return [], [K.one]
-    _, N, D = dup_inner_gcd(N, D, K)
-    lc = dup_LC(D, K)
-    return dup_quo_ground(N, lc, K), dup_quo_ground(D, lc, K)
+    if K.is_QQ or not coprime(N, D, K):
+        _, N, D = dup_inner_gcd(N, D, K)
+    inv = K.quo(K.one, dup_LC(D, K))  # one inversion (dividing coefficient by coefficient inverts once per coefficient)
+    return dup_mul_ground(N, inv, K), dup_mul_ground(D, inv, K)
+
+
+def coprime(f: list, g: list, K) -> bool:
+    """True when ``f`` and ``g`` over a number field are certainly coprime: their images modulo a prime ``q`` under
+    ``γ -> a`` (``a`` a root of ``γ``'s minimal polynomial mod ``q``) keep their degrees and have gcd 1, so the
+    resultant is nonzero.  False means "not decided" (the caller then computes the gcd over the field).  Needs
+    python-flint; without it always False."""
+    if flint_module() is None:
+        return False
+    for q, a in _reductions(K):
+        F, G = _reduce(f, K, q, a), _reduce(g, K, q, a)
+        if F is None or G is None or F.degree() != dup_degree(f) or G.degree() != dup_degree(g):
+            continue
+        return F.gcd(G).degree() == 0
+    return False
+
+
+_REDUCTIONS: dict = {}
+
+
+def _reductions(K) -> list:
+    """Up to three pairs ``(q, a)``: word-size primes ``q`` with a root ``a`` of the generator's minimal polynomial
+    mod ``q`` (its coefficients ``q``-integral)."""
+    if K not in _REDUCTIONS:
+        flint = flint_module()
+        mod = K.mod.to_list()
+        out, q = [], 2**62
+        while len(out) < 3 and q > 2**61:
+            q = int(sp.prevprime(q))
+            if any(int(c.denominator) % q == 0 for c in mod):
+                continue
+            poly = flint.nmod_poly([int(c.numerator) * pow(int(c.denominator), -1, q) for c in reversed(mod)], q)
+            roots = poly.roots()
+            if roots:
+                out.append((q, int(roots[0][0])))
+        _REDUCTIONS[K] = out
+    return _REDUCTIONS[K]
+
+
+def _reduce(f: list, K, q: int, a: int):
+    """Image of a polynomial over ``K`` in ``F_q[x]`` (None when a denominator is divisible by ``q``)."""
+    out = []
+    for c in f:
+        acc = 0
+        for b in c.to_list():
+            den = int(b.denominator) % q
+            if den == 0:
+                return None
+            acc = (acc * a + int(b.numerator) * pow(den, -1, q)) % q
+        out.append(acc)
+    return flint_module().nmod_poly(list(reversed(out)), q)
 
 
 def even_value(N: list, D: list, x0, K):
@@ -199,15 +268,14 @@ def extension(root: sp.Expr):
 def to_field(f: list, K_old, K_new) -> list:
     if K_old == K_new:
         return f
-    return [K_new.convert_from(c, K_old) for c in f]
+    return [convert(c, K_old, K_new) for c in f]
 
 
 def norm(f: list, K) -> list:
     """Norm of ``f`` over ``K`` down to QQ: ``Res_z(m(z), f(z, x))`` with ``m`` the minimal polynomial of ``K``'s
     generator (python-flint's resultant when available, SymPy's otherwise)."""
-    try:
-        import flint
-    except ImportError:  # pragma: no cover - python-flint is installed with SymPy's fast ground types
+    flint = flint_module()
+    if flint is None:
         from sympy.polys.sqfreetools import dmp_norm
 
         return dmp_norm(f, 0, K)
@@ -217,7 +285,7 @@ def norm(f: list, K) -> list:
     def in_z(coeffs: list):
         acc = ctx.from_dict({})
         for c in coeffs:
-            acc = acc * z + flint.fmpq(int(c.numerator), int(c.denominator))
+            acc = acc * z + _fmpq(c)
         return acc
 
     m = in_z(K.mod.to_list())
@@ -237,36 +305,166 @@ def field_degree(K) -> int:
 
 
 def extend_with_root(f: list, K, x_num, what: str):
-    """``(r, K2)``: the real root ``r`` of ``f`` (over ``K``) nearest ``x_num``, exact in ``K2 = K(r)``.
+    """``(r, K2)``: the real root ``r`` of ``f`` (over an algebraic field ``K``) nearest ``x_num``, exact in
+    ``K2 = K(r)``.
 
-    The norm of ``f`` is factored over QQ and the factor vanishing at ``r`` gives ``r`` as a radical or CRootOf;
-    ``K2`` has a primitive element of both generators (``K2 = K`` in effect when ``r`` already lies in ``K``).
-    ``Nested`` when the degree of ``K2`` would exceed :data:`MAX_FIELD_DEGREE`."""
-    from sympy.polys.euclidtools import dup_gcd
-
-    best = None
-    for phi, _ in dup_factor_list(norm(f, K), QQ)[1]:
-        for r in real_roots_qq(phi):
-            dist = abs(mpmath.mpf(str(sp.N(r, _DIGITS))) - x_num)
-            if best is None or dist < best[0]:
-                best = (dist, r, phi)
-    if best is None:  # pragma: no cover - the norm vanishes at every root of f
+    With ``K = QQ(θ)`` the new field is ``QQ(γ)`` with the primitive element ``γ = r + s θ`` (Trager's squarefree
+    norm): ``γ`` is a ``CRootOf`` of an irreducible factor of the norm of ``f(x - s θ)``, and ``θ`` is written as
+    a polynomial in ``γ`` by exact linear algebra.  ``K2 = K`` when ``r`` already lies in ``K``.  ``Nested``
+    (before any costly step) when the degree of ``K2`` would exceed :func:`max_field_degree`."""
+    theta = K.unit
+    for s in (1, -1, 2, -2, 3, -3, 4, -4):
+        shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s θ)
+        N = norm(shifted, K)
+        if squarefree_qq(N):
+            break
+    else:  # pragma: no cover - all but finitely many shifts give a squarefree norm
+        raise ModelError(f"no squarefree norm found for {what}")
+    gamma_num = x_num + s * _generator_value(K, _DIGITS)
+    phi, index, dist = None, None, None
+    for factor, _ in factor_qq(N):
+        for i, root in enumerate(real_roots_numeric(factor)):
+            if dist is None or abs(root - gamma_num) < dist:
+                phi, index, dist = factor, i, abs(root - gamma_num)
+    if phi is None:  # pragma: no cover - f has the real root x_num
         raise ModelError(f"no real root found for {what}")
-    _, r, phi = best
-    if r.is_Rational:
-        return K.convert(QQ.from_sympy(r)), K
-    deg_k, deg_r = field_degree(K), dup_degree(phi)
-    if deg_k * deg_r > MAX_FIELD_DEGREE:
-        if deg_k % deg_r == 0:  # r may lie in K: its factor over K is then linear
-            g = dup_gcd(f, [K.convert_from(c, QQ) for c in phi], K)
-            for factor, _ in [(g, 1)] if dup_degree(g) == 1 else dup_factor_list(g, K)[1]:
-                if dup_degree(factor) == 1:
-                    root = K.quo(K.neg(factor[1]), factor[0])
-                    if abs(num(root, K) - x_num) < mpmath.mpf(10) ** -10 * (1 + abs(x_num)):
-                        return root, K
-        raise Nested(NESTED.format(degree=f"up to {deg_k * deg_r}", limit=MAX_FIELD_DEGREE, what=what))
-    K2 = QQ.algebraic_field(*K.orig_ext, r)
-    return K2.from_sympy(r), K2
+    degree, m = dup_degree(phi), field_degree(K)
+    if degree > max_field_degree():
+        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
+    # the irreducible factor of f over K holding r: gcd(f(x), φ(x + s θ)) (Trager); f itself when of full degree
+    if degree == m * dup_degree(f):
+        own = f
+    else:
+        own = gcd(f, dup_shift([K.convert_from(c, QQ) for c in phi], K.mul(K.convert(s), theta), K), K)
+    if dup_degree(own) == 1:  # r lies in K (then degree == m)
+        return K.quo(K.neg(own[1]), own[0]), K
+    y = sp.Dummy("y")
+    L = QQ.algebraic_field(sp.CRootOf(sp.Poly([QQ.to_sympy(c) for c in phi], y), index))
+    h = L([QQ.convert(c) for c in _theta_in_gamma(own, K, s)])
+    _EMBEDDINGS[(K, L)] = h
+    r = L.sub(L.unit, L.mul(L.convert(s), h))
+    if abs(num(h, L) - _generator_value(K, _DIGITS)) > mpmath.mpf(10) ** -20 * (1 + abs(gamma_num)):
+        raise ModelError(f"wrong embedding of the field of {what}")  # pragma: no cover - a certified root choice
+    return r, L
+
+
+def _theta_in_gamma(own: list, K, s: int) -> list:
+    """Coefficients (highest power first) of ``θ`` as a polynomial in ``γ = x + s θ`` in ``K[x]/(own)``: the powers
+    of ``γ`` written in the basis ``θ^i x^j`` form a rational matrix, and ``θ`` is its solution for the vector of
+    ``θ`` (flint's exact solver when installed, SymPy's DomainMatrix otherwise)."""
+    m, e = field_degree(K), dup_degree(own)
+    size = m * e
+    own = dup_monic(own, K)
+
+    def vector(pw: list) -> list:
+        pw = [K.zero] * (e - len(pw)) + pw
+        out = []
+        for c in pw:
+            coeffs = c.to_list()
+            out += [QQ.zero] * (m - len(coeffs)) + coeffs
+        return out
+
+    columns, pw, step = [], [K.one], [K.one, K.mul(K.convert(s), K.unit)]
+    for _ in range(size):
+        columns.append(vector(pw))
+        pw = dup_rem(dup_mul(pw, step, K), own, K)
+    target = vector([K.unit])
+    flint = flint_module()
+    if flint is not None:
+        A = flint.fmpq_mat(size, size, [_fmpq(columns[j][i]) for i in range(size) for j in range(size)])
+        b = flint.fmpq_mat(size, 1, [_fmpq(t) for t in target])
+        sol = A.solve(b)
+        coeffs = [QQ(int(sol[i, 0].p), int(sol[i, 0].q)) for i in range(size)]
+    else:
+        from sympy.polys.matrices import DomainMatrix
+
+        A = DomainMatrix([[columns[j][i] for j in range(size)] for i in range(size)], (size, size), QQ)
+        b = DomainMatrix([[t] for t in target], (size, 1), QQ)
+        coeffs = [row[0] for row in A.lu_solve(b).to_list()]
+    return dup_strip(list(reversed(coeffs)))
+
+
+def gcd(f: list, g: list, K) -> list:
+    """Monic gcd (SymPy's: heuristic over QQ, subresultants over a number field, after a modular coprimality
+    test)."""
+    if not (f or g):
+        return []
+    if not K.is_QQ and f and g and coprime(f, g, K):
+        return [K.one]
+    h = dup_inner_gcd(f, g, K)[0]
+    return dup_mul_ground(h, K.quo(K.one, dup_LC(h, K)), K)
+
+
+_EMBEDDINGS: dict = {}
+
+
+def max_field_degree() -> int:
+    """Largest degree over QQ of a network's number field: :data:`MAX_FIELD_DEGREE`, or
+    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its resultants, factorisations and certified root isolation
+    make large fields affordable)."""
+    return MAX_FIELD_DEGREE if flint_module() is None else MAX_FIELD_DEGREE_FLINT
+
+
+def squarefree_qq(f: list) -> bool:
+    flint = flint_module()
+    if flint is None:
+        from sympy.polys.sqfreetools import dup_sqf_p
+
+        return dup_sqf_p(f, QQ)
+    g = _to_flint(f)
+    return g.gcd(g.derivative()).degree() == 0
+
+
+def factor_qq(f: list) -> list:
+    """Irreducible factors over QQ with multiplicities (flint's factorisation when installed)."""
+    flint = flint_module()
+    if flint is None:
+        return dup_factor_list(f, QQ)[1]
+    return [(_from_flint(g), e) for g, e in _to_flint(f).factor()[1]]
+
+
+def real_roots_numeric(f: list, digits: int = _DIGITS) -> list:
+    """The real roots of an irreducible ``f`` over QQ, ascending, as mpmath numbers of ``_DIGITS`` digits (certified
+    isolation: flint's when installed, SymPy's ``real_roots`` otherwise)."""
+    flint = flint_module()
+    if flint is None:
+        with mpmath.workdps(digits):
+            return sorted(mpmath.mpf(str(sp.N(r, digits))) for r in real_roots_qq(f))
+    old = flint.ctx.prec
+    try:
+        flint.ctx.prec = int(3.33 * digits) + 20
+        reals = []
+        for g, _ in _to_flint(f).factor()[1]:
+            reals += [r.real.mid() for r, _ in g.complex_roots() if r.imag == 0]
+        with mpmath.workdps(digits):
+            return sorted(mpmath.mpf(r.str(digits + 5, radius=False)) for r in reals)
+    finally:
+        flint.ctx.prec = old
+
+
+def _fmpq(c):
+    return flint_module().fmpq(int(c.numerator), int(c.denominator))
+
+
+def _to_flint(f: list):
+    return flint_module().fmpq_poly([_fmpq(c) for c in reversed(f)])
+
+
+def _from_flint(g) -> list:
+    return dup_strip([QQ(int(c.p), int(c.q)) for c in reversed(g.coeffs())])
+
+
+def convert(c, K_old, K_new):
+    """A domain element of ``K_old`` as an element of ``K_new`` (an extension of it)."""
+    if K_old == K_new:
+        return c
+    h = _EMBEDDINGS.get((K_old, K_new))
+    if h is None:
+        return K_new.convert_from(c, K_old)
+    acc = K_new.zero
+    for a in c.to_list():
+        acc = K_new.add(K_new.mul(acc, h), K_new.convert_from(a, QQ))
+    return acc
 
 
 def exquo(f: list, g: list, K, what: str) -> list:
@@ -294,6 +492,7 @@ __all__ = [
     "extend_with_root",
     "extension",
     "field_degree",
+    "gcd",
     "in_x",
     "mul_p",
     "normalize",

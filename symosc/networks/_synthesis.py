@@ -1,7 +1,7 @@
 """Shared driver of the one-port synthesis procedures (private): removals, minimum resistance, cycles.
 
 Every step is exact arithmetic over a number field ``K`` (see ``_exact``): ``QQ`` for rational targets, extended
-by an algebraic number (primitive element, degree <= ``_exact.MAX_FIELD_DEGREE``) when the minimum of
+by an algebraic number (primitive element, degree <= ``_exact.max_field_degree()``) when the minimum of
 ``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is irrational.  Element values are then exact algebraic
 numbers (radicals or polynomials in ``CRootOf`` numbers).
 """
@@ -14,7 +14,6 @@ import mpmath
 import sympy as sp
 from sympy import QQ
 from sympy.polys.constructor import construct_domain
-from sympy.polys.euclidtools import dup_gcd
 
 from ..errors import ModelError, ParameterError
 from . import _exact as ex
@@ -209,7 +208,7 @@ def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], li
         D = D1
         kv = ex.positive(k, K, "residue at p = 0")
         parts.append(Capacitor(1 / kv) if mode == "Z" else Inductor(1 / kv))
-    G = dup_gcd(D, ex.reflect(D, K), K)
+    G = ex.gcd(D, ex.reflect(D, K), K)
     if ex.dup_degree(G) > 0:
         H = ex.even_in_y(G, K)
         factors = ex.dup_factor_list(H, K)[1] if K.is_QQ else [(H, 1)]
@@ -315,7 +314,7 @@ class Engine:
         P1 = ex.exquo(P1, [K.one, K.zero, x0], K, "F - L p by p² + ω0²")
         k, K2 = _richards_k(P1, K)
         if K2 != K:
-            N, D, L, K = ex.to_field(N, K, K2), ex.to_field(D, K, K2), K2.convert_from(L, K), K2
+            N, D, L, K = ex.to_field(N, K, K2), ex.to_field(D, K, K2), ex.convert(L, K, K2), K2
         Fk = K.mul(L, k)
         # R = (k F - p F(k)) / (k F(k) - p F),  F = N/D
         Rn = ex.dup_sub(ex.dup_mul_ground(N, k, K), ex.dup_mul_ground(ex.mul_p(D, K), Fk, K), K)
