@@ -33,8 +33,8 @@ from ..errors import ModelError
 _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
-#: the same with python-flint installed (beyond it the big-number arithmetic in the primitive element's basis takes
-#: minutes: a degree-18 field of a random degree-5 Bott–Duffin case ran past two minutes)
+#: the same with python-flint installed (beyond it the big-number arithmetic in the primitive element's basis is too
+#: slow: a random degree-5 Bott–Duffin target needing a degree-18 field took 100 s)
 MAX_FIELD_DEGREE_FLINT = 16
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
