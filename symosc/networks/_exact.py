@@ -311,7 +311,7 @@ def extend_with_root(f: list, K, x_num, what: str):
     With ``K = QQ(θ)`` the new field is ``QQ(γ)`` with the primitive element ``γ = r + s θ`` (Trager's squarefree
     norm): ``γ`` is a ``CRootOf`` of an irreducible factor of the norm of ``f(x - s θ)``, and ``θ`` is written as
     a polynomial in ``γ`` by exact linear algebra.  ``K2 = K`` when ``r`` already lies in ``K``.  ``Nested``
-    (before any costly step) when the degree of ``K2`` would exceed :func:`max_field_degree`."""
+    (before the gcd and the linear solve) when the degree of ``K2`` would exceed :func:`max_field_degree`."""
     theta = K.unit
     for s in (1, -1, 2, -2, 3, -3, 4, -4):
         shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s θ)

@@ -199,7 +199,12 @@ def _brune_or_documented_refusal(synth, Z):
     _check_exact(net, Z)
 
 
-@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@settings(
+    max_examples=10,
+    deadline=None,
+    derandomize=True,  # fixed draws: a rare target needing a large field can take minutes; keep CI time bounded
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
 @given(rlc_networks())
 def test_brune_and_bott_duffin_to_degree_6(net):
     """Random RLC impedances of degree 4..6: exact network with positive elements, or the documented refusal."""
