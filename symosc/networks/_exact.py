@@ -330,7 +330,17 @@ def norm(f: list, K) -> list:
             for k in range(d):
                 if B[r, k] != 0:
                     C[(n - 1) * d + r, j * d + k] = -B[r, k]
-    return _from_flint(C.charpoly())
+    # charpoly(C)(x) = charpoly(d C)(d x) / d^(n d) with d C integral (flint's multimodular integer charpoly)
+    den = 1
+    for i in range(n * d):
+        for k in range(n * d):
+            den = flint.fmpz(den).lcm(C[i, k].q) if C[i, k] != 0 else den
+    Z = flint.fmpz_mat(n * d, n * d, [int(C[i, k] * den) for i in range(n * d) for k in range(n * d)])
+    coeffs = Z.charpoly().coeffs()  # lowest power first
+    size = n * d
+    return _from_flint(
+        flint.fmpq_poly([flint.fmpq(int(c), 1) / flint.fmpq(int(den)) ** (size - i) for i, c in enumerate(coeffs)])
+    )
 
 
 def field_degree(K) -> int:
@@ -348,6 +358,8 @@ def extend_with_root(f: list, K, x_num, what: str):
     ``r`` already lies in ``K``.  ``Nested`` (before any costly step) when the degree of ``K2`` would exceed
     :func:`max_field_degree`."""
     theta, f = _tower.primitive(K), _tower.monic(f, K)
+    if dup_degree(f) == 1:
+        return K.neg(f[1]), K
     for s in (1, -1, 2, -2, 3, -3, 4, -4):
         shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s Θ)
         N = norm(shifted, K)
@@ -368,6 +380,8 @@ def extend_with_root(f: list, K, x_num, what: str):
         raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
     if degree == m * dup_degree(f):
         own = f
+    elif isinstance(K, TowerField) and (own := _tower.factor_holding(f, K, phi, s, degree // m)) is not None:
+        pass
     else:  # φ(x + s Θ) modulo f by Horner's rule, then the gcd with f
         lin, acc = [K.one, K.mul(K.convert(s), theta)], []
         for c in phi:

@@ -481,3 +481,93 @@ def in_crootof(c, K) -> sp.Expr:
     coeffs = gamma_coordinates(c, K)
     root, n = K.crootof(), len(coeffs) - 1
     return sp.Add(*[QQ.to_sympy(a) * root ** (n - i) for i, a in enumerate(coeffs) if a])
+
+
+# --- the factor of a polynomial holding a root, by the embeddings of the base ------------------------------------
+def _embeddings(K) -> list:
+    """All complex embeddings of ``K``: tuples of the generators' values, bottom level first (current precision)."""
+    if not isinstance(K, TowerField):
+        coeffs = [mpmath.mpf(int(c.numerator)) / int(c.denominator) for c in K.mod.to_list()]
+        return [(z,) for z in mpmath.polyroots(coeffs, maxsteps=500, extraprec=4 * mpmath.mp.prec)]
+    out = []
+    for emb in _embeddings(K.base):
+        coeffs = [_at(c, K.base, emb) for c in K.own]
+        out += [(*emb, z) for z in mpmath.polyroots(coeffs, maxsteps=500, extraprec=4 * mpmath.mp.prec)]
+    return out
+
+
+def _at(c, K, emb):
+    """Value of an element of ``K`` under the embedding ``emb``."""
+    acc = mpmath.mpf(0)
+    if not isinstance(K, TowerField):
+        for a in c.to_list():
+            acc = acc * emb[0] + mpmath.mpf(int(a.numerator)) / int(a.denominator)
+        return acc
+    for a in c.rep:
+        acc = acc * emb[-1] + _at(a, K.base, emb[:-1])
+    return acc
+
+
+def _monomials(K, emb) -> list:
+    """Values of the monomial basis (the order of :func:`flatten`) under ``emb``."""
+    if not isinstance(K, TowerField):
+        n = base_degree(K)
+        return [emb[0] ** (n - 1 - i) for i in range(n)]
+    lower = _monomials(K.base, emb[:-1])
+    return [emb[-1] ** j * v for j in reversed(range(K.e)) for v in lower]
+
+
+def _unflatten(coords: list, K):
+    if not isinstance(K, TowerField):
+        return K.from_list(list(coords)) if hasattr(K, "from_list") else K(list(coords))
+    d = base_degree(K.base)
+    return TowerElement(dup_strip([_unflatten(coords[i * d : (i + 1) * d], K.base) for i in range(K.e)]), K)
+
+
+_EMBEDDINGS: dict = {}
+
+
+def factor_holding(f: list, K, phi: list, s: int, e: int) -> list | None:
+    """The monic factor of ``f`` (monic, over ``K``) of degree ``e`` whose roots ``ρ`` make ``ρ + s Θ`` roots of
+    ``φ``: under every embedding ``σ`` of ``K`` its coefficients are the elementary symmetric functions of those
+    roots of ``σ(f)``, the coordinates follow by a linear solve and rational reconstruction, and the candidate is
+    accepted only when it divides ``f`` exactly (then it is the minimal polynomial of the root over ``K``, Trager
+    (1976), §3).  None when no precision tried gives an exact factor."""
+    from fractions import Fraction
+
+    theta = primitive(K)
+    for dps in (60, 200, 600):
+        with mpmath.workdps(dps):
+            if (dps, K) not in _EMBEDDINGS:
+                embs = _embeddings(K)
+                if len(embs) != base_degree(K):  # pragma: no cover - polyroots returns all roots
+                    return None
+                _EMBEDDINGS[(dps, K)] = embs, mpmath.inverse(mpmath.matrix([_monomials(K, emb) for emb in embs]))
+            embs, Vinv = _EMBEDDINGS[(dps, K)]
+            phiv = [mpmath.mpf(int(c.numerator)) / int(c.denominator) for c in phi]
+            rhs = []
+            for emb in embs:
+                t = s * _at(theta, K, emb)
+                roots = mpmath.polyroots([_at(c, K, emb) for c in f], maxsteps=500, extraprec=4 * mpmath.mp.prec)
+                scale = [sum(abs(c) * abs(z + t) ** (len(phiv) - 1 - i) for i, c in enumerate(phiv)) for z in roots]
+                ranked = sorted(
+                    zip(roots, scale, strict=True), key=lambda q: abs(mpmath.polyval(phiv, q[0] + t)) / q[1]
+                )
+                poly = [mpmath.mpf(1)]
+                for z, _ in ranked[:e]:
+                    poly = [a - z * b for a, b in zip([*poly, 0], [0, *poly], strict=True)]
+                rhs.append(poly[1:])
+            own = [K.one]
+            for k in range(e):
+                coords = Vinv * mpmath.matrix([row[k] for row in rhs])
+                bound = 10 ** (dps // 3)
+                exact = [
+                    Fraction(
+                        mpmath.nstr(mpmath.re(x), dps, min_fixed=-mpmath.inf, max_fixed=mpmath.inf)
+                    ).limit_denominator(bound)
+                    for x in coords
+                ]
+                own.append(_unflatten([QQ(q.numerator, q.denominator) for q in exact], K))
+            if not _reduce(f, own, K):
+                return own
+    return None

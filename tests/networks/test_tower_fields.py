@@ -137,6 +137,18 @@ def test_tower_numbers_and_exact_values(tower):
     assert ex.sign(r2 - L2.convert(r1), L2) == -1  # √(1 + √3) < √3
 
 
+def test_factor_of_a_reducible_polynomial_over_a_tower(tower):
+    """(t - √3)(t² - 5) over QQ(√2, √3): the root √5 gets the level polynomial t² - 5 (its minimal polynomial over
+    QQ(√2, √3), of degree 2), a degree-8 field."""
+    _, L1, _, r1, _, _ = tower
+    f = ex.dup_mul([L1.one, -r1], [L1.one, L1.zero, L1(-5)], L1)
+    r, L = ex.extend_with_root(f, L1, mpmath.sqrt(5), "√5")
+    assert L.own == [L1.one, L1.zero, L1(-5)] and ex.field_degree(L) == 8
+    assert r * r == 5
+    with mpmath.workdps(50):
+        assert abs(ex.num(r, L) - mpmath.sqrt(5)) < mpmath.mpf(10) ** -30
+
+
 def test_norm_of_a_tower_polynomial(tower):
     _, _, L2, _, r2, _ = tower
     x = sp.Symbol("x")
