@@ -36,8 +36,8 @@ from ._tower import TowerField
 _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
-#: the same with python-flint installed (tower fields; a degree-18 Bott–Duffin case takes seconds, while a step from
-#: a degree-18 tower to degree 36 can take minutes in the gcd over the tower that finds the new level's polynomial)
+#: the same with python-flint installed (tower fields: a random degree-5 Bott–Duffin case needing degree 18 took
+#: about 6 s, one needing degree 36 about 100 s, mostly in norms and in finding each new level's polynomial)
 MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
@@ -354,8 +354,10 @@ def extend_with_root(f: list, K, x_num, what: str):
     ``K2`` is the tower field ``K[x]/(own)`` with ``own`` the irreducible factor of ``f`` over ``K`` holding ``r``
     (``r`` is the class of ``x``).  ``own`` and a primitive element of the whole tower come from Trager's squarefree
     norm (Trager (1976), §3): ``γ = r + s Θ`` (``Θ`` the primitive element of ``K``) is a ``CRootOf`` of an
-    irreducible factor ``φ`` of the norm of ``f(x - s Θ)``, and ``own = gcd(f(x), φ(x + s Θ))``.  ``K2 = K`` when
-    ``r`` already lies in ``K``.  ``Nested`` (before any costly step) when the degree of ``K2`` would exceed
+    irreducible factor ``φ`` of the norm of ``f(x - s Θ)``, and ``own = gcd(f(x), φ(x + s Θ))``: ``f`` itself when
+    ``deg φ = [K : QQ] deg f``, else (over a tower) the factor found from the embeddings of ``K`` and certified by
+    exact division (:func:`_tower.factor_holding`), or the gcd over ``K``.  ``K2 = K`` when ``r`` already lies in
+    ``K``.  ``Nested`` (before any costly step) when the degree of ``K2`` would exceed
     :func:`max_field_degree`."""
     theta, f = _tower.primitive(K), _tower.monic(f, K)
     if dup_degree(f) == 1:
@@ -416,8 +418,8 @@ def gcd(f: list, g: list, K) -> list:
 
 def max_field_degree() -> int:
     """Largest degree over QQ of a network's number field: :data:`MAX_FIELD_DEGREE`, or
-    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its resultants, factorisations and certified root isolation
-    make large fields affordable)."""
+    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its characteristic polynomials, factorisations, exact linear
+    solves and certified root isolation make large fields affordable)."""
     return MAX_FIELD_DEGREE if flint_module() is None else MAX_FIELD_DEGREE_FLINT
 
 

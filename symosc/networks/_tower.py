@@ -5,8 +5,9 @@ Elements are dense coefficient lists over ``K`` (highest power first, degree < `
 nested extension keep the small heights of their defining polynomials (the same numbers written in a primitive
 element's power basis have coefficients of thousands of digits).  The field also records a primitive element of
 the whole tower, ``γ = x + s Θ`` (``Θ`` the primitive element of ``K``), a real root (``index``) of the irreducible
-rational polynomial ``φ``; it is used only for the numerical value of ``x`` (certified root isolation of ``φ``) and
-to write an element as an exact SymPy number, a polynomial in ``CRootOf(φ, index)``.  The construction is Trager's
+rational polynomial ``φ``; it is used for the numerical value of ``x`` (certified root isolation of ``φ``), for
+Trager's shift when the tower is extended again, and to write an element as an exact SymPy number, a polynomial in
+``CRootOf(φ, index)``.  The construction is Trager's
 (Trager (1976), §3; Cohen (1993), §3.6.2).
 """
 
