@@ -1,8 +1,9 @@
 """Exact arithmetic of the synthesis procedures (private): rational functions over a number field.
 
 Numerators and denominators are dense coefficient lists (highest power first) over a SymPy domain ``K``: the
-rationals ``QQ`` or an algebraic field ``QQ<a, b, ...>`` (square roots and ``CRootOf`` numbers, with a primitive
-element).  All arithmetic,
+rationals ``QQ``, an algebraic field ``QQ<a, b, ...>`` (square roots and ``CRootOf`` numbers, with a primitive
+element) or a tower field ``K[x]/(own)`` over one of them (``_tower``, for roots of polynomials whose coefficients
+are algebraic).  All arithmetic,
 cancellation and division is exact polynomial arithmetic in ``K`` (no ``simplify``); numbers are evaluated only to
 decide signs and to pick the smallest of several exactly known candidates.
 """
@@ -23,19 +24,21 @@ from sympy.polys.densearith import (
     dup_sub,
 )
 from sympy.polys.densebasic import dup_degree, dup_LC, dup_strip
-from sympy.polys.densetools import dup_diff, dup_eval, dup_monic, dup_shift
+from sympy.polys.densetools import dup_diff, dup_eval, dup_shift
 from sympy.polys.euclidtools import dup_inner_gcd, dup_invert
 from sympy.polys.factortools import dup_factor_list
 from sympy.polys.polyerrors import ExactQuotientFailed
 
 from ..errors import ModelError
+from . import _tower
+from ._tower import TowerField
 
 _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
-#: the same with python-flint installed (beyond it the big-number arithmetic in the primitive element's basis is too
-#: slow: a random degree-5 Bott–Duffin target needing a degree-18 field took 100 s)
-MAX_FIELD_DEGREE_FLINT = 16
+#: the same with python-flint installed (tower fields: a random degree-5 Bott–Duffin case needing degree 18 took
+#: about 6 s, one needing degree 36 about 100 s, mostly in norms and in finding each new level's polynomial)
+MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of a polynomial whose coefficients are themselves algebraic numbers: {what}); exact synthesis keeps every "
@@ -83,6 +86,8 @@ def _qq(c):
 
 def num(c, K, digits: int = _DIGITS):
     """Numerical value (mpmath) of a domain element: Horner's rule in the generator's value."""
+    if isinstance(K, TowerField):
+        return _tower.value(c, K, digits)
     with mpmath.workdps(digits + 10):
         if K.is_QQ:
             return _qq(c)
@@ -146,21 +151,25 @@ def normalize(N: list, D: list, K) -> tuple[list, list]:
     """Cancel the common factor and make the denominator monic."""
     if not N:
         return [], [K.one]
-    if K.is_QQ or not coprime(N, D, K):
+    if isinstance(K, TowerField):
+        g = [K.one] if coprime(N, D, K) else gcd(N, D, K)
+        if dup_degree(g) > 0:
+            N, D = dup_exquo(N, g, K), dup_exquo(D, g, K)
+    elif K.is_QQ or not coprime(N, D, K):
         _, N, D = dup_inner_gcd(N, D, K)
-    inv = K.quo(K.one, dup_LC(D, K))  # one inversion (dividing coefficient by coefficient inverts once per coefficient)
+    inv = _tower.inverse(dup_LC(D, K), K)  # one inversion (not one per coefficient)
     return dup_mul_ground(N, inv, K), dup_mul_ground(D, inv, K)
 
 
 def coprime(f: list, g: list, K) -> bool:
-    """True when ``f`` and ``g`` over a number field are certainly coprime: their images modulo a prime ``q`` under
-    ``γ -> a`` (``a`` a root of ``γ``'s minimal polynomial mod ``q``) keep their degrees and have gcd 1, so the
-    resultant is nonzero.  False means "not decided" (the caller then computes the gcd over the field).  Needs
-    python-flint; without it always False."""
+    """True when ``f`` and ``g`` over a number field are certainly coprime: their images modulo a prime ``q`` (each
+    generator of the field, or of each level of a tower, sent to a root mod ``q`` of its defining polynomial) keep
+    their degrees and have gcd 1, so the resultant is nonzero.  False means "not decided" (the caller then computes
+    the gcd over the field).  Needs python-flint; without it always False."""
     if flint_module() is None:
         return False
-    for q, a in _reductions(K):
-        F, G = _reduce(f, K, q, a), _reduce(g, K, q, a)
+    for q, roots in _reductions(K):
+        F, G = _reduce(f, K, q, roots), _reduce(g, K, q, roots)
         if F is None or G is None or F.degree() != dup_degree(f) or G.degree() != dup_degree(g):
             continue
         return F.gcd(G).degree() == 0
@@ -171,35 +180,60 @@ _REDUCTIONS: dict = {}
 
 
 def _reductions(K) -> list:
-    """Up to three pairs ``(q, a)``: word-size primes ``q`` with a root ``a`` of the generator's minimal polynomial
-    mod ``q`` (its coefficients ``q``-integral)."""
+    """Up to three pairs ``(q, roots)``: word-size primes ``q`` with roots mod ``q`` of the defining polynomial of
+    each level of ``K`` (bottom first; the polynomials ``q``-integral)."""
     if K not in _REDUCTIONS:
-        flint = flint_module()
-        mod = K.mod.to_list()
-        out, q = [], 2**62
-        while len(out) < 3 and q > 2**61:
-            q = int(sp.prevprime(q))
-            if any(int(c.denominator) % q == 0 for c in mod):
-                continue
-            poly = flint.nmod_poly([int(c.numerator) * pow(int(c.denominator), -1, q) for c in reversed(mod)], q)
-            roots = poly.roots()
-            if roots:
-                out.append((q, int(roots[0][0])))
+        levels = K.levels if isinstance(K, TowerField) else [K]
+        out, q, tries = [], 2**62, 0
+        while len(out) < 3 and tries < 200:
+            q, tries = int(sp.prevprime(q)), tries + 1
+            roots: list = []
+            for level, F in enumerate(levels):
+                defining = F.mod.to_list() if level == 0 else F.own
+                image = _reduce(defining, levels[level - 1], q, roots) if level else _reduce_qq(defining, q)
+                found = image.roots() if image is not None and image.degree() == len(defining) - 1 else []
+                if not found:
+                    break
+                roots.append(int(found[0][0]))
+            else:
+                out.append((q, roots))
         _REDUCTIONS[K] = out
     return _REDUCTIONS[K]
 
 
-def _reduce(f: list, K, q: int, a: int):
+def _reduce_qq(coeffs: list, q: int):
+    if any(int(c.denominator) % q == 0 for c in coeffs):
+        return None
+    return flint_module().nmod_poly([int(c.numerator) * pow(int(c.denominator), -1, q) for c in reversed(coeffs)], q)
+
+
+def _reduce_element(c, K, q: int, roots: list):
+    """Image in ``F_q`` of an element of ``K`` (None when a denominator is divisible by ``q``)."""
+    if isinstance(K, TowerField):
+        acc, a = 0, roots[-1]
+        for b in c.rep:
+            v = _reduce_element(b, K.base, q, roots[:-1])
+            if v is None:
+                return None
+            acc = (acc * a + v) % q
+        return acc
+    acc, a = 0, roots[0]
+    for b in c.to_list():
+        den = int(b.denominator) % q
+        if den == 0:
+            return None
+        acc = (acc * a + int(b.numerator) * pow(den, -1, q)) % q
+    return acc
+
+
+def _reduce(f: list, K, q: int, roots: list):
     """Image of a polynomial over ``K`` in ``F_q[x]`` (None when a denominator is divisible by ``q``)."""
     out = []
     for c in f:
-        acc = 0
-        for b in c.to_list():
-            den = int(b.denominator) % q
-            if den == 0:
-                return None
-            acc = (acc * a + int(b.numerator) * pow(den, -1, q)) % q
-        out.append(acc)
+        v = _reduce_element(c, K, q, roots)
+        if v is None:
+            return None
+        out.append(v)
     return flint_module().nmod_poly(list(reversed(out)), q)
 
 
@@ -272,55 +306,70 @@ def to_field(f: list, K_old, K_new) -> list:
 
 
 def norm(f: list, K) -> list:
-    """Norm of ``f`` over ``K`` down to QQ: ``Res_z(m(z), f(z, x))`` with ``m`` the minimal polynomial of ``K``'s
-    generator (python-flint's resultant when available, SymPy's otherwise)."""
+    """Norm of a monic ``f`` over ``K`` (an algebraic or a tower field) down to QQ.
+
+    With python-flint: ``det(Σ M(c_i) x^i)`` with ``M(c)`` the rational matrix of multiplication by ``c`` in ``K``'s
+    monomial basis, computed as the characteristic polynomial of the block companion matrix of that matrix
+    polynomial (Gohberg, Lancaster and Rodman (1982), §1.1).  Without it (algebraic fields only): SymPy's
+    ``Res_z(m(z), f(z, x))``."""
     flint = flint_module()
     if flint is None:
+        if isinstance(K, TowerField):  # pragma: no cover - the test environment installs python-flint
+            raise Nested("nested number fields need python-flint (pip install symosc[exact])")
         from sympy.polys.sqfreetools import dmp_norm
 
         return dmp_norm(f, 0, K)
-    ctx = flint.fmpq_mpoly_ctx.get(("z", "x"), "lex")
-    z, x = ctx.gens()
-
-    def in_z(coeffs: list):
-        acc = ctx.from_dict({})
-        for c in coeffs:
-            acc = acc * z + _fmpq(c)
-        return acc
-
-    m = in_z(K.mod.to_list())
-    F = ctx.from_dict({})
-    for c in f:
-        F = F * x + in_z(c.to_list())
-    res = m.resultant(F, "z").to_dict()
-    degree = max(e[1] for e in res)
-    out = [QQ.zero] * (degree + 1)
-    for (_, ex_), c in res.items():
-        out[degree - ex_] = QQ(int(c.p), int(c.q))
-    return dup_strip(out)
+    n, d = dup_degree(f), field_degree(K)
+    blocks = [_tower.matrix(c, K) for c in reversed(f[1:])]  # M(c_0), ..., M(c_{n-1})
+    C = flint.fmpq_mat(n * d, n * d)
+    for i in range(n - 1):
+        for k in range(d):
+            C[i * d + k, (i + 1) * d + k] = 1
+    for j, B in enumerate(blocks):
+        for r in range(d):
+            for k in range(d):
+                if B[r, k] != 0:
+                    C[(n - 1) * d + r, j * d + k] = -B[r, k]
+    # charpoly(C)(x) = charpoly(d C)(d x) / d^(n d) with d C integral (flint's multimodular integer charpoly)
+    den = 1
+    for i in range(n * d):
+        for k in range(n * d):
+            den = flint.fmpz(den).lcm(C[i, k].q) if C[i, k] != 0 else den
+    Z = flint.fmpz_mat(n * d, n * d, [int(C[i, k] * den) for i in range(n * d) for k in range(n * d)])
+    coeffs = Z.charpoly().coeffs()  # lowest power first
+    size = n * d
+    return _from_flint(
+        flint.fmpq_poly([flint.fmpq(int(c), 1) / flint.fmpq(int(den)) ** (size - i) for i, c in enumerate(coeffs)])
+    )
 
 
 def field_degree(K) -> int:
-    return 1 if K.is_QQ else len(K.mod.to_list()) - 1
+    return _tower.base_degree(K)
 
 
 def extend_with_root(f: list, K, x_num, what: str):
-    """``(r, K2)``: the real root ``r`` of ``f`` (over an algebraic field ``K``) nearest ``x_num``, exact in
-    ``K2 = K(r)``.
+    """``(r, K2)``: the real root ``r`` of ``f`` (over an algebraic or a tower field ``K``) nearest ``x_num``,
+    exact in ``K2 = K(r)``.
 
-    With ``K = QQ(θ)`` the new field is ``QQ(γ)`` with the primitive element ``γ = r + s θ`` (Trager's squarefree
-    norm): ``γ`` is a ``CRootOf`` of an irreducible factor of the norm of ``f(x - s θ)``, and ``θ`` is written as
-    a polynomial in ``γ`` by exact linear algebra.  ``K2 = K`` when ``r`` already lies in ``K``.  ``Nested``
-    (before the gcd and the linear solve) when the degree of ``K2`` would exceed :func:`max_field_degree`."""
-    theta = K.unit
+    ``K2`` is the tower field ``K[x]/(own)`` with ``own`` the irreducible factor of ``f`` over ``K`` holding ``r``
+    (``r`` is the class of ``x``).  ``own`` and a primitive element of the whole tower come from Trager's squarefree
+    norm (Trager (1976), §3): ``γ = r + s Θ`` (``Θ`` the primitive element of ``K``) is a ``CRootOf`` of an
+    irreducible factor ``φ`` of the norm of ``f(x - s Θ)``, and ``own = gcd(f(x), φ(x + s Θ))``: ``f`` itself when
+    ``deg φ = [K : QQ] deg f``, else (over a tower) the factor found from the embeddings of ``K`` and certified by
+    exact division (:func:`_tower.factor_holding`), or the gcd over ``K``.  ``K2 = K`` when ``r`` already lies in
+    ``K``.  ``Nested`` (before the gcd and the new level) when the degree of ``K2`` would exceed
+    :func:`max_field_degree`."""
+    theta, f = _tower.primitive(K), _tower.monic(f, K)
+    if dup_degree(f) == 1:
+        return K.neg(f[1]), K
     for s in (1, -1, 2, -2, 3, -3, 4, -4):
-        shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s θ)
+        shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s Θ)
         N = norm(shifted, K)
         if squarefree_qq(N):
             break
     else:  # pragma: no cover - all but finitely many shifts give a squarefree norm
         raise ModelError(f"no squarefree norm found for {what}")
-    gamma_num = x_num + s * _generator_value(K, _DIGITS)
+    gamma_num = x_num + s * _tower.primitive_value(K, _DIGITS)
     phi, index, dist = None, None, None
     for factor, _ in factor_qq(N):
         for i, root in enumerate(real_roots_numeric(factor)):
@@ -331,77 +380,46 @@ def extend_with_root(f: list, K, x_num, what: str):
     degree, m = dup_degree(phi), field_degree(K)
     if degree > max_field_degree():
         raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
-    # the irreducible factor of f over K holding r: gcd(f(x), φ(x + s θ)) (Trager); f itself when of full degree
     if degree == m * dup_degree(f):
         own = f
-    else:
-        own = gcd(f, dup_shift([K.convert_from(c, QQ) for c in phi], K.mul(K.convert(s), theta), K), K)
+    elif isinstance(K, TowerField) and (own := _tower.factor_holding(f, K, phi, s, degree // m)) is not None:
+        pass
+    else:  # φ(x + s Θ) modulo f by Horner's rule, then the gcd with f
+        lin, acc = [K.one, K.mul(K.convert(s), theta)], []
+        for c in phi:
+            acc = _tower._reduce(dup_add(dup_mul(acc, lin, K), [K.convert(c)], K), f, K)
+        own = gcd(f, acc, K)
     if dup_degree(own) == 1:  # r lies in K (then degree == m)
-        return K.quo(K.neg(own[1]), own[0]), K
-    y = sp.Dummy("y")
-    L = QQ.algebraic_field(sp.CRootOf(sp.Poly([QQ.to_sympy(c) for c in phi], y), index))
-    h = L([QQ.convert(c) for c in _theta_in_gamma(own, K, s)])
-    _EMBEDDINGS[(K, L)] = h
-    r = L.sub(L.unit, L.mul(L.convert(s), h))
-    if abs(num(h, L) - _generator_value(K, _DIGITS)) > mpmath.mpf(10) ** -20 * (1 + abs(gamma_num)):
-        raise ModelError(f"wrong embedding of the field of {what}")  # pragma: no cover - a certified root choice
+        return K.neg(own[1]), K
+    L = TowerField(K, own, phi, index, s)
+    r = L.gen
+    if abs(num(r, L) - x_num) > mpmath.mpf(10) ** -8 * (1 + abs(x_num)):  # x_num: a floating-point root of f
+        raise ModelError(f"wrong root of {what}: {num(r, L)} vs {x_num}")  # pragma: no cover - a certified root choice
     return r, L
 
 
-def _theta_in_gamma(own: list, K, s: int) -> list:
-    """Coefficients (highest power first) of ``θ`` as a polynomial in ``γ = x + s θ`` in ``K[x]/(own)``: the powers
-    of ``γ`` written in the basis ``θ^i x^j`` form a rational matrix, and ``θ`` is its solution for the vector of
-    ``θ`` (flint's exact solver when installed, SymPy's DomainMatrix otherwise)."""
-    m, e = field_degree(K), dup_degree(own)
-    size = m * e
-    own = dup_monic(own, K)
-
-    def vector(pw: list) -> list:
-        pw = [K.zero] * (e - len(pw)) + pw
-        out = []
-        for c in pw:
-            coeffs = c.to_list()
-            out += [QQ.zero] * (m - len(coeffs)) + coeffs
-        return out
-
-    columns, pw, step = [], [K.one], [K.one, K.mul(K.convert(s), K.unit)]
-    for _ in range(size):
-        columns.append(vector(pw))
-        pw = dup_rem(dup_mul(pw, step, K), own, K)
-    target = vector([K.unit])
-    flint = flint_module()
-    if flint is not None:
-        A = flint.fmpq_mat(size, size, [_fmpq(columns[j][i]) for i in range(size) for j in range(size)])
-        b = flint.fmpq_mat(size, 1, [_fmpq(t) for t in target])
-        sol = A.solve(b)
-        coeffs = [QQ(int(sol[i, 0].p), int(sol[i, 0].q)) for i in range(size)]
-    else:
-        from sympy.polys.matrices import DomainMatrix
-
-        A = DomainMatrix([[columns[j][i] for j in range(size)] for i in range(size)], (size, size), QQ)
-        b = DomainMatrix([[t] for t in target], (size, 1), QQ)
-        coeffs = [row[0] for row in A.lu_solve(b).to_list()]
-    return dup_strip(list(reversed(coeffs)))
-
-
 def gcd(f: list, g: list, K) -> list:
-    """Monic gcd (SymPy's: heuristic over QQ, subresultants over a number field, after a modular coprimality
-    test)."""
+    """Monic gcd (SymPy's: heuristic over QQ, subresultants over an algebraic field after a modular coprimality
+    test; Euclid's algorithm with monic remainders over a tower field)."""
     if not (f or g):
         return []
+    if isinstance(K, TowerField):
+        if f and g and coprime(f, g, K):
+            return [K.one]
+        while g:
+            g = _tower.monic(g, K)
+            f, g = g, _tower._reduce(f, g, K)
+        return _tower.monic(f, K)
     if not K.is_QQ and f and g and coprime(f, g, K):
         return [K.one]
     h = dup_inner_gcd(f, g, K)[0]
     return dup_mul_ground(h, K.quo(K.one, dup_LC(h, K)), K)
 
 
-_EMBEDDINGS: dict = {}
-
-
 def max_field_degree() -> int:
     """Largest degree over QQ of a network's number field: :data:`MAX_FIELD_DEGREE`, or
-    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its resultants, factorisations and certified root isolation
-    make large fields affordable)."""
+    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its characteristic polynomials, factorisations, exact linear
+    solves and certified root isolation make large fields affordable)."""
     return MAX_FIELD_DEGREE if flint_module() is None else MAX_FIELD_DEGREE_FLINT
 
 
@@ -455,16 +473,11 @@ def _from_flint(g) -> list:
 
 
 def convert(c, K_old, K_new):
-    """A domain element of ``K_old`` as an element of ``K_new`` (an extension of it)."""
+    """A domain element of ``K_old`` as an element of ``K_new`` (an extension of it: a field above it in a
+    tower)."""
     if K_old == K_new:
         return c
-    h = _EMBEDDINGS.get((K_old, K_new))
-    if h is None:
-        return K_new.convert_from(c, K_old)
-    acc = K_new.zero
-    for a in c.to_list():
-        acc = K_new.add(K_new.mul(acc, h), K_new.convert_from(a, QQ))
-    return acc
+    return K_new.convert_from(c, K_old)
 
 
 def exquo(f: list, g: list, K, what: str) -> list:

@@ -1,13 +1,16 @@
 """Shared driver of the one-port synthesis procedures (private): removals, minimum resistance, cycles.
 
 Every step is exact arithmetic over a number field ``K`` (see ``_exact``): ``QQ`` for rational targets, extended
-by an algebraic number (primitive element, degree <= ``_exact.max_field_degree()``) when the minimum of
-``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is irrational.  Element values are then exact algebraic
-numbers (radicals or polynomials in ``CRootOf`` numbers).
+by an algebraic number (a square root or ``CRootOf``, then tower fields ``K[x]/(own)``, total degree <=
+``_exact.max_field_degree()``) when the minimum of ``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is
+irrational.  Element values are kept as field elements until the network is complete and then written as exact
+algebraic numbers (radicals or polynomials in one ``CRootOf``: the primitive element of the largest field used,
+when every other field used lies below it in its tower).
 """
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import mpmath
@@ -17,6 +20,7 @@ from sympy.polys.constructor import construct_domain
 
 from ..errors import ModelError, ParameterError
 from . import _exact as ex
+from ._tower import TowerField
 from ._util import P, as_symbol, rational_function
 from .oneports import BruneSection, Capacitor, Inductor, OnePort, Parallel, Resistor, Series
 
@@ -167,13 +171,18 @@ def _at_root(poly: list, root: sp.Expr) -> sp.Expr:
     return _clean(value)
 
 
-def _family_values(a: list, h: list, K) -> list[tuple[sp.Expr, sp.Expr]]:
+def _family_values(a: list, h: list, K, values: _Values) -> list[tuple[sp.Expr, sp.Expr]]:
     """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)`` over the roots ``y_i = -w2_i`` of ``h``: pairs ``(1/c_i, c_i/w2_i)``,
     each computed in the field of its root (as polynomials in the root reduced modulo ``h``)."""
     if ex.dup_degree(h) == 1:
         yi = K.quo(K.neg(h[1]), h[0])
         c = K.quo(ex.dup_eval(a, yi, K), ex.dup_eval(ex.dup_diff(h, 1, K), yi, K))
-        return [(ex.positive(K.quo(K.one, c), K, "tank element"), ex.positive(K.quo(c, K.neg(yi)), K, "tank element"))]
+        return [
+            (
+                values.positive(K.quo(K.one, c), K, "tank element"),
+                values.positive(K.quo(c, K.neg(yi)), K, "tank element"),
+            )
+        ]
     if not K.is_QQ:
         raise ex.Nested(
             "imaginary-axis poles at the roots of an irreducible polynomial in p² over an algebraic field: each "
@@ -188,8 +197,12 @@ def _family_values(a: list, h: list, K) -> list[tuple[sp.Expr, sp.Expr]]:
     return out
 
 
-def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], list, list]:
-    """Remove the imaginary-axis poles of ``F = N/D`` (Bulgakov (1954), §9.23, Theorem IV), exactly over ``K``."""
+def remove_axis_poles(
+    N: list, D: list, K, mode: str, values: _Values | None = None
+) -> tuple[list[OnePort], list, list]:
+    """Remove the imaginary-axis poles of ``F = N/D`` (Bulgakov (1954), §9.23, Theorem IV), exactly over ``K``
+    (element values as exact numbers at once unless a synthesis collects them in ``values``)."""
+    values = values or _Values(immediate=True)
     parts: list[OnePort] = []
     dn, dd = ex.dup_degree(N), ex.dup_degree(D)
     if dn > dd + 1:
@@ -197,7 +210,7 @@ def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], li
     if dn == dd + 1:
         k = K.quo(N[0], D[0])
         N = ex.dup_sub(N, ex.dup_mul_ground(ex.mul_p(D, K), k, K), K)
-        kv = ex.positive(k, K, "residue at infinity")
+        kv = values.positive(k, K, "residue at infinity")
         parts.append(Inductor(kv) if mode == "Z" else Capacitor(kv))
     if D and not D[-1]:
         D1 = D[:-1]
@@ -206,8 +219,8 @@ def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], li
         k = K.quo(ex.dup_eval(N, K.zero, K), D1[-1])
         N = ex.exquo(ex.dup_sub(N, ex.dup_mul_ground(D1, k, K), K), [K.one, K.zero], K, "pole at zero")
         D = D1
-        kv = ex.positive(k, K, "residue at p = 0")
-        parts.append(Capacitor(1 / kv) if mode == "Z" else Inductor(1 / kv))
+        kv = values.positive(K.quo(K.one, k), K, "residue at p = 0", sign_of=k)
+        parts.append(Capacitor(kv) if mode == "Z" else Inductor(kv))
     G = ex.gcd(D, ex.reflect(D, K), K)
     if ex.dup_degree(G) > 0:
         H = ex.even_in_y(G, K)
@@ -219,7 +232,7 @@ def remove_axis_poles(N: list, D: list, K, mode: str) -> tuple[list[OnePort], li
             N = ex.exquo(ex.dup_sub(N, ex.dup_mul(A, D2, K), K), Hp, K, "axis-pole remainder")
             D = D2
             a = ex.even_in_y(ex.exquo(A, [K.one, K.zero], K, "odd part"), K) if A else []
-            for v1, v2 in _family_values(a, h, K):
+            for v1, v2 in _family_values(a, h, K, values):
                 parts.append(_tank(v1, v2, mode))
     N, D = ex.normalize(N, D, K)
     return parts, N, D
@@ -235,11 +248,60 @@ def _in_p2(h: list, K) -> list:
     return out
 
 
+class _Values:
+    """Element values of one synthesis, kept exact (field element and field) behind positive placeholder symbols
+    until the network is complete; :meth:`finish` then writes them all in the largest field used."""
+
+    def __init__(self, immediate: bool = False) -> None:
+        self.pending: dict[sp.Dummy, tuple[Any, Any]] = {}
+        self.immediate = immediate
+
+    def positive(self, c, K, what: str, sign_of=None) -> sp.Expr:
+        """A placeholder for the positive value ``c`` (its sign checked exactly now, on ``sign_of`` if given)."""
+        if ex.sign(c if sign_of is None else sign_of, K) <= 0:
+            raise ModelError(
+                f"synthesis reached a non-positive {what} = {ex.sym(c, K)} (the target is not positive real?)"
+            )
+        if K.is_QQ or self.immediate:
+            return ex.sym(c, K)
+        d = sp.Dummy(positive=True)
+        self.pending[d] = (c, K)
+        return d
+
+    def finish(self, net: OnePort | None) -> OnePort | None:
+        """``net`` with its placeholders replaced by exact numbers: in the field above all others of one tower
+        (one ``CRootOf`` for all values), in each value's own field when two branches extended differently."""
+        fields = {id(K): K for _, K in self.pending.values()}.values()
+        top = max(fields, key=ex.field_degree, default=None)
+        below = set(map(id, top.levels)) if isinstance(top, TowerField) else {id(top)}
+        common = all(id(K) in below for K in fields)
+        subs = {}
+        for d, (c, K) in self.pending.items():
+            if common and K != top:
+                c, K = top.convert(c), top
+            subs[d] = _clean(ex.sym(c, K))
+        return None if net is None else _substitute(net, subs)
+
+
+def _substitute(net: OnePort, subs: dict) -> OnePort:
+    changes = {}
+    for field in dataclasses.fields(net):
+        v = getattr(net, field.name)
+        if isinstance(v, OnePort):
+            changes[field.name] = _substitute(v, subs)
+        elif isinstance(v, tuple):
+            changes[field.name] = tuple(_substitute(x, subs) if isinstance(x, OnePort) else x for x in v)
+        elif isinstance(v, sp.Basic):
+            changes[field.name] = v.xreplace(subs)
+    return dataclasses.replace(net, **changes)
+
+
 class Engine:
     """Brune (``cycle="brune"``) or Bott–Duffin (``cycle="bott_duffin"``) synthesis over a number field."""
 
     def __init__(self, cycle: str) -> None:
         self.cycle = cycle
+        self.values = _Values()
 
     def run(self, N: list, D: list, K, depth: int = 0) -> OnePort | None:
         if depth > _MAX_DEPTH:  # pragma: no cover - each step lowers the degree
@@ -248,11 +310,11 @@ class Engine:
         if not N:
             return None
         if ex.dup_degree(N) == 0 and ex.dup_degree(D) == 0:
-            return Resistor(ex.positive(K.quo(N[0], D[0]), K, "resistance"))
-        parts, N, D = remove_axis_poles(N, D, K, "Z")
+            return Resistor(self.values.positive(K.quo(N[0], D[0]), K, "resistance"))
+        parts, N, D = remove_axis_poles(N, D, K, "Z", self.values)
         if parts:
             return join(parts, self.run(N, D, K, depth + 1), Series)
-        parts, Yn, Yd = remove_axis_poles(D, N, K, "Y")
+        parts, Yn, Yd = remove_axis_poles(D, N, K, "Y", self.values)
         if parts:
             inner = None if not Yn else self.run(Yd, Yn, K, depth + 1)
             return join(parts, inner, Parallel)
@@ -275,12 +337,13 @@ class Engine:
 
     def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
         """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
-        Rv = ex.positive(R, K, "minimum resistance" if mode == "Z" else "minimum conductance")
         rest_n = ex.dup_sub(N, ex.dup_mul_ground(D, R, K), K)
         if mode == "Z":
+            Rv = self.values.positive(R, K, "minimum resistance")
             return join([Resistor(Rv)], self.run(rest_n, D, K, depth + 1), Series)
+        Rv = self.values.positive(K.quo(K.one, R), K, "minimum conductance", sign_of=R)
         inner = None if not rest_n else self.run(D, rest_n, K, depth + 1)
-        return join([Resistor(ex.sym(K.quo(K.one, R), K))], inner, Parallel)
+        return join([Resistor(Rv)], inner, Parallel)
 
     def _brune(self, N: list, D: list, x0, K, depth: int) -> OnePort:
         pD = ex.mul_p(D, K)
@@ -300,8 +363,8 @@ class Engine:
         load = self.run(Z3n, Z2d, K, depth + 1)
         if load is None:
             raise ModelError("Brune cycle ended in a short circuit: unexpected for a minimum function")
-        vals = [ex.positive(v, K, name) for v, name in ((Lp, "Lp"), (Ls, "Ls"), (L2, "M"), (C, "C"))]
-        return BruneSection(*[_clean(v) for v in vals], load)
+        vals = [self.values.positive(v, K, name) for v, name in ((Lp, "Lp"), (Ls, "Ls"), (L2, "M"), (C, "C"))]
+        return BruneSection(*vals, load)
 
     def _bott_duffin(self, N: list, D: list, x0, K, depth: int) -> OnePort:
         L = ex.even_value(N, ex.mul_p(D, K), x0, K)  # Z(iω0) = iω0 L
@@ -326,9 +389,10 @@ class Engine:
                 raise ModelError("Bott–Duffin: a remainder vanished identically")
             return net
 
-        ex.positive(k, K, "k")
-        C1 = ex.positive(K.quo(K.one, K.mul(k, Fk)), K, "Bott–Duffin element")
-        L1 = ex.positive(K.quo(Fk, k), K, "Bott–Duffin element")
+        if ex.sign(k, K) <= 0:  # pragma: no cover - a positive root was chosen
+            raise ModelError("Bott–Duffin: Richards' k is not positive")
+        C1 = self.values.positive(K.quo(K.one, K.mul(k, Fk)), K, "Bott–Duffin element")
+        L1 = self.values.positive(K.quo(Fk, k), K, "Bott–Duffin element")
         if inductive:
             first = Parallel((Capacitor(C1), sub(ex.dup_mul_ground(Rn, Fk, K), Rd)))
             second = Parallel((Inductor(L1), sub(ex.dup_mul_ground(Rd, Fk, K), Rn)))
@@ -358,4 +422,5 @@ def _richards_k(P1: list, K):
 def synthesize(Z: Any, p: sp.Symbol, cycle: str) -> OnePort | None:
     """Network with impedance ``Z`` (None for a short circuit), by the Brune or the Bott–Duffin cycle."""
     N, D, K = to_exact(Z, p)
-    return Engine(cycle).run(N, D, K)
+    engine = Engine(cycle)
+    return engine.values.finish(engine.run(N, D, K))

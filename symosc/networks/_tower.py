@@ -1,0 +1,574 @@
+"""Tower number fields (private): ``L = K[x]/(own(x))`` over a number field ``K``.
+
+``K`` is a SymPy ``AlgebraicField`` or another :class:`TowerField`; ``own`` is monic and irreducible over ``K``.
+Elements are dense coefficient lists over ``K`` (highest power first, degree < ``deg own``), so the numbers of a
+nested extension keep the small heights of their defining polynomials (the same numbers written in a primitive
+element's power basis have coefficients of thousands of digits).  The field also records a primitive element of
+the whole tower, ``γ = x + s Θ`` (``Θ`` the primitive element of ``K``), a real root (``index``) of the irreducible
+rational polynomial ``φ``; it is used for the numerical value of ``x`` (certified root isolation of ``φ``), for
+Trager's shift when the tower is extended again, and to write an element as an exact SymPy number, a polynomial in
+``CRootOf(φ, index)``.  The construction is Trager's
+(Trager (1976), §3; Cohen (1993), §3.6.2).
+"""
+
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+from sympy import QQ
+from sympy.polys.densearith import dup_mul, dup_sub
+from sympy.polys.densebasic import dup_strip
+from sympy.polys.domains.characteristiczero import CharacteristicZero
+from sympy.polys.domains.field import Field
+from sympy.polys.domains.simpledomain import SimpleDomain
+from sympy.polys.polyerrors import CoercionFailed
+
+
+def _reduce(rep: list, own: list, K) -> list:
+    """``rep`` modulo the monic ``own`` over ``K``."""
+    e = len(own) - 1
+    rep = list(rep)
+    while len(rep) > e:
+        c = rep.pop(0)
+        if c:
+            for i in range(e):
+                rep[i] = rep[i] - c * own[i + 1]
+    return dup_strip(rep)
+
+
+def inverse(c, K):
+    """``1/c`` in ``K`` (an algebraic or a tower field), remembering the last few inverses of each field (the dense
+    routines divide many times by the same leading coefficient)."""
+    cache = _INVERSES.setdefault(K, {})
+    key = c if isinstance(c, TowerElement) else tuple(c.to_list()) if not K.is_QQ else c
+    inv = cache.get(key)
+    if inv is None:
+        inv = c.inverse() if isinstance(c, TowerElement) else K.quo(K.one, c)
+        if len(cache) > 256:
+            cache.clear()
+        cache[key] = inv
+    return inv
+
+
+_INVERSES: dict = {}
+
+
+def monic(f: list, K) -> list:
+    """``f`` divided by its leading coefficient (one inversion)."""
+    if not f:
+        return f
+    inv = inverse(f[0], K)
+    return [K.one, *(c * inv for c in f[1:])]
+
+
+def rem_monic(f: list, g: list, K) -> list:
+    """Remainder of ``f`` by ``g`` over ``K`` (one inversion: ``g``'s leading coefficient)."""
+    return _reduce(f, monic(g, K), K)
+
+
+def invert_mod(a: list, m: list, K) -> list:
+    """``1/a`` modulo the monic irreducible ``m`` over ``K`` by the extended Euclidean algorithm (one inversion in
+    ``K`` per division step)."""
+    r0, r1, s0, s1 = m, a, [], [K.one]
+    while len(r1) > 1:
+        inv = inverse(r1[0], K)
+        q, r = [], list(r0)
+        while len(r) >= len(r1):
+            c = r[0] * inv
+            q.append(c)
+            for i in range(1, len(r1)):
+                r[i] = r[i] - c * r1[i]
+            r.pop(0)
+        q = dup_strip(q)
+        r = dup_strip(r)
+        r0, r1, s0, s1 = r1, r, s1, dup_sub(s0, dup_mul(q, s1, K), K)
+    if not r1:
+        raise ZeroDivisionError("not invertible modulo an irreducible polynomial")
+    inv = inverse(r1[0], K)
+    return _reduce([c * inv for c in s1], m, K)
+
+
+class TowerElement:
+    """An element of a :class:`TowerField`: ``rep`` over the base field, reduced modulo ``own``."""
+
+    __slots__ = ("field", "rep")
+
+    def __init__(self, rep: list, field: TowerField) -> None:
+        self.rep = rep
+        self.field = field
+
+    def _coerce(self, other):
+        F = self.field
+        if isinstance(other, TowerElement) and other.field is F:
+            return other
+        try:
+            return F.convert(other)
+        except CoercionFailed:
+            return None
+
+    def to_list(self) -> list:
+        return list(self.rep)
+
+    def __bool__(self) -> bool:
+        return bool(self.rep)
+
+    def __eq__(self, other) -> bool:
+        other = self._coerce(other)
+        return other is not None and self.rep == other.rep
+
+    def __ne__(self, other) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        if len(self.rep) <= 1:  # equal to the base element (or int) it comes from
+            return hash(self.rep[0]) if self.rep else hash(0)
+        return hash((id(self.field), tuple(self.rep)))
+
+    def __neg__(self) -> TowerElement:
+        return TowerElement([-c for c in self.rep], self.field)
+
+    def __pos__(self) -> TowerElement:
+        return self
+
+    def __add__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        a, b = self.rep, o.rep
+        if len(a) < len(b):
+            a, b = b, a
+        n = len(a) - len(b)
+        return TowerElement(dup_strip(a[:n] + [x + y for x, y in zip(a[n:], b, strict=True)]), self.field)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return self + (-o)
+
+    def __rsub__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return o + (-self)
+
+    def __mul__(self, other):
+        F = self.field
+        if isinstance(other, TowerElement) and other.field is F:
+            if len(other.rep) == 1:
+                other = other.rep[0]
+            elif len(self.rep) == 1:
+                return other * self.rep[0]
+            else:
+                return TowerElement(_reduce(dup_mul(self.rep, other.rep, F.base), F.own, F.base), F)
+        try:
+            c = F.base.convert(other)
+        except CoercionFailed:
+            return NotImplemented
+        return TowerElement(dup_strip([a * c for a in self.rep]), F)
+
+    __rmul__ = __mul__
+
+    def __pow__(self, n: int) -> TowerElement:
+        if n < 0:
+            return (self.field.one / self) ** (-n)
+        out, sq = self.field.one, self
+        while n:
+            if n & 1:
+                out = out * sq
+            sq = sq * sq
+            n >>= 1
+        return out
+
+    def inverse(self) -> TowerElement:
+        F = self.field
+        if not self.rep:
+            raise ZeroDivisionError("division by zero in a tower field")
+        if len(self.rep) == 1:
+            return TowerElement([inverse(self.rep[0], F.base)], F)
+        return TowerElement(invert_mod(self.rep, F.own, F.base), F)
+
+    def __truediv__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        if len(o.rep) == 1:
+            inv = inverse(o.rep[0], self.field.base)
+            return TowerElement(dup_strip([a * inv for a in self.rep]), self.field)
+        return self * inverse(o, self.field)
+
+    def __rtruediv__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return o * inverse(self, self.field)
+
+    def __repr__(self) -> str:
+        return f"TowerElement({self.rep!r})"
+
+
+class TowerField(Field, CharacteristicZero, SimpleDomain):
+    """``base[x]/(own(x))``; ``phi``, ``index``, ``s``: ``γ = x + s Θ`` is ``CRootOf(phi, index)``."""
+
+    dtype = TowerElement
+    is_Numerical = True
+    is_Exact = True
+    has_assoc_Ring = False
+    has_assoc_Field = True
+
+    def __init__(self, base, own: list, phi: list, index: int, s: int) -> None:
+        self.base = base
+        lc = own[0]
+        self.own = [base.quo(c, lc) for c in own]
+        self.e = len(own) - 1
+        self.degree = base_degree(base) * self.e
+        self.phi, self.index, self.s = phi, index, s
+        self.dom = QQ
+        self.zero = TowerElement([], self)
+        self.one = TowerElement([base.one], self)
+        self.gen = TowerElement([base.one, base.zero], self)  # x: the root adjoined at this level
+        theta = self.convert(primitive(base))
+        self.primitive = self.gen + theta * s  # γ
+        self._values: dict = {}
+        self._solver = None
+        self._root = None
+
+    # --- domain protocol -------------------------------------------------------------------------------------
+    def __eq__(self, other) -> bool:
+        return self is other
+
+    def __hash__(self) -> int:
+        return id(self)
+
+    def __str__(self) -> str:
+        return f"{self.base}[x]/(deg {self.e})"
+
+    __repr__ = __str__
+
+    def new(self, a):
+        return self.convert(a)
+
+    def __call__(self, a):
+        return self.convert(a)
+
+    def of_type(self, a) -> bool:
+        return isinstance(a, TowerElement) and a.field is self
+
+    def convert(self, a, base=None):
+        if isinstance(a, TowerElement) and a.field is self:
+            return a
+        c = self.base.convert(a)
+        return TowerElement([c] if c else [], self)
+
+    def convert_from(self, a, base):
+        return self.convert(a)
+
+    def from_base(self, c) -> TowerElement:
+        return TowerElement([c] if c else [], self)
+
+    def from_sympy(self, a):
+        return self.convert(self.base.from_sympy(a))
+
+    def to_sympy(self, a) -> sp.Expr:
+        return in_crootof(a, self)
+
+    def get_ring(self):  # pragma: no cover - no ring of integers is needed
+        raise NotImplementedError("a tower field has no associated ring here")
+
+    def is_negative(self, a) -> bool:  # the dense routines ask for it on leading coefficients only
+        return False
+
+    def is_positive(self, a) -> bool:
+        return bool(a)
+
+    def quo(self, a, b):
+        return self.convert(a) / self.convert(b)
+
+    exquo = quo
+
+    def rem(self, a, b):
+        return self.zero
+
+    def div(self, a, b):
+        return self.quo(a, b), self.zero
+
+    def gcd(self, a, b):
+        return self.one
+
+    def lcm(self, a, b):
+        return self.convert(a) * self.convert(b)
+
+    @property
+    def unit(self) -> TowerElement:
+        return self.gen
+
+    @property
+    def levels(self) -> list:
+        """The tower from the bottom ``AlgebraicField`` up to this field."""
+        out, F = [], self
+        while isinstance(F, TowerField):
+            out.append(F)
+            F = F.base
+        return [F, *reversed(out)]
+
+    # --- numbers ----------------------------------------------------------------------------------------------
+    def crootof(self) -> sp.Expr:
+        if self._root is None:
+            y = sp.Dummy("y")
+            self._root = sp.CRootOf(sp.Poly([QQ.to_sympy(c) for c in self.phi], y), self.index)
+        return self._root
+
+    def gamma_value(self, digits: int):
+        """Certified value of ``γ`` (isolation of ``φ``'s real roots)."""
+        if digits not in self._values:
+            from ._exact import real_roots_numeric
+
+            self._values[digits] = real_roots_numeric(self.phi, digits + 10)[self.index]
+        return self._values[digits]
+
+    def root_value(self, digits: int):
+        """Value of the adjoined root ``x = γ - s Θ``."""
+        with mpmath.workdps(digits + 10):
+            return self.gamma_value(digits) - self.s * primitive_value(self.base, digits)
+
+
+def base_degree(K) -> int:
+    """Degree over QQ of ``QQ``, an ``AlgebraicField`` or a :class:`TowerField`."""
+    if isinstance(K, TowerField):
+        return K.degree
+    return 1 if K.is_QQ else len(K.mod.to_list()) - 1
+
+
+def primitive(K):
+    """The primitive element of ``K`` as an element of ``K``."""
+    return K.primitive if isinstance(K, TowerField) else K.unit
+
+
+def primitive_value(K, digits: int):
+    from ._exact import _generator_value
+
+    return K.gamma_value(digits) if isinstance(K, TowerField) else _generator_value(K, digits)
+
+
+def value(c, K, digits: int):
+    """Numerical value (mpmath, about ``digits`` digits) of an element of ``QQ``, an algebraic or a tower field."""
+    if not isinstance(K, TowerField):
+        from ._exact import num
+
+        return num(c, K, digits)
+    with mpmath.workdps(digits + 20):
+        x, acc = K.root_value(digits + 10), mpmath.mpf(0)
+        for a in c.rep:
+            acc = acc * x + value(a, K.base, digits + 10)
+        return acc
+
+
+# --- multiplication matrices -----------------------------------------------------------------------------------
+def matrix(c, K):
+    """The rational matrix (python-flint ``fmpq_mat``) of multiplication by ``c`` in ``K``'s monomial basis (the
+    coordinates of :func:`flatten`): Horner's rule in the matrix of the generator, level by level."""
+    from ._exact import flint_module
+
+    flint = flint_module()
+    n = base_degree(K)
+    if not isinstance(K, TowerField):
+        coeffs = [c] if K.is_QQ else c.to_list()
+        Y, one = companion(K), flint.fmpq_mat(n, n, [int(i == j) for i in range(n) for j in range(n)])
+        acc = flint.fmpq_mat(n, n)
+        for a in coeffs:
+            acc = acc * Y + one * _fq(flint, a)
+        return acc
+    d = base_degree(K.base)
+    acc = flint.fmpq_mat(n, n)
+    for a in c.rep:
+        B = matrix(a, K.base)
+        blocks = flint.fmpq_mat(n, n)
+        for i in range(K.e):
+            for r in range(d):
+                for k in range(d):
+                    if B[r, k] != 0:
+                        blocks[i * d + r, i * d + k] = B[r, k]
+        acc = acc * companion(K) + blocks
+    return acc
+
+
+def companion(K):
+    """Matrix of multiplication by ``K``'s adjoined generator (``θ`` of an algebraic field, ``x`` of a tower)."""
+    from ._exact import flint_module
+
+    cache = _COMPANIONS.get(K)
+    if cache is not None:
+        return cache
+    flint = flint_module()
+    n = base_degree(K)
+    Y = flint.fmpq_mat(n, n)
+    if not isinstance(K, TowerField):  # basis θ^(n-1), ..., 1 (index n-1-k for θ^k)
+        mod = K.mod.to_list()
+        for k in range(n - 1):
+            Y[n - 2 - k, n - 1 - k] = 1
+        for i in range(1, n + 1):  # θ · θ^(n-1) = -Σ mod_i θ^(n-i)  (mod monic)
+            Y[i - 1, 0] = -_fq(flint, mod[i]) / _fq(flint, mod[0])
+    else:
+        d, e = base_degree(K.base), K.e
+        for k in range(e - 1):
+            for r in range(d):
+                Y[(e - 2 - k) * d + r, (e - 1 - k) * d + r] = 1
+        for i in range(1, e + 1):
+            B = matrix(-K.own[i], K.base)
+            for r in range(d):
+                for k in range(d):
+                    if B[r, k] != 0:
+                        Y[(i - 1) * d + r, k] = B[r, k]
+    _COMPANIONS[K] = Y
+    return Y
+
+
+_COMPANIONS: dict = {}
+
+
+# --- exact conversion to one CRootOf ---------------------------------------------------------------------------
+def flatten(c, K) -> list:
+    """Rational coordinates of ``c`` in the tower's monomial basis (fixed length ``base_degree(K)``)."""
+    if not isinstance(K, TowerField):
+        coeffs = c.to_list() if not K.is_QQ else [c]
+        n = base_degree(K)
+        return [QQ.zero] * (n - len(coeffs)) + list(coeffs)
+    rep = [K.base.zero] * (K.e - len(c.rep)) + list(c.rep)
+    out: list = []
+    for a in rep:
+        out += flatten(a, K.base)
+    return out
+
+
+def gamma_coordinates(c, K) -> list:
+    """Coefficients (highest power first) of ``c`` as a polynomial in ``γ``: the powers of ``γ`` in the
+    monomial basis form a rational matrix, and ``c`` is the solution for its coordinate vector (flint's exact
+    solver when installed, SymPy's DomainMatrix otherwise)."""
+    from ._exact import flint_module
+
+    flint = flint_module()
+    n = K.degree
+    if K._solver is None:
+        columns, pw = [], K.one
+        for _ in range(n):
+            columns.append(flatten(pw, K))
+            pw = pw * K.primitive
+        K._solver = columns
+    columns, target = K._solver, flatten(c, K)
+    if flint is not None:
+        A = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
+        sol = A.solve(flint.fmpq_mat(n, 1, [_fq(flint, t) for t in target]))
+        coeffs = [QQ(int(sol[i, 0].p), int(sol[i, 0].q)) for i in range(n)]
+    else:
+        from sympy.polys.matrices import DomainMatrix
+
+        A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
+        b = DomainMatrix([[t] for t in target], (n, 1), QQ)
+        coeffs = [row[0] for row in A.lu_solve(b).to_list()]
+    return dup_strip(list(reversed(coeffs)))
+
+
+def _fq(flint, c):
+    return flint.fmpq(int(c.numerator), int(c.denominator))
+
+
+def in_crootof(c, K) -> sp.Expr:
+    """``c`` as an exact SymPy number: a polynomial in ``CRootOf(φ, index)``."""
+    flat = flatten(c, K)
+    if not any(flat[:-1]):
+        return QQ.to_sympy(flat[-1])
+    coeffs = gamma_coordinates(c, K)
+    root, n = K.crootof(), len(coeffs) - 1
+    return sp.Add(*[QQ.to_sympy(a) * root ** (n - i) for i, a in enumerate(coeffs) if a])
+
+
+# --- the factor of a polynomial holding a root, by the embeddings of the base ------------------------------------
+def _embeddings(K) -> list:
+    """All complex embeddings of ``K``: tuples of the generators' values, bottom level first (current precision)."""
+    if not isinstance(K, TowerField):
+        coeffs = [mpmath.mpf(int(c.numerator)) / int(c.denominator) for c in K.mod.to_list()]
+        return [(z,) for z in mpmath.polyroots(coeffs, maxsteps=500, extraprec=4 * mpmath.mp.prec)]
+    out = []
+    for emb in _embeddings(K.base):
+        coeffs = [_at(c, K.base, emb) for c in K.own]
+        out += [(*emb, z) for z in mpmath.polyroots(coeffs, maxsteps=500, extraprec=4 * mpmath.mp.prec)]
+    return out
+
+
+def _at(c, K, emb):
+    """Value of an element of ``K`` under the embedding ``emb``."""
+    acc = mpmath.mpf(0)
+    if not isinstance(K, TowerField):
+        for a in c.to_list():
+            acc = acc * emb[0] + mpmath.mpf(int(a.numerator)) / int(a.denominator)
+        return acc
+    for a in c.rep:
+        acc = acc * emb[-1] + _at(a, K.base, emb[:-1])
+    return acc
+
+
+def _monomials(K, emb) -> list:
+    """Values of the monomial basis (the order of :func:`flatten`) under ``emb``."""
+    if not isinstance(K, TowerField):
+        n = base_degree(K)
+        return [emb[0] ** (n - 1 - i) for i in range(n)]
+    lower = _monomials(K.base, emb[:-1])
+    return [emb[-1] ** j * v for j in reversed(range(K.e)) for v in lower]
+
+
+def _unflatten(coords: list, K):
+    if not isinstance(K, TowerField):
+        return K.from_list(list(coords)) if hasattr(K, "from_list") else K(list(coords))
+    d = base_degree(K.base)
+    return TowerElement(dup_strip([_unflatten(coords[i * d : (i + 1) * d], K.base) for i in range(K.e)]), K)
+
+
+_EMBEDDINGS: dict = {}
+
+
+def factor_holding(f: list, K, phi: list, s: int, e: int) -> list | None:
+    """The monic factor of ``f`` (monic, over ``K``) of degree ``e`` whose roots ``ρ`` make ``ρ + s Θ`` roots of
+    ``φ``: under every embedding ``σ`` of ``K`` its coefficients are the elementary symmetric functions of those
+    roots of ``σ(f)``, the coordinates follow by a linear solve and rational reconstruction, and the candidate is
+    accepted only when it divides ``f`` exactly (then it is the minimal polynomial of the root over ``K``, Trager
+    (1976), §3).  None when no precision tried gives an exact factor."""
+    from fractions import Fraction
+
+    theta = primitive(K)
+    for dps in (60, 200, 600):
+        with mpmath.workdps(dps):
+            if (dps, K) not in _EMBEDDINGS:
+                embs = _embeddings(K)
+                if len(embs) != base_degree(K):  # pragma: no cover - polyroots returns all roots
+                    return None
+                _EMBEDDINGS[(dps, K)] = embs, mpmath.inverse(mpmath.matrix([_monomials(K, emb) for emb in embs]))
+            embs, Vinv = _EMBEDDINGS[(dps, K)]
+            phiv = [mpmath.mpf(int(c.numerator)) / int(c.denominator) for c in phi]
+            rhs = []
+            for emb in embs:
+                t = s * _at(theta, K, emb)
+                roots = mpmath.polyroots([_at(c, K, emb) for c in f], maxsteps=500, extraprec=4 * mpmath.mp.prec)
+                scale = [sum(abs(c) * abs(z + t) ** (len(phiv) - 1 - i) for i, c in enumerate(phiv)) for z in roots]
+                ranked = sorted(
+                    zip(roots, scale, strict=True), key=lambda q: abs(mpmath.polyval(phiv, q[0] + t)) / q[1]
+                )
+                poly = [mpmath.mpf(1)]
+                for z, _ in ranked[:e]:
+                    poly = [a - z * b for a, b in zip([*poly, 0], [0, *poly], strict=True)]
+                rhs.append(poly[1:])
+            own = [K.one]
+            for k in range(e):
+                coords = Vinv * mpmath.matrix([row[k] for row in rhs])
+                bound = 10 ** (dps // 3)
+                exact = [
+                    Fraction(
+                        mpmath.nstr(mpmath.re(x), dps, min_fixed=-mpmath.inf, max_fixed=mpmath.inf)
+                    ).limit_denominator(bound)
+                    for x in coords
+                ]
+                own.append(_unflatten([QQ(q.numerator, q.denominator) for q in exact], K))
+            if not _reduce(f, own, K):
+                return own
+    return None

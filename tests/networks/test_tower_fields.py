@@ -1,0 +1,170 @@
+"""Tower number fields of the exact synthesis (Trager (1976), §3): arithmetic, numbers and norms checked against
+SymPy's own algebraic fields (an independent primitive-element computation), and a nested Bott–Duffin case."""
+
+from __future__ import annotations
+
+import random
+import time
+
+import mpmath
+import pytest
+import sympy as sp
+from sympy import QQ
+
+from symosc.networks import _exact as ex
+from symosc.networks import bott_duffin_synthesis
+from symosc.networks._tower import TowerField
+
+from .test_synthesis_degree6 import _check_exact, _values
+
+p = sp.Symbol("p")
+SQ2, SQ3 = sp.sqrt(2), sp.sqrt(3)
+TOP = sp.sqrt(1 + SQ3)
+
+
+@pytest.fixture(scope="module")
+def tower():
+    """QQ(√2) ⊂ QQ(√2)[x]/(x² - 3) ⊂ (that)[y]/(y² - 1 - x): the numbers √2, √3, √(1 + √3) (degree 8)."""
+    K = QQ.algebraic_field(SQ2)
+    r1, L1 = ex.extend_with_root([K.one, K.zero, K(-3)], K, mpmath.sqrt(3), "√3")
+    r2, L2 = ex.extend_with_root([L1.one, L1.zero, -(L1.one + r1)], L1, mpmath.sqrt(1 + mpmath.sqrt(3)), "top")
+    M = QQ.algebraic_field(SQ2, SQ3, TOP)  # SymPy's field with its own primitive element
+    return K, L1, L2, r1, r2, M
+
+
+_IMAGES: dict = {}
+
+
+def _image(c, F, M):
+    """A tower element in SymPy's field ``M``, coefficient by coefficient through the images of the generators."""
+    images = _IMAGES.get(id(M)) or _IMAGES.setdefault(id(M), [M.from_sympy(a) for a in (SQ2, SQ3, TOP)])
+    levels = [F] if not isinstance(F, TowerField) else F.levels
+
+    def walk(a, level):
+        if level == 0:
+            acc = M.zero
+            for q in a.to_list():
+                acc = acc * images[0] + M.convert(q)
+            return acc
+        acc = M.zero
+        for b in a.rep:
+            acc = acc * images[level] + walk(b, level - 1)
+        return acc
+
+    return walk(c, len(levels) - 1)
+
+
+def _random_element(F, rng):
+    """Random coordinates over the base field, built by field arithmetic (Horner in the adjoined root)."""
+    if not isinstance(F, TowerField):
+        return F([QQ(rng.randint(-9, 9), rng.randint(1, 5)) for _ in range(2)])
+    acc = F.zero
+    for _ in range(F.e):
+        acc = acc * F.gen + F.convert(_random_element(F.base, rng))
+    return acc
+
+
+def test_tower_degrees_and_generators(tower):
+    _, L1, L2, r1, r2, _ = tower
+    assert (ex.field_degree(L1), ex.field_degree(L2)) == (4, 8)
+    assert r1 * r1 == 3 and r2 * r2 == 1 + L2.convert(r1)
+    assert r2 != r1 and r2 - r2 == 0 and not L2.zero and bool(r2)
+
+
+def test_tower_arithmetic_agrees_with_sympy_fields(tower):
+    K, L1, L2, _, _, M = tower
+    rng = random.Random(7)
+    for F in (L1, L2):
+        for _ in range(6):
+            a, b = _random_element(F, rng), _random_element(F, rng)
+            if not b:
+                continue
+            A, B = _image(a, F, M), _image(b, F, M)
+            assert _image(a + b, F, M) == A + B
+            assert _image(a - b, F, M) == A - B
+            assert _image(a * b, F, M) == A * B
+            assert _image(a / b, F, M) == A / B
+            assert _image(-a, F, M) == -A
+            assert _image(a * 3, F, M) == A * 3 and _image(2 - a, F, M) == 2 - A
+            assert _image(a * K.unit, F, M) == A * M.from_sympy(SQ2)
+            assert hash(a * b) == hash(b * a) and a * b == b * a
+
+
+def test_dense_routines_over_a_tower(tower):
+    _, _, L2, r1, r2, M = tower
+    x2 = L2.convert(r1)
+    f = [L2.one, -r2, L2.zero, x2]
+    g = [L2.one, r2]
+    q = ex.dup_mul(f, g, L2)
+    assert ex.exquo(q, g, L2, "test") == f
+    assert ex.gcd(q, ex.dup_mul(g, [L2.one, x2], L2), L2) == g
+    assert ex.dup_eval(g, -r2, L2) == 0
+    n = len(q) - 1
+    mapped = [_image(c, L2, M) for c in q]
+    assert [_image(c, L2, M) for c in ex.dup_diff(q, 1, L2)] == [c * (n - i) for i, c in enumerate(mapped[:-1])]
+    assert [_image(c, L2, M) for c in ex.dup_rem(q, [L2.one, x2, L2.one], L2)] == [
+        c
+        for c in sp.Poly(mapped, p, domain=M).rem(sp.Poly([M.one, _image(x2, L2, M), M.one], p, domain=M)).rep.to_list()
+    ]
+
+
+def _horner(coeffs, x, M):
+    acc = M.zero
+    for c in coeffs:
+        acc = acc * x + M.from_sympy(c)
+    return acc
+
+
+def test_tower_numbers_and_exact_values(tower):
+    _, _, L2, r1, r2, M = tower
+    rng = random.Random(3)
+    for _ in range(3):
+        a = _random_element(L2, rng)
+        exact = M.to_sympy(_image(a, L2, M))
+        with mpmath.workdps(70):
+            assert abs(ex.num(a, L2, 60) - mpmath.mpf(str(sp.N(exact, 70)))) < mpmath.mpf(10) ** -55
+        value = L2.to_sympy(a)  # a polynomial in one CRootOf
+        (root,) = value.atoms(sp.CRootOf)
+        # the primitive element γ = r2 + s2 (r1 + s1 √2) in SymPy's field: a root of CRootOf's polynomial, the
+        # same real root numerically, and the value's polynomial in it equals the element
+        gamma = _image(L2.primitive, L2, M)
+        poly = root.poly
+        assert _horner(poly.all_coeffs(), gamma, M) == M.zero
+        assert abs(sp.N(M.to_sympy(gamma) - root, 50)) < 1e-40
+        y = sp.Dummy("y")
+        in_gamma = sp.Poly(value.xreplace({root: y}), y, domain=QQ)
+        assert _horner(in_gamma.all_coeffs(), gamma, M) == _image(a, L2, M)
+    assert ex.sign(r2 - L2.convert(r1), L2) == -1  # √(1 + √3) < √3
+
+
+def test_factor_of_a_reducible_polynomial_over_a_tower(tower):
+    """(t - √3)(t² - 5) over QQ(√2, √3): the root √5 gets the level polynomial t² - 5 (its minimal polynomial over
+    QQ(√2, √3), of degree 2), a degree-8 field."""
+    _, L1, _, r1, _, _ = tower
+    f = ex.dup_mul([L1.one, -r1], [L1.one, L1.zero, L1(-5)], L1)
+    r, L = ex.extend_with_root(f, L1, mpmath.sqrt(5), "√5")
+    assert L.own == [L1.one, L1.zero, L1(-5)] and ex.field_degree(L) == 8
+    assert r * r == 5
+    with mpmath.workdps(50):
+        assert abs(ex.num(r, L) - mpmath.sqrt(5)) < mpmath.mpf(10) ** -30
+
+
+def test_norm_of_a_tower_polynomial(tower):
+    _, _, L2, _, r2, _ = tower
+    x = sp.Symbol("x")
+    N = ex.norm([L2.one, -r2], L2)
+    expected = sp.Poly(sp.minimal_polynomial(TOP, x) ** 2, x)  # [L2 : QQ(√(1 + √3))] = 2
+    assert sp.Poly([QQ.to_sympy(c) for c in N], x) == expected
+
+
+def test_nested_bott_duffin_case_is_exact():
+    """A degree-5 target whose Bott–Duffin synthesis needs a degree-18 field (a root over a degree-6 field)."""
+    Z = (8839116 * p**4 + 3312933 * p**3 + 2111630 * p**2 + 133060 * p + 2200) / (
+        4988412 * p**5 + 1880073 * p**4 + 4594926 * p**3 + 1351665 * p**2 + 69970 * p + 1000
+    )
+    t0 = time.time()
+    net = bott_duffin_synthesis(Z, p)
+    assert time.time() - t0 < 120
+    roots = {r.poly for v in _values(net) for r in sp.sympify(v).atoms(sp.CRootOf)}
+    assert [q.degree() for q in roots] == [18]
+    _check_exact(net, Z)
