@@ -51,7 +51,7 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (naming the failed condition).
     ModelError
-        When the exact element values would need a number field of degree above 16 over the rationals (above 8
+        When the exact element values would need a number field of degree above 24 over the rationals (above 8
         without python-flint, the ``exact`` extra), e.g. an irrational ``ω0`` of degree 6 followed by a Richards'
         ``k`` of degree 3 over it.
 

@@ -48,7 +48,7 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
-        When the exact element values would need a number field of degree above 16 over the rationals (above 8
+        When the exact element values would need a number field of degree above 24 over the rationals (above 8
         without python-flint, the ``exact`` extra); element values are exact numbers: rationals, square roots,
         polynomials in a ``CRootOf`` number.
 
