@@ -320,12 +320,17 @@ class Engine:
             return join(parts, inner, Parallel)
         # subtract the minimum resistance of Z, or the minimum conductance of Y = 1/Z where that one is exact in
         # the current field (both keep the function positive real, Theorem III); prefer no field extension
-        zmin = _minimum(N, D, K)
-        if zmin[0] and (zmin[2] == K or zmin[1] in ("0", "oo")):
+        try:
+            zmin = _minimum(N, D, K)
+        except ex.Nested as refusal:  # the conductance's minimum may still lie in K: decided below
+            zmin, z_refusal = None, refusal
+        if zmin is not None and zmin[0] and (zmin[2] == K or zmin[1] in ("0", "oo")):
             return self._remove_constant(*zmin, "Z", depth)
         ymin = _minimum(D, N, K)
         if ymin[0] and (ymin[2] == K or ymin[1] in ("0", "oo")):
             return self._remove_constant(*ymin, "Y", depth)
+        if zmin is None:
+            raise z_refusal
         if zmin[0]:
             return self._remove_constant(*zmin, "Z", depth)
         _R, x0, K, N, D = zmin

@@ -277,6 +277,14 @@ _SECOND_EXTENSION = [
         / (381024 * p**5 + 500976 * p**4 + 233464 * p**3 + 85092 * p**2 + 6592 * p + 1280),
         6,
     ),
+    (  # a tower of degree 16; the minimum of Re Z would need degree 32, the conductance's lies in the field
+        brune_synthesis,
+        (77531850 * p**5 + 13637781 * p**4 + 10532535 * p**3 + 1667724 * p**2 + 194265 * p + 16245)
+        / (
+            277338600 * p**6 + 109663011 * p**5 + 45032671 * p**4 + 13733309 * p**3 + 1427634 * p**2 + 162480 * p + 2520
+        ),
+        16,
+    ),
 ]
 
 
