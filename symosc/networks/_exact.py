@@ -37,7 +37,7 @@ _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: a random degree-5 Bott–Duffin case needing degree 18 took
-#: about 6 s, one needing degree 36 about 100 s, mostly in norms and in finding each new level's polynomial)
+#: about 6 s, one needing degree 36 110 s, mostly in norms and in finding each new level's polynomial)
 MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
@@ -110,9 +110,15 @@ def sign(c, K) -> int:
     return 1 if num(c, K, 16 * _DIGITS) > 0 else -1  # pragma: no cover - a nonzero number below 1e-320
 
 
-def positive(c, K, what: str) -> sp.Expr:
-    if sign(c, K) <= 0:
+def require_positive(c, K, what: str, sign_of=None) -> None:
+    """ModelError unless ``c`` (or ``sign_of``, a number of the same sign) is positive."""
+    if sign(c if sign_of is None else sign_of, K) <= 0:
         raise ModelError(f"synthesis reached a non-positive {what} = {sym(c, K)} (the target is not positive real?)")
+
+
+def positive(c, K, what: str) -> sp.Expr:
+    """``c`` as an exact SymPy number, after :func:`require_positive`."""
+    require_positive(c, K, what)
     return sym(c, K)
 
 
@@ -133,14 +139,6 @@ def in_x(f: list, K) -> list:
     g = even_in_y(f, K)
     n = len(g) - 1
     return [c if (n - i) % 2 == 0 else K.neg(c) for i, c in enumerate(g)]
-
-
-def poly_p(coeffs: dict, K) -> list:
-    """Polynomial from ``{power: coefficient}``."""
-    if not coeffs:
-        return []
-    n = max(coeffs)
-    return dup_strip([coeffs.get(n - i, K.zero) for i in range(n + 1)])
 
 
 def mul_p(f: list, K) -> list:

@@ -258,10 +258,7 @@ class _Values:
 
     def positive(self, c, K, what: str, sign_of=None) -> sp.Expr:
         """A placeholder for the positive value ``c`` (its sign checked exactly now, on ``sign_of`` if given)."""
-        if ex.sign(c if sign_of is None else sign_of, K) <= 0:
-            raise ModelError(
-                f"synthesis reached a non-positive {what} = {ex.sym(c, K)} (the target is not positive real?)"
-            )
+        ex.require_positive(c, K, what, sign_of)
         if K.is_QQ or self.immediate:
             return ex.sym(c, K)
         d = sp.Dummy(positive=True)

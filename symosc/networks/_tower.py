@@ -61,11 +61,6 @@ def monic(f: list, K) -> list:
     return [K.one, *(c * inv for c in f[1:])]
 
 
-def rem_monic(f: list, g: list, K) -> list:
-    """Remainder of ``f`` by ``g`` over ``K`` (one inversion: ``g``'s leading coefficient)."""
-    return _reduce(f, monic(g, K), K)
-
-
 def invert_mod(a: list, m: list, K) -> list:
     """``1/a`` modulo the monic irreducible ``m`` over ``K`` by the extended Euclidean algorithm (one inversion in
     ``K`` per division step)."""
