@@ -329,15 +329,12 @@ def norm(f: list, K) -> list:
                 if B[r, k] != 0:
                     C[(n - 1) * d + r, j * d + k] = -B[r, k]
     # charpoly(C)(x) = charpoly(d C)(d x) / d^(n d) with d C integral (flint's multimodular integer charpoly)
-    den = 1
-    for i in range(n * d):
-        for k in range(n * d):
-            den = flint.fmpz(den).lcm(C[i, k].q) if C[i, k] != 0 else den
-    Z = flint.fmpz_mat(n * d, n * d, [int(C[i, k] * den) for i in range(n * d) for k in range(n * d)])
-    coeffs = Z.charpoly().coeffs()  # lowest power first
+    charpoly, den = _tower.scaled_charpoly(C)
     size = n * d
     return _from_flint(
-        flint.fmpq_poly([flint.fmpq(int(c), 1) / flint.fmpq(int(den)) ** (size - i) for i, c in enumerate(coeffs)])
+        flint.fmpq_poly(
+            [flint.fmpq(int(c), 1) / flint.fmpq(int(den)) ** (size - i) for i, c in enumerate(charpoly.coeffs())]
+        )
     )
 
 

@@ -20,8 +20,9 @@ from sympy.polys.constructor import construct_domain
 
 from ..errors import ModelError, ParameterError
 from . import _exact as ex
+from . import _tower
 from ._tower import TowerField
-from ._util import P, as_symbol, rational_function
+from ._util import P, as_symbol, rational_function, values_checked
 from .oneports import BruneSection, Capacitor, Inductor, OnePort, Parallel, Resistor, Series
 
 _MAX_DEPTH = 200
@@ -78,8 +79,12 @@ def minimum_real_part(Z: Any, p: sp.Symbol = P) -> tuple[sp.Expr, sp.Expr]:
     return ex.sym(R, K2), where
 
 
-def _minimum(N: list, D: list, K, allow_pole: bool = False):
-    """Minimum of ``E/Q`` on ``x >= 0``: ``(R, x0, K', N, D)`` with ``x0`` in ``K'`` or ``"0"``/``"oo"``."""
+def _minimum(N: list, D: list, K, allow_pole: bool = False, known: tuple = (), extend: bool = True):
+    """Minimum of ``E/Q`` on ``x >= 0``: ``(R, x0, K', N, D)`` with ``x0`` in ``K'`` or ``"0"``/``"oo"``.
+
+    ``known``: elements of ``K`` tried first as the interior minimum (a previous step's ``ω0²``: subtracting a
+    constant leaves the critical points where they were).  ``extend=False``: None instead of building the field
+    extension an interior minimum needs (decided from numbers)."""
     E, Q = ex.real_part_x(N, D, K)
     if not E:
         return K.zero, "0", K, N, D
@@ -98,14 +103,16 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
             for r in ex.real_roots_qq(crit):
                 if sp.N(r, ex._DIGITS) > 0:
                     val = ex.eval_num(E, r, K) / ex.eval_num(Q, r, K)
-                    cands.append((val, 0 if r.is_Rational else 1, r))
+                    cands.append((val, 0 if r.is_Rational else 1, r if extend or r.is_Rational else "pending"))
         else:
-            _interior_in_field(E, Q, crit, K, cands)
+            _interior_in_field(E, Q, crit, K, cands, known, extend)
     if not cands:  # pragma: no cover - Q(0) = 0 only with a pole at 0, removed before
         raise ModelError("no candidate for the minimum of Re Z(iω)")
     best = min(c[0] for c in cands)
     tol = mpmath.mpf(10) ** (-ex._DIGITS + 8) * (1 + abs(best))
     _value, _, where = min((c for c in cands if c[0] - best <= tol), key=lambda c: c[1])
+    if where == "pending":
+        return None
     if where in ("0", "oo"):
         if where == "0":
             R = K.quo(ex.dup_eval(E, K.zero, K), q0)
@@ -127,7 +134,7 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False):
     return R, x0, K, N, D
 
 
-def _interior_in_field(E: list, Q: list, crit: list, K, cands: list) -> None:
+def _interior_in_field(E: list, Q: list, crit: list, K, cands: list, known: tuple, extend: bool) -> None:
     """Over an algebraic field only critical points inside the field are exact; a lower interior minimum elsewhere
     is the limitation of one extension.  Numbers first: the field is factored only when the interior wins."""
     interior = [(ex.eval_num(E, x, K) / ex.eval_num(Q, x, K), x) for x in _as_sympy(ex.numeric_positive_roots(crit, K))]
@@ -137,7 +144,15 @@ def _interior_in_field(E: list, Q: list, crit: list, K, cands: list) -> None:
     tol = mpmath.mpf(10) ** -20 * (1 + abs(best_val))
     if cands and min(c[0] for c in cands) <= best_val + tol:
         return
-    r, K2 = ex.extend_with_root(crit, K, mpmath.mpf(str(best_x)), "the critical points of Re Z(iω)")
+    best_x = mpmath.mpf(str(best_x))
+    for x in known:  # exact: a zero of crit; numerically the winning one
+        if abs(ex.num(x, K) - best_x) <= mpmath.mpf(10) ** -12 * (1 + abs(best_x)) and not ex.dup_eval(crit, x, K):
+            cands.append((best_val, 1, ("K", x)))
+            return
+    if not extend:
+        cands.append((best_val, 1, "pending"))
+        return
+    r, K2 = ex.extend_with_root(crit, K, best_x, "the critical points of Re Z(iω)")
     cands.append((best_val, 1, ("X", r, K2) if K2 != K else ("K", r)))
 
 
@@ -272,12 +287,20 @@ class _Values:
         top = max(fields, key=ex.field_degree, default=None)
         below = set(map(id, top.levels)) if isinstance(top, TowerField) else {id(top)}
         common = all(id(K) in below for K in fields)
-        subs = {}
+        by_field: dict = {}
         for d, (c, K) in self.pending.items():
             if common and K != top:
                 c, K = top.convert(c), top
-            subs[d] = _clean(ex.sym(c, K))
-        return None if net is None else _substitute(net, subs)
+            by_field.setdefault(id(K), (K, []))[1].append((d, c))
+        subs = {}
+        for K, items in by_field.values():
+            exact = _tower.in_crootof_all([c for _, c in items], K) if isinstance(K, TowerField) else None
+            for i, (d, c) in enumerate(items):
+                subs[d] = _clean(exact[i] if exact is not None else ex.sym(c, K))
+        if net is None:
+            return None
+        with values_checked():  # each sign was decided exactly when the value was made
+            return _substitute(net, subs)
 
 
 def _substitute(net: OnePort, subs: dict) -> OnePort:
@@ -299,6 +322,15 @@ class Engine:
     def __init__(self, cycle: str) -> None:
         self.cycle = cycle
         self.values = _Values()
+        self._roots: list = []  # (field, ω0²) of the minima found so far
+
+    def _minimum(self, N: list, D: list, K, extend: bool = True):
+        """:func:`_minimum` trying the earlier ``ω0²`` first; a new interior ``ω0²`` is remembered."""
+        known = tuple(ex.convert(x, F, K) for F, x in self._roots if _below(F, K))
+        found = _minimum(N, D, K, known=known, extend=extend)
+        if found is not None and found[1] not in ("0", "oo"):
+            self._roots.append((found[2], found[1]))
+        return found
 
     def run(self, N: list, D: list, K, depth: int = 0) -> OnePort | None:
         if depth > _MAX_DEPTH:  # pragma: no cover - each step lowers the degree
@@ -315,20 +347,18 @@ class Engine:
         if parts:
             inner = None if not Yn else self.run(Yd, Yn, K, depth + 1)
             return join(parts, inner, Parallel)
-        # subtract the minimum resistance of Z, or the minimum conductance of Y = 1/Z where that one is exact in
-        # the current field (both keep the function positive real, Theorem III); prefer no field extension
-        try:
-            zmin = _minimum(N, D, K)
-        except ex.Nested as refusal:  # the conductance's minimum may still lie in K: decided below
-            zmin, z_refusal = None, refusal
-        if zmin is not None and zmin[0] and (zmin[2] == K or zmin[1] in ("0", "oo")):
-            return self._remove_constant(*zmin, "Z", depth)
-        ymin = _minimum(D, N, K)
-        if ymin[0] and (ymin[2] == K or ymin[1] in ("0", "oo")):
-            return self._remove_constant(*ymin, "Y", depth)
+        # subtract the minimum resistance of Z or the minimum conductance of Y = 1/Z (both keep the function
+        # positive real, Theorem III): first one that needs no field extension (decided from numbers), else the one
+        # in the smaller field; a zero minimum starts the cycle at its ω0
+        zmin = self._minimum(N, D, K, extend=False)
         if zmin is None:
-            raise z_refusal
-        if zmin[0]:
+            ymin = self._minimum(D, N, K, extend=False)
+            if ymin is not None and ymin[0]:
+                return self._remove_constant(*ymin, "Y", depth)
+            *zmin, is_z = self._smaller_extension(N, D, K)
+            if zmin[0]:
+                return self._remove_constant(*zmin, "Z" if is_z else "Y", depth)
+        elif zmin[0]:
             return self._remove_constant(*zmin, "Z", depth)
         _R, x0, K, N, D = zmin
         if x0 in ("0", "oo"):  # pragma: no cover - excluded by the removals above
@@ -336,6 +366,24 @@ class Engine:
         if self.cycle == "brune":
             return self._brune(N, D, x0, K, depth)
         return self._bott_duffin(N, D, x0, K, depth)
+
+    def _smaller_extension(self, N: list, D: list, K) -> tuple:
+        """The minimum of ``Re Z`` or of ``Re Y`` whose field is smaller, tagged (``True`` for ``Z``); the refusal
+        when both need fields above the limit.  A zero minimum is one of ``Z`` (``Re Y = Re Z / |Z|²``)."""
+        found, refusal = [], None
+        for is_z, (n, d) in ((True, (N, D)), (False, (D, N))):
+            try:
+                m = self._minimum(n, d, K)
+            except ex.Nested as exc:
+                refusal = refusal or exc
+                continue
+            if not m[0]:  # the same ω0 for Z: its cycle, in that field
+                m = (m[0], m[1], m[2], m[4], m[3]) if not is_z else m
+                is_z = True
+            found.append((ex.field_degree(m[2]), not is_z, (*m, is_z)))
+        if not found:
+            raise refusal
+        return min(found, key=lambda c: c[:2])[2]
 
     def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
         """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
@@ -402,6 +450,13 @@ class Engine:
         first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(C1)))
         second = Series((Capacitor(L1), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
         return Parallel((first, second))
+
+
+def _below(F, K) -> bool:
+    """Whether ``K`` is ``F`` or a tower field above it."""
+    while K != F and isinstance(K, ex.TowerField):
+        K = K.base
+    return K == F
 
 
 def _richards_k(P1: list, K):

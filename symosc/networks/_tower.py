@@ -43,7 +43,7 @@ def inverse(c, K):
     key = c if isinstance(c, TowerElement) else tuple(c.to_list()) if not K.is_QQ else c
     inv = cache.get(key)
     if inv is None:
-        inv = c.inverse() if isinstance(c, TowerElement) else K.quo(K.one, c)
+        inv = c.inverse() if isinstance(c, TowerElement) else _algebraic_inverse(c, K)
         if len(cache) > 256:
             cache.clear()
         cache[key] = inv
@@ -51,6 +51,26 @@ def inverse(c, K):
 
 
 _INVERSES: dict = {}
+
+
+def _algebraic_inverse(c, K):
+    """``1/c`` in QQ or an ``AlgebraicField``: flint's extended gcd of ``c`` and the minimal polynomial when
+    installed (SymPy's dense gcdex in pure Python is slow on the large coefficients of nested fields)."""
+    from ._exact import flint_module
+
+    flint = flint_module()
+    if flint is None or K.is_QQ:
+        return K.quo(K.one, c)
+    g, s, _ = _fq_poly(flint, c.to_list()).xgcd(_fq_poly(flint, K.mod.to_list()))
+    if g.degree() != 0:  # pragma: no cover - the minimal polynomial is irreducible
+        raise ZeroDivisionError("not invertible in the algebraic field")
+    coeffs = (s / g[0]).coeffs()  # lowest power first
+    return K(dup_strip([QQ(int(a.p), int(a.q)) for a in reversed(coeffs)]))
+
+
+def _fq_poly(flint, coeffs: list):
+    """A flint polynomial from dense coefficients (highest power first)."""
+    return flint.fmpq_poly([_fq(flint, a) for a in reversed(coeffs)])
 
 
 def monic(f: list, K) -> list:
@@ -437,32 +457,35 @@ def flatten(c, K) -> list:
     return out
 
 
-def gamma_coordinates(c, K) -> list:
-    """Coefficients (highest power first) of ``c`` as a polynomial in ``γ``: the powers of ``γ`` in the
-    monomial basis form a rational matrix, and ``c`` is the solution for its coordinate vector (flint's exact
-    solver when installed, SymPy's DomainMatrix otherwise)."""
+def gamma_coordinates(cs: list, K) -> list[list]:
+    """Coefficients (highest power first) of each element of ``cs`` as a polynomial in ``γ``: the powers of ``γ``
+    in the monomial basis form a rational matrix (built once per field), and the coordinate vectors are the
+    solution of one linear system with all of them as right-hand sides (flint's exact solver when installed,
+    SymPy's DomainMatrix otherwise)."""
     from ._exact import flint_module
 
     flint = flint_module()
-    n = K.degree
+    n, m = K.degree, len(cs)
     if K._solver is None:
         columns, pw = [], K.one
         for _ in range(n):
             columns.append(flatten(pw, K))
             pw = pw * K.primitive
+        if flint is not None:
+            columns = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
         K._solver = columns
-    columns, target = K._solver, flatten(c, K)
+    columns, targets = K._solver, [flatten(c, K) for c in cs]
     if flint is not None:
-        A = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
-        sol = A.solve(flint.fmpq_mat(n, 1, [_fq(flint, t) for t in target]))
-        coeffs = [QQ(int(sol[i, 0].p), int(sol[i, 0].q)) for i in range(n)]
+        sol = columns.solve(flint.fmpq_mat(n, m, [_fq(flint, targets[j][i]) for i in range(n) for j in range(m)]))
+        coeffs = [[QQ(int(sol[i, j].p), int(sol[i, j].q)) for i in range(n)] for j in range(m)]
     else:
         from sympy.polys.matrices import DomainMatrix
 
         A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
-        b = DomainMatrix([[t] for t in target], (n, 1), QQ)
-        coeffs = [row[0] for row in A.lu_solve(b).to_list()]
-    return dup_strip(list(reversed(coeffs)))
+        b = DomainMatrix([[targets[j][i] for j in range(m)] for i in range(n)], (n, m), QQ)
+        rows = A.lu_solve(b).to_list()
+        coeffs = [[rows[i][j] for i in range(n)] for j in range(m)]
+    return [dup_strip(list(reversed(c))) for c in coeffs]
 
 
 def _fq(flint, c):
@@ -471,12 +494,40 @@ def _fq(flint, c):
 
 def in_crootof(c, K) -> sp.Expr:
     """``c`` as an exact SymPy number: a polynomial in ``CRootOf(φ, index)``."""
-    flat = flatten(c, K)
-    if not any(flat[:-1]):
-        return QQ.to_sympy(flat[-1])
-    coeffs = gamma_coordinates(c, K)
-    root, n = K.crootof(), len(coeffs) - 1
-    return sp.Add(*[QQ.to_sympy(a) * root ** (n - i) for i, a in enumerate(coeffs) if a])
+    return in_crootof_all([c], K)[0]
+
+
+def in_crootof_all(cs: list, K) -> list[sp.Expr]:
+    """:func:`in_crootof` of several elements of ``K`` (one linear solve)."""
+    out: list = [None] * len(cs)
+    todo = []
+    for i, c in enumerate(cs):
+        flat = flatten(c, K)
+        if not any(flat[:-1]):
+            out[i] = QQ.to_sympy(flat[-1])
+        else:
+            todo.append(i)
+    if todo:
+        root = K.crootof()
+        for i, coeffs in zip(todo, gamma_coordinates([cs[i] for i in todo], K), strict=True):
+            n = len(coeffs) - 1
+            out[i] = sp.Add(*[QQ.to_sympy(a) * root ** (n - k) for k, a in enumerate(coeffs) if a])
+    return out
+
+
+def scaled_charpoly(M) -> tuple:
+    """``(χ, d)``: the characteristic polynomial (flint ``fmpz_poly``) of ``d M``, ``d`` the least common
+    denominator of the rational square matrix ``M`` (flint's multimodular integer algorithm)."""
+    from ._exact import flint_module
+
+    flint, n = flint_module(), M.nrows()
+    den = flint.fmpz(1)
+    for i in range(n):
+        for k in range(n):
+            if M[i, k] != 0:
+                den = den.lcm(M[i, k].q)
+    scaled = flint.fmpz_mat(n, n, [int(M[i, k] * den) for i in range(n) for k in range(n)])
+    return scaled.charpoly(), den
 
 
 # --- the factor of a polynomial holding a root, by the embeddings of the base ------------------------------------

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from typing import Any
 
 import sympy as sp
@@ -25,9 +28,26 @@ def as_expr(value: Any, name: str) -> sp.Expr:
     return expr
 
 
+_CHECKED: ContextVar[bool] = ContextVar("values_checked", default=False)
+
+
+@contextmanager
+def values_checked() -> Iterator[None]:
+    """Within this block :func:`element_value` does not ask SymPy for the sign: for a synthesis whose values were
+    proved positive exactly as they were made (SymPy's own test evaluates polynomials in high-degree ``CRootOf``
+    numbers numerically, a large part of the time of a large synthesis)."""
+    token = _CHECKED.set(True)
+    try:
+        yield
+    finally:
+        _CHECKED.reset(token)
+
+
 def element_value(value: Any, name: str) -> sp.Expr:
     """An element value (R, L, C, ...): a number > 0 or a symbol not known to be negative or zero."""
     expr = as_expr(value, name)
+    if _CHECKED.get():
+        return expr
     if expr.is_extended_real is False:
         raise ParameterError(f"{name} must be real, got {expr}")
     if expr.is_positive is False:

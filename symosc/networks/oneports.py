@@ -107,7 +107,21 @@ def _check_port(other: Any) -> OnePort:
 
 
 def _fmt(value: sp.Expr) -> str:
-    return sp.sstr(value)
+    """An element value as text; an exact algebraic number too long to read (exact syntheses in large number fields
+    give polynomials in a ``CRootOf`` with coefficients of thousands of digits) is shown by 15 digits after ``≈``."""
+    if not (value.is_number and value.has(sp.CRootOf)):
+        return sp.sstr(value)
+    try:
+        text = sp.sstr(value)
+    except ValueError:  # an integer beyond Python's limit for decimal conversion
+        text = None
+    if text is not None and len(text) <= _LONGEST_VALUE:
+        return text
+    return f"≈{sp.N(value, 15)}"
+
+
+#: Longest exact element value printed in full.
+_LONGEST_VALUE = 300
 
 
 @dataclass(frozen=True, repr=False)
