@@ -10,6 +10,10 @@ decide signs and to pick the smallest of several exactly known candidates.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
 import mpmath
 import sympy as sp
 from sympy import QQ
@@ -412,10 +416,26 @@ def gcd(f: list, g: list, K) -> list:
 
 
 def max_field_degree() -> int:
-    """Largest degree over QQ of a network's number field: :data:`MAX_FIELD_DEGREE`, or
-    :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its characteristic polynomials, factorisations, exact linear
-    solves and certified root isolation make large fields affordable)."""
+    """Largest degree over QQ of a network's number field: the one given to :func:`field_degree_limit`, else
+    :data:`MAX_FIELD_DEGREE`, or :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its characteristic polynomials,
+    factorisations, exact linear solves and certified root isolation make large fields affordable)."""
+    chosen = _LIMIT.get()
+    if chosen is not None:
+        return chosen
     return MAX_FIELD_DEGREE if flint_module() is None else MAX_FIELD_DEGREE_FLINT
+
+
+_LIMIT: ContextVar[int | None] = ContextVar("max_field_degree", default=None)
+
+
+@contextmanager
+def field_degree_limit(limit: int | None) -> Iterator[None]:
+    """Within this block :func:`max_field_degree` is ``limit`` (the default when None)."""
+    token = _LIMIT.set(limit)
+    try:
+        yield
+    finally:
+        _LIMIT.reset(token)
 
 
 def squarefree_qq(f: list) -> bool:

@@ -476,8 +476,10 @@ def _richards_k(P1: list, K):
     return ex.extend_with_root(P1, K, positive[0], "Richards' k with Z(k) = L k")
 
 
-def synthesize(Z: Any, p: sp.Symbol, cycle: str) -> OnePort | None:
-    """Network with impedance ``Z`` (None for a short circuit), by the Brune or the Bott–Duffin cycle."""
+def synthesize(Z: Any, p: sp.Symbol, cycle: str, max_degree: int | None = None) -> OnePort | None:
+    """Network with impedance ``Z`` (None for a short circuit), by the Brune or the Bott–Duffin cycle, in number
+    fields of degree at most ``max_degree`` (the default limit when None)."""
     N, D, K = to_exact(Z, p)
     engine = Engine(cycle)
-    return engine.values.finish(engine.run(N, D, K))
+    with ex.field_degree_limit(max_degree):
+        return engine.values.finish(engine.run(N, D, K))

@@ -24,6 +24,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_int
 from ._synthesis import synthesize
 from ._util import P, synthesis_target
 from .oneports import OnePort
@@ -32,7 +33,7 @@ from .positive_real import require_positive_real
 __all__ = ["bott_duffin_synthesis"]
 
 
-def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
+def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) -> OnePort:
     """Realise a positive-real impedance with resistors, inductors and capacitors only (Bott–Duffin).
 
     Parameters
@@ -40,6 +41,11 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     Z : SymPy expression
         Rational positive-real function of ``p`` with numeric coefficients.
     p : sympy.Symbol
+    max_degree : int, optional
+        Largest degree over the rationals of the number field holding the exact element values; default 24 with
+        python-flint (the ``exact`` extra), 8 without.  Random degree-6 targets occasionally need 32–50; with
+        python-flint fields of degree 32–40 take one to two minutes, and the exact values then have coefficients
+        of thousands of digits (the network prints them by 15 digits after ``≈``).
 
     Returns
     -------
@@ -51,9 +57,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (naming the failed condition).
     ModelError
-        When the exact element values would need a number field of degree above 24 over the rationals (above 8
-        without python-flint, the ``exact`` extra), e.g. an irrational ``ω0`` of degree 6 followed by a Richards'
-        ``k`` of degree 3 over it.
+        When the exact element values would need a number field of degree above ``max_degree`` over the
+        rationals, e.g. an irrational ``ω0`` of degree 6 followed by a Richards' ``k`` of degree 3 over it.
 
     Examples
     --------
@@ -67,7 +72,9 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     brune_synthesis, is_positive_real
     """
+    if max_degree is not None:
+        max_degree = check_int("max_degree", max_degree, minimum=1)
     p, N, D = synthesis_target(Z, p)
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, "bott_duffin")
+    return synthesize(Z, p, "bott_duffin", max_degree)

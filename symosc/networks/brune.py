@@ -20,6 +20,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_int
 from ._synthesis import minimum_real_part, synthesize
 from ._util import P, synthesis_target
 from .oneports import OnePort
@@ -28,7 +29,7 @@ from .positive_real import require_positive_real
 __all__ = ["brune_synthesis", "minimum_real_part"]
 
 
-def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
+def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) -> OnePort:
     """Realise a positive-real impedance by Brune's procedure; the network's impedance equals ``Z`` exactly.
 
     Parameters
@@ -36,6 +37,11 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     Z : SymPy expression
         Rational positive-real function of ``p`` with numeric coefficients.
     p : sympy.Symbol
+    max_degree : int, optional
+        Largest degree over the rationals of the number field holding the exact element values; default 24 with
+        python-flint (the ``exact`` extra), 8 without.  Random degree-6 targets occasionally need 32–50; with
+        python-flint fields of degree 32–40 take one to two minutes, and the exact values then have coefficients
+        of thousands of digits (the network prints them by 15 digits after ``≈``).
 
     Returns
     -------
@@ -48,9 +54,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     ParameterError
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
-        When the exact element values would need a number field of degree above 24 over the rationals (above 8
-        without python-flint, the ``exact`` extra); element values are exact numbers: rationals, square roots,
-        polynomials in a ``CRootOf`` number.
+        When the exact element values would need a number field of degree above ``max_degree`` over the
+        rationals; element values are exact numbers: rationals, square roots, polynomials in a ``CRootOf``
+        number.
 
     Examples
     --------
@@ -64,7 +70,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P) -> OnePort:
     --------
     bott_duffin_synthesis, is_positive_real, foster_first
     """
+    if max_degree is not None:
+        max_degree = check_int("max_degree", max_degree, minimum=1)
     p, N, D = synthesis_target(Z, p)
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, "brune")
+    return synthesize(Z, p, "brune", max_degree)

@@ -18,7 +18,7 @@ from hypothesis import HealthCheck, assume, event, given, settings
 from hypothesis import strategies as st
 from sympy import QQ
 
-from symosc.errors import ModelError
+from symosc.errors import ModelError, ParameterError
 from symosc.networks import (
     BruneSection,
     Capacitor,
@@ -334,16 +334,55 @@ def test_nested_extension_without_flint_uses_sympy(monkeypatch):
     assert _degree_of(_field(_values(bd))) == 4
 
 
-def test_field_degree_limit_gives_the_documented_refusal(monkeypatch):
+def test_field_degree_limit_gives_the_documented_refusal():
     """Beyond the largest field degree the procedure refuses with ModelError naming the limit (never a float)."""
-    from symosc.networks import _exact
-
-    monkeypatch.setattr(_exact, "MAX_FIELD_DEGREE", 2)
-    monkeypatch.setattr(_exact, "MAX_FIELD_DEGREE_FLINT", 2)
     net = (
         (R(4) + C(sp.Rational(1, 3)) + (C(sp.Rational(7, 2)) | L(sp.Rational(7, 3))))
         | (L(7) + C(3))
         | ((R(sp.Rational(7, 3)) | R(sp.Rational(2, 3)) | R(sp.Rational(5, 3))) + L(3))
     )
     with pytest.raises(ModelError, match=r"degree 4 > 2 .*one number field"):
-        bott_duffin_synthesis(sp.cancel(net.impedance(p)), p)
+        bott_duffin_synthesis(sp.cancel(net.impedance(p)), p, max_degree=2)
+
+
+@pytest.mark.parametrize("bad", [0, -3, 2.5, "24", True])
+@pytest.mark.parametrize("synth", [brune_synthesis, bott_duffin_synthesis])
+def test_max_degree_must_be_a_positive_integer(synth, bad):
+    with pytest.raises(ParameterError, match="max_degree"):
+        synth((p**2 + p + 1) / (p**2 + p + 4), p, max_degree=bad)
+
+
+# a random degree-6 R-L-C impedance whose Bott–Duffin synthesis needs a field of degree 32
+_NEEDS_32 = (8064000 * p**6 + 40415760 * p**5 + 1683900 * p**4 + 4778334 * p**3 + 88170 * p**2 + 18216 * p + 120) / (
+    5568000 * p**5 + 7746120 * p**4 + 621750 * p**3 + 35937 * p**2 + 2000 * p + 12
+)
+
+
+def _impedance_at(net, s):
+    """The network's impedance at the complex point ``s`` from SymPy's 60-digit values of the exact elements."""
+    if isinstance(net, Resistor):
+        return sp.N(net.R, 60)
+    if isinstance(net, Inductor):
+        return s * sp.N(net.L, 60)
+    if isinstance(net, Capacitor):
+        return 1 / (s * sp.N(net.C, 60))
+    if isinstance(net, Series):
+        return sum(_impedance_at(part, s) for part in net.parts)
+    if isinstance(net, Parallel):
+        return 1 / sum(1 / _impedance_at(part, s) for part in net.parts)
+    Lp, Ls, M, Cc = (sp.N(v, 60) for v in (net.Lp, net.Ls, net.M, net.C))
+    shunt, out = M * s + 1 / (Cc * s), (Ls - M) * s + _impedance_at(net.load, s)
+    return (Lp - M) * s + shunt * out / (shunt + out)
+
+
+def test_larger_field_on_request():
+    """Refused under the default limit (naming the degree it needs); with ``max_degree=32`` the network's values
+    are positive and its impedance, from SymPy's own 60-digit evaluation of the exact values, is the target's at
+    three points to 45 digits (exact cancellation is checked on the smaller fields above)."""
+    with pytest.raises(ModelError, match=r"degree 32 > 24"):
+        bott_duffin_synthesis(_NEEDS_32, p)
+    net = bott_duffin_synthesis(_NEEDS_32, p, max_degree=32)
+    assert all(sp.N(v, 30) > 0 for v in _values(net))
+    for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
+        target = sp.N(_NEEDS_32.subs(p, s), 60)
+        assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
