@@ -7,13 +7,21 @@ Targets are impedances of random networks of positive elements (fixed random gen
   degree exactly ``d``; Brune and Bott–Duffin in symosc, counting exact realisations and documented refusals
   (the element values would need a number field of degree > 24 with python-flint, > 8 without).
 
-Run: ``python -W ignore benchmarks/synthesis_by_degree.py [--n 6]``.  Wall-clock medians on a shared machine.
+``--sample N`` adds a larger random sample (fixed seed 7: N R-L-C targets of degree 5 and 2N of degree 6) run
+with Brune and Bott–Duffin at the default field-degree limit and at each ``--max-degree`` given, counting exact
+results, refusals (with the field degree each refused target needed) and calls stopped after ``--timeout``
+seconds.
+
+Run: ``python -W ignore benchmarks/synthesis_by_degree.py [--n 6] [--sample 25 --max-degree 40]``.  Wall-clock
+medians on a shared machine.
 """
 
 from __future__ import annotations
 
 import argparse
 import random
+import re
+import signal
 import statistics
 import time
 
@@ -128,13 +136,60 @@ def rlc_table(n, rng):
         print(" ".join(row))
 
 
+class _Timeout(Exception):
+    pass
+
+
+def _alarm(*_args):
+    raise _Timeout
+
+
+def sample_table(n, limits, timeout):
+    rng = random.Random(7)
+    targets = [rlc_target(rng, d) for d in (5, 6, 6) for _ in range(n)]
+    print()
+    print(f"Random sample (seed 7): {n} R-L-C targets of degree 5, {2 * n} of degree 6; seconds per synthesis")
+    head = f"{'method':>12} {'limit':>6} {'exact':>6} {'refused':>8} {'stopped':>8} {'median s':>9} {'max s':>7}"
+    print(head + "  field degrees the refused targets needed")
+    signal.signal(signal.SIGALRM, _alarm)
+    for name, synth in (("Brune", brune_synthesis), ("Bott-Duffin", bott_duffin_synthesis)):
+        for limit in limits:
+            times, ok, stopped, needed = [], 0, 0, []
+            for Z in targets:
+                t0 = time.perf_counter()
+                signal.alarm(timeout)
+                try:
+                    synth(Z, p, max_degree=limit)
+                    ok += 1
+                except ModelError as exc:
+                    needed.append(int(re.search(r"degree (\d+) >", str(exc)).group(1)))
+                except _Timeout:
+                    stopped += 1
+                finally:
+                    signal.alarm(0)
+                times.append(time.perf_counter() - t0)
+            shown = "default" if limit is None else str(limit)
+            print(
+                f"{name:>12} {shown:>6} {ok:>6} {len(needed):>8} {stopped:>8} {statistics.median(times):9.2f} "
+                f"{max(times):7.1f}  {sorted(needed)}",
+                flush=True,
+            )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=6, help="targets per degree")
+    parser.add_argument("--sample", type=int, default=0, help="targets of degree 5 in the random sample (0: none)")
+    parser.add_argument("--max-degree", type=int, action="append", default=[], help="a field-degree limit to try")
+    parser.add_argument("--timeout", type=int, default=300, help="seconds per synthesis in the sample")
+    parser.add_argument("--skip-tables", action="store_true", help="only the random sample")
     args = parser.parse_args()
     rng = random.Random(2026)
-    lc_table(args.n, rng)
-    rlc_table(args.n, rng)
+    if not args.skip_tables:
+        lc_table(args.n, rng)
+        rlc_table(args.n, rng)
+    if args.sample:
+        sample_table(args.sample, [None, *args.max_degree], args.timeout)
 
 
 if __name__ == "__main__":

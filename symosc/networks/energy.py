@@ -42,6 +42,26 @@ def _hermitian_form(M: sp.Matrix, x: Sequence) -> sp.Expr:
     return sp.Add(*(M[j, k] * x[j] * sp.conjugate(x[k]) for j in range(n) for k in range(n) if M[j, k] != 0))
 
 
+def _loop_currents(Zl: sp.Matrix, rhs: sp.Matrix, at: sp.Expr) -> tuple:
+    """Solution of ``Zl x = rhs`` scaled to ``x[0] = 1``, exactly, in the smallest domain holding the entries
+    (Gaussian rationals for a numeric ``p``: no expression swell; SymPy's expressions only for radicals or
+    symbols)."""
+    from sympy.polys.matrices import DomainMatrix
+    from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
+
+    A, b = DomainMatrix.from_Matrix(Zl).to_field(), DomainMatrix.from_Matrix(rhs)
+    A, b = A.unify(b.to_field())
+    K = A.domain
+    try:
+        x = [row[0] for row in A.lu_solve(b).to_list()]
+    except (DMNonInvertibleMatrixError, ValueError, ZeroDivisionError) as exc:
+        raise ModelError(f"the loop equations are singular at p = {at} (a resonance of the network)") from exc
+    if not x[0]:
+        raise ModelError(f"no current enters the network at p = {at} (its impedance is infinite there)")
+    currents = (K.to_sympy(K.quo(v, x[0])) for v in x)
+    return tuple(sp.expand(sp.radsimp(v)) if K.is_EX or K.is_EXRAW else v for v in currents)
+
+
 @dataclass(frozen=True)
 class EnergyValues:
     """The energy functions at one complex frequency ``at`` for the driving current ``I1 = 1``.
@@ -174,16 +194,9 @@ class EnergyFunctions:
         if at.free_symbols or at == 0:
             raise ParameterError(f"at must be a non-zero complex number (a value of p), got {at}")
         Zl = (self.R + at * self.L + self.S / at).as_mutable()
-        n = Zl.shape[0]
-        rhs = sp.zeros(n, 1)
+        rhs = sp.zeros(Zl.shape[0], 1)
         rhs[0] = 1
-        try:
-            x = Zl.LUsolve(rhs).applyfunc(lambda v: sp.expand(sp.radsimp(v)))
-        except (ValueError, ZeroDivisionError) as exc:
-            raise ModelError(f"the loop equations are singular at p = {at} (a resonance of the network)") from exc
-        if x[0] == 0:
-            raise ModelError(f"no current enters the network at p = {at} (its impedance is infinite there)")
-        currents = tuple(sp.expand(sp.radsimp(v / x[0])) for v in x)
+        currents = _loop_currents(Zl, rhs, at)
 
         def form(M: sp.ImmutableMatrix) -> sp.Expr:
             value = sp.expand(_hermitian_form(M, currents))
