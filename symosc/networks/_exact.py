@@ -46,7 +46,8 @@ MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of a polynomial whose coefficients are themselves algebraic numbers: {what}); exact synthesis keeps every "
-    "element of a network in one number field of degree <= {limit}"
+    "element of a network in one number field of degree <= {limit}; brune_synthesis and bott_duffin_synthesis "
+    "allow it with max_degree={degree} or more (fields of degree 30-40 take seconds to minutes)"
 )
 
 
