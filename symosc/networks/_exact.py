@@ -369,12 +369,13 @@ def extend_with_root(f: list, K, x_num, what: str):
             break
     else:  # pragma: no cover - all but finitely many shifts give a squarefree norm
         raise ModelError(f"no squarefree norm found for {what}")
-    gamma_num = x_num + s * _tower.primitive_value(K, _DIGITS)
     phi, index, dist = None, None, None
-    for factor, _ in factor_qq(N):
-        for i, root in enumerate(real_roots_numeric(factor)):
-            if dist is None or abs(root - gamma_num) < dist:
-                phi, index, dist = factor, i, abs(root - gamma_num)
+    with mpmath.workdps(_DIGITS):  # γ ≈ r + s Θ: Θ may be large (1e15), r's digits must survive the sum
+        gamma_num = x_num + s * _tower.primitive_value(K, _DIGITS)
+        for factor, _ in factor_qq(N):
+            for i, root in enumerate(real_roots_numeric(factor)):
+                if dist is None or abs(root - gamma_num) < dist:
+                    phi, index, dist = factor, i, abs(root - gamma_num)
     if phi is None:  # pragma: no cover - f has the real root x_num
         raise ModelError(f"no real root found for {what}")
     degree, m = dup_degree(phi), field_degree(K)
@@ -390,9 +391,10 @@ def extend_with_root(f: list, K, x_num, what: str):
             acc = _tower._reduce(dup_add(dup_mul(acc, lin, K), [K.convert(c)], K), f, K)
         own = gcd(f, acc, K)
     if dup_degree(own) == 1:  # r lies in K (then degree == m)
-        return K.neg(own[1]), K
-    L = TowerField(K, own, phi, index, s)
-    r = L.gen
+        r, L = K.neg(own[1]), K
+    else:
+        L = TowerField(K, own, phi, index, s)
+        r = L.gen
     if abs(num(r, L) - x_num) > mpmath.mpf(10) ** -8 * (1 + abs(x_num)):  # x_num: a floating-point root of f
         raise ModelError(f"wrong root of {what}: {num(r, L)} vs {x_num}")  # pragma: no cover - a certified root choice
     return r, L

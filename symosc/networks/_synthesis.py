@@ -144,7 +144,8 @@ def _interior_in_field(E: list, Q: list, crit: list, K, cands: list, known: tupl
     tol = mpmath.mpf(10) ** -20 * (1 + abs(best_val))
     if cands and min(c[0] for c in cands) <= best_val + tol:
         return
-    best_x = mpmath.mpf(str(best_x))
+    with mpmath.workdps(ex._DIGITS):
+        best_x = mpmath.mpf(str(best_x))  # all 40 digits
     for x in known:  # exact: a zero of crit; numerically the winning one
         if abs(ex.num(x, K) - best_x) <= mpmath.mpf(10) ** -12 * (1 + abs(best_x)) and not ex.dup_eval(crit, x, K):
             cands.append((best_val, 1, ("K", x)))
@@ -157,7 +158,7 @@ def _interior_in_field(E: list, Q: list, crit: list, K, cands: list, known: tupl
 
 
 def _as_sympy(values: list) -> list:
-    return [sp.Float(str(v), 40) for v in values]
+    return [sp.Float(mpmath.nstr(v, 35), 40) for v in values]  # all digits computed (str gives 15)
 
 
 def join(parts: list[OnePort], rest: OnePort | None, cls: type) -> OnePort:

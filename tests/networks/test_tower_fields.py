@@ -168,3 +168,14 @@ def test_nested_bott_duffin_case_is_exact():
     roots = {r.poly for v in _values(net) for r in sp.sympify(v).atoms(sp.CRootOf)}
     assert [q.degree() for q in roots] == [18]
     _check_exact(net, Z)
+
+
+@pytest.mark.parametrize("root", [sp.Rational(1, 7), sp.Rational(1, 3)])
+def test_root_choice_survives_a_large_generator(root):
+    """Over QQ(√m) with √m ≈ 1.25e15 the root is identified through γ = r + s√m; two roots 0.19 apart are 1.5e-16
+    apart relative to γ, so the sum must be formed with all the digits (in double precision the other root was
+    picked: a random degree-6 target was then refused as not positive real)."""
+    K = QQ.algebraic_field(sp.sqrt(1571608388319572395013532841609))
+    f = [K.one, K.convert(-sp.Rational(1, 7) - sp.Rational(1, 3)), K.convert(sp.Rational(1, 21))]  # (x - 1/7)(x - 1/3)
+    r, L = ex.extend_with_root(f, K, mpmath.mpf(root.p) / root.q, "test roots")
+    assert L == K and r == K.convert(root)
