@@ -126,7 +126,7 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False, known: tuple = (), e
         N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
         E, Q, K = ex.to_field(E, K, K2), ex.to_field(Q, K, K2), K2
     else:
-        K2 = ex.extension(where)
+        K2 = ex.extension(where, "the critical points of Re Z(iω)")
         N, D = ex.to_field(N, K, K2), ex.to_field(D, K, K2)
         E, Q, K = ex.to_field(E, K, K2), ex.to_field(Q, K, K2), K2
         x0 = K.from_sympy(where)
@@ -469,7 +469,7 @@ def _richards_k(P1: list, K):
         if not roots:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0
             raise ModelError("Bott–Duffin: Z(k) = L k has no positive root")
         r = roots[0]
-        K2 = ex.extension(r)
+        K2 = ex.extension(r, "Richards' k with Z(k) = L k")
         return K2.from_sympy(r), K2
     positive = ex.numeric_positive_roots(P1, K)
     if not positive:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0

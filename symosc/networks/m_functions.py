@@ -26,6 +26,7 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import check_int
 from ..errors import ParameterError
 from ._util import P, as_expr, as_symbol, rational_function, synthesis_target
 from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
@@ -107,7 +108,7 @@ def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
     raise ParameterError(f"unknown network element {kind}")  # pragma: no cover
 
 
-def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
+def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P, *, max_degree: int | None = None) -> OnePort:
     """Realise an M-function (Min Nai-da) without mutual inductance and without lossless L or C.
 
     Bulgakov (1954), §9.24, eqs. (9.274)–(9.276): ``Z*(p*) = Z(p* - rho)`` is positive real; its Bott–Duffin
@@ -121,6 +122,9 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
     rho : number or SymPy expression
         Positive abscissa: ``Re Z(p) >= 0`` must hold for ``Re p >= -rho`` (test it with :func:`is_m_function`).
     p : sympy.Symbol
+    max_degree : int, optional
+        Largest degree over the rationals of the number field holding the exact element values, as in
+        :func:`bott_duffin_synthesis` (default 24 with python-flint, 8 without).
 
     Returns
     -------
@@ -133,7 +137,7 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
         When ``rho`` is not a positive number or ``Z(p - rho)`` is not positive real (the message names the
         failed condition, so ``rho`` is too large or ``Z`` is no M-function).
     ModelError
-        When the Bott–Duffin realisation of ``Z(p - rho)`` needs algebraic numbers beyond its exact arithmetic.
+        When the Bott–Duffin realisation of ``Z(p - rho)`` needs a number field of degree above ``max_degree``.
 
     Examples
     --------
@@ -151,6 +155,8 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
     """
     from ._synthesis import synthesize
 
+    if max_degree is not None:
+        max_degree = check_int("max_degree", max_degree, minimum=1)
     p, N, D = synthesis_target(Z, p)
     rho = as_expr(rho, "rho")
     if rho.free_symbols or not rho.is_extended_real or not rho.is_positive:
@@ -163,4 +169,4 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P) -> OnePort:
             f"Z(p - rho) is not positive real for rho = {rho} ({verdict.failed}: {verdict.detail}); Z is not an "
             "M-function with this rho (Bulgakov (1954), §9.24): try a smaller rho, see is_m_function"
         )
-    return _shift_elements(synthesize(shifted, p, "bott_duffin"), rho)  # PR already checked just above
+    return _shift_elements(synthesize(shifted, p, "bott_duffin", max_degree), rho)  # PR already checked above

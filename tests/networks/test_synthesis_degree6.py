@@ -386,3 +386,26 @@ def test_larger_field_on_request():
     for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
         target = sp.N(_NEEDS_32.subs(p, s), 60)
         assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
+
+
+def test_max_degree_bounds_the_first_extension_too():
+    """A limit given by the caller applies to every field: the minimum of Re Z of this target lies at
+    ω0² = 3/2 + √7/2 (degree 2), so ``max_degree=1`` refuses and ``max_degree=2`` gives the exact network."""
+    Z = (p**2 + 2 * p + 4) / (p**2 + p + 1)
+    with pytest.raises(ModelError, match=r"degree 2 > 1"):
+        brune_synthesis(Z, p, max_degree=1)
+    _check_exact(brune_synthesis(Z, p, max_degree=2), Z)
+
+
+def test_m_function_synthesis_takes_max_degree():
+    """Min Nai-da's M-function realisation (Bulgakov (1954), §9.24) passes the limit to its Bott–Duffin step."""
+    from symosc.networks import m_function_synthesis
+
+    Z, rho = (2 * p**2 + 3 * p + 2) / (p**2 + 3 * p + 5), sp.Rational(1, 5)
+    with pytest.raises(ModelError, match=r"degree 2 > 1"):
+        m_function_synthesis(Z, rho, p, max_degree=1)
+    net = m_function_synthesis(Z, rho, p, max_degree=2)
+    assert sp.cancel(sp.radsimp(net.impedance(p) - Z)) == 0
+    for bad in (0, 1.5, "2"):
+        with pytest.raises(ParameterError, match="max_degree"):
+            m_function_synthesis(Z, rho, p, max_degree=bad)
