@@ -7,10 +7,10 @@ Targets are impedances of random networks of positive elements (fixed random gen
   degree exactly ``d``; Brune and Bott–Duffin in symosc, counting exact realisations and documented refusals
   (the element values would need a number field of degree > 24 with python-flint, > 8 without).
 
-``--sample N`` adds a larger random sample (fixed seed 7: N R-L-C targets of degree 5 and 2N of degree 6) run
-with Brune and Bott–Duffin at the default field-degree limit and at each ``--max-degree`` given, counting exact
-results, refusals (with the field degree each refused target needed) and calls stopped after ``--timeout``
-seconds.
+``--sample N`` adds a larger random sample (random generator state 7: N R-L-C targets of degree 5 and 2N of
+degree 6) run with Brune and Bott–Duffin at the default field-degree limit and at each ``--max-degree`` given,
+counting exact results, refusals (with the field degree each refused target needed) and calls stopped after
+``--timeout`` seconds.
 
 Run: ``python -W ignore benchmarks/synthesis_by_degree.py [--n 6] [--sample 25 --max-degree 40]``.  Wall-clock
 medians on a shared machine.
@@ -148,7 +148,7 @@ def sample_table(n, limits, timeout):
     rng = random.Random(7)
     targets = [rlc_target(rng, d) for d in (5, 6, 6) for _ in range(n)]
     print()
-    print(f"Random sample (seed 7): {n} R-L-C targets of degree 5, {2 * n} of degree 6; seconds per synthesis")
+    print(f"Random sample (random state 7): {n} R-L-C targets of degree 5, {2 * n} of degree 6; seconds per synthesis")
     head = f"{'method':>12} {'limit':>6} {'exact':>6} {'refused':>8} {'stopped':>8} {'median s':>9} {'max s':>7}"
     print(head + "  field degrees the refused targets needed")
     signal.signal(signal.SIGALRM, _alarm)

@@ -40,13 +40,14 @@ from ._tower import TowerField
 _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
-#: the same with python-flint installed (tower fields: a random degree-5 Bott–Duffin case needing degree 18 took
-#: about 6 s, one needing degree 36 110 s, mostly in norms and in finding each new level's polynomial)
+#: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
+#: minutes — a Brune one needing 40 took 77 s, a Bott–Duffin one needing 36 about 5 min — and their exact values
+#: have coefficients of thousands of digits)
 MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
-    "of {what}); exact synthesis keeps every "
-    "element of a network in one number field of degree <= {limit}; brune_synthesis, bott_duffin_synthesis and "
+    "of {what}); exact synthesis keeps every element of a network in one number field of degree <= {limit}; "
+    "brune_synthesis, bott_duffin_synthesis and "
     "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 30-40 take seconds to "
     "minutes)"
 )
@@ -156,7 +157,7 @@ def normalize(N: list, D: list, K) -> tuple[list, list]:
     if not N:
         return [], [K.one]
     if isinstance(K, TowerField):
-        g = [K.one] if coprime(N, D, K) else gcd(N, D, K)
+        g = gcd(N, D, K)  # the modular coprimality test first
         if dup_degree(g) > 0:
             N, D = dup_exquo(N, g, K), dup_exquo(D, g, K)
     elif K.is_QQ or not coprime(N, D, K):
@@ -187,7 +188,7 @@ def _reductions(K) -> list:
     """Up to three pairs ``(q, roots)``: word-size primes ``q`` with roots mod ``q`` of the defining polynomial of
     each level of ``K`` (bottom first; the polynomials ``q``-integral)."""
     if K not in _REDUCTIONS:
-        levels = K.levels if isinstance(K, TowerField) else [K]
+        levels = _tower.levels(K)
         out, q, tries = [], 2**62, 0
         while len(out) < 3 and tries < 200:
             q, tries = int(sp.prevprime(q)), tries + 1

@@ -286,7 +286,7 @@ class _Values:
         (one ``CRootOf`` for all values), in each value's own field when two branches extended differently."""
         fields = {id(K): K for _, K in self.pending.values()}.values()
         top = max(fields, key=ex.field_degree, default=None)
-        below = set(map(id, top.levels)) if isinstance(top, TowerField) else {id(top)}
+        below = set(map(id, _tower.levels(top)))
         common = all(id(K) in below for K in fields)
         by_field: dict = {}
         for d, (c, K) in self.pending.items():
@@ -327,7 +327,7 @@ class Engine:
 
     def _minimum(self, N: list, D: list, K, extend: bool = True):
         """:func:`_minimum` trying the earlier ``ω0²`` first; a new interior ``ω0²`` is remembered."""
-        known = tuple(ex.convert(x, F, K) for F, x in self._roots if _below(F, K))
+        known = tuple(ex.convert(x, F, K) for F, x in self._roots if any(F == L for L in _tower.levels(K)))
         found = _minimum(N, D, K, known=known, extend=extend)
         if found is not None and found[1] not in ("0", "oo"):
             self._roots.append((found[2], found[1]))
@@ -451,13 +451,6 @@ class Engine:
         first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(C1)))
         second = Series((Capacitor(L1), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
         return Parallel((first, second))
-
-
-def _below(F, K) -> bool:
-    """Whether ``K`` is ``F`` or a tower field above it."""
-    while K != F and isinstance(K, ex.TowerField):
-        K = K.base
-    return K == F
 
 
 def _richards_k(P1: list, K):

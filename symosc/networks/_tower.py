@@ -349,6 +349,11 @@ class TowerField(Field, CharacteristicZero, SimpleDomain):
             return self.gamma_value(digits) - self.s * primitive_value(self.base, digits)
 
 
+def levels(K) -> list:
+    """The fields of ``K``'s tower, bottom first (``[K]`` for QQ or an ``AlgebraicField``)."""
+    return K.levels if isinstance(K, TowerField) else [K]
+
+
 def base_degree(K) -> int:
     """Degree over QQ of ``QQ``, an ``AlgebraicField`` or a :class:`TowerField`."""
     if isinstance(K, TowerField):
