@@ -103,18 +103,28 @@ class LinearModel(SymPyPrintable):
         >>> sorted(map(str, parts))
         ['1', 'cos(p*t)']
         """
+        return {f: K.copy() for f, K in self._harmonics.items()}
+
+    @cached_property
+    def _harmonics(self) -> dict[sp.Expr, sp.Matrix]:
         n = self.K.shape[0]
-        parts: dict[sp.Expr, sp.Matrix] = {}
+        terms: dict[sp.Expr, dict[tuple[int, int], list]] = {}
         for i in range(n):
             for j in range(n):
-                for term in sp.Add.make_args(sp.expand(self.K[i, j])):
-                    if term == 0:  # a zero entry is no harmonic (it used to add a spurious key 0)
-                        continue
-                    coeff, tpart = term.as_independent(t, as_Add=False)
-                    if tpart not in parts:
-                        parts[tpart] = sp.zeros(n, n)
-                    parts[tpart][i, j] += coeff
-        parts.setdefault(sp.S.One, sp.zeros(n, n))
+                # term by term: expanding a long sum as a whole re-sorts all of its terms at every level
+                for top in sp.Add.make_args(self.K[i, j]):
+                    for term in sp.Add.make_args(sp.expand(top) if _expandable(top) else top):
+                        if term == 0:  # a zero entry is no harmonic (it used to add a spurious key 0)
+                            continue
+                        coeff, tpart = _split_time(term)
+                        terms.setdefault(tpart, {}).setdefault((i, j), []).append(coeff)
+        parts: dict[sp.Expr, sp.Matrix] = {sp.S.One: sp.zeros(n, n)}
+        for tpart, entries in terms.items():  # one Add per entry: summing term by term is quadratic
+            sums = {ij: sp.Add(*coeffs) for ij, coeffs in entries.items()}
+            if tpart == sp.S.One or any(v != 0 for v in sums.values()):  # terms that cancel leave no harmonic
+                parts[tpart] = sp.zeros(n, n)
+                for (i, j), v in sums.items():
+                    parts[tpart][i, j] = v
         return parts
 
     @cached_property
@@ -403,3 +413,23 @@ def linearize_system(
                     "pass check_equilibrium=False to linearize anyway"
                 )
     return lin
+
+
+def _expandable(term: sp.Expr) -> bool:
+    """False when ``sp.expand(term)`` would return ``term`` unchanged: no sum, no power of a compound base and no
+    logarithm anywhere in it (most terms of a large stiffness matrix are plain products)."""
+    return any(
+        node.is_Add or isinstance(node, sp.log) or (node.is_Pow and not node.base.is_Atom)
+        for node in sp.preorder_traversal(term)
+    )
+
+
+def _split_time(term: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``term.as_independent(t, as_Add=False)`` without re-sorting: the factors of a product are already in order,
+    so each group is built from them directly."""
+    if not term.is_Mul:
+        return (sp.S.One, term) if t in term.free_symbols else (term, sp.S.One)
+    groups: tuple[list, list] = ([], [])
+    for factor in term.args:
+        groups[t in factor.free_symbols].append(factor)
+    return tuple(g[0] if len(g) == 1 else sp.Mul._from_args(g) if g else sp.S.One for g in groups)

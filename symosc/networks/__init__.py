@@ -58,7 +58,7 @@ from .image import (
     working_loss,
 )
 from .junctions import CascadeJunctions, cascade_junctions
-from .m_functions import m_function_synthesis, richards_function
+from .m_functions import m_abscissa, m_function_synthesis, richards_function
 from .oneports import (
     BruneSection,
     Capacitor,
@@ -167,6 +167,7 @@ __all__ = [
     "lattice_from_transmission",
     "lattice_phase_network",
     "link_transfer",
+    "m_abscissa",
     "m_derived_section",
     "m_function_synthesis",
     "matching_l_pad",

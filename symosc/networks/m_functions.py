@@ -27,12 +27,15 @@ from typing import Any
 import sympy as sp
 
 from .._validate import check_int
-from ..errors import ParameterError
+from ..errors import ConvergenceError, ParameterError
+from ..operational._rational import exactify
 from ._util import P, as_expr, as_symbol, rational_function, synthesis_target
 from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
-from .positive_real import positive_real_report, require_positive_real
+from .positive_real import is_positive_real, positive_real_report, require_positive_real
 
-__all__ = ["m_function_synthesis", "richards_function"]
+__all__ = ["m_abscissa", "m_function_synthesis", "richards_function"]
+
+_DIGITS = 50
 
 
 def richards_function(Z: Any, k: Any, p: sp.Symbol = P) -> sp.Expr:
@@ -90,14 +93,125 @@ def richards_function(Z: Any, k: Any, p: sp.Symbol = P) -> sp.Expr:
     return sp.cancel((k * Z - p * Zk) / den)
 
 
+def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
+    """The largest ``rho`` for which ``Z(p - rho)`` is positive real: Min Nai-da's abscissa (Bulgakov (1954), §9.24).
+
+    ``Z`` is an M-function for every ``0 < rho <= m_abscissa(Z)`` (shifting a positive-real function to the right
+    keeps it positive real, so these ``rho`` form an interval); an inductor of the realisation may then carry a
+    series resistance ``rho L`` and a capacitor a parallel one ``1/(rho C)`` (:func:`m_function_synthesis`).
+
+    The result is exact.  At the largest ``rho`` either a pole or zero of ``Z`` reaches the line ``Re p = -rho``,
+    or the minimum of ``Re Z(-rho + iω)`` over ``ω`` (at a finite ``ω``, at 0 or at infinity) reaches zero.  Every
+    such ``rho`` is a positive real root of one of these polynomials: the resultants
+    ``res_y(F(y), F(-2 rho - y))`` for ``F = N, D`` (their roots include minus the real part of every pole and
+    zero), and the discriminant, the leading coefficient and the constant term in ``x = ω²`` of the numerator of
+    ``Re Z(-rho + iω)``.  The roots are ordered and ``Z(p - t)`` is tested exactly (Sturm counts) at a rational
+    ``t`` between each pair of consecutive roots; the last root below the first failing ``t`` is the answer.
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Positive-real rational function of ``p`` with rational (or floating-point, taken exactly) coefficients.
+    p : sympy.Symbol
+
+    Returns
+    -------
+    sympy.Expr
+        ``rho`` >= 0: a rational, a radical or a ``CRootOf`` number; ``0`` when ``Z`` has a pole or a zero on the
+        imaginary axis or ``Re Z(iω)`` reaches zero (no positive ``rho`` works), ``oo`` for a constant ``Z``.
+
+    Raises
+    ------
+    ParameterError
+        When ``Z`` is not positive real (the message names the failed condition) or has irrational
+        coefficients.
+    ConvergenceError
+        When two candidate roots agree to 50 digits, so that no rational point can be placed between them (not
+        seen in practice).
+
+    Examples
+    --------
+    Bulgakov (1954), §9.24, Ex. 1: ``(a0 p + a1)/(b0 p + b1)`` is an M-function up to ``min(b1/b0, a1/a0)``.
+
+    >>> import sympy as sp
+    >>> from symosc.networks import m_abscissa
+    >>> p = sp.Symbol("p")
+    >>> m_abscissa((2*p + 3) / (p + 4), p)
+    3/2
+    >>> m_abscissa((p**2 + p + 1) / (p**2 + p + 4), p)     # Re Z(iω) = 0 at ω² = 2
+    0
+
+    See Also
+    --------
+    is_m_function, m_function_synthesis, minimum_real_part
+    """
+    p = as_symbol(p)
+    N, D = rational_function(exactify(Z), p)
+    if any(not c.is_Rational for c in N.all_coeffs() + D.all_coeffs()):
+        raise ParameterError(f"m_abscissa needs rational coefficients, got {N.as_expr() / D.as_expr()}")
+    require_positive_real(N.as_expr() / D.as_expr(), p)
+    if N.degree() <= 0 and D.degree() <= 0:
+        return sp.oo
+    candidates = _ordered_candidates(N, D, p)
+    below = sp.Integer(0)
+    for k, c in enumerate(candidates):
+        if not is_positive_real(_shifted(N, D, p, _between(candidates, k)), p):
+            return below
+        below = c
+    return sp.oo if is_positive_real(_shifted(N, D, p, 2 * _value(below) + 1), p) else below
+
+
+def _shifted(N: sp.Poly, D: sp.Poly, p: sp.Symbol, t: sp.Expr) -> sp.Expr:
+    return N.as_expr().subs(p, p - t) / D.as_expr().subs(p, p - t)
+
+
+def _value(c: sp.Expr) -> sp.Rational:
+    return sp.Rational(str(sp.N(c, _DIGITS)))
+
+
+def _between(candidates: list, k: int) -> sp.Rational:
+    """A rational strictly between candidate ``k - 1`` (or 0) and candidate ``k``."""
+    lo = _value(candidates[k - 1]) if k else sp.Integer(0)
+    hi = _value(candidates[k])
+    if hi - lo <= abs(hi) * sp.Rational(1, 10 ** (_DIGITS - 10)):
+        raise ConvergenceError(f"two candidate abscissae agree to {_DIGITS - 10} digits ({sp.N(hi, 20)})")
+    return (lo + hi) / 2
+
+
+def _ordered_candidates(N: sp.Poly, D: sp.Poly, p: sp.Symbol) -> list:
+    """Distinct positive roots (exact, ascending) of the polynomials that vanish at every boundary ``rho``."""
+    r, y, x = sp.Dummy("rho"), sp.Dummy("y"), sp.Dummy("x")
+    polys = []
+    for F in (N, D):
+        if F.degree() > 0:
+            f = F.as_expr()
+            polys.append(sp.Poly(sp.resultant(f.subs(p, y), f.subs(p, -2 * r - y), y), r))
+    n, d = N.as_expr().subs(p, p - r), D.as_expr().subs(p, p - r)
+    even = sp.expand(n * d.subs(p, -p) + n.subs(p, -p) * d)  # 2 Re(N D*) at p = iω: even in p
+    E = sp.Poly(sp.expand(even.subs(p, sp.sqrt(-x))), x)
+    E = sp.Poly(sp.sqf_part(E.as_expr(), x, r), x)
+    polys += [sp.Poly(E.LC(), r), sp.Poly(E.as_expr().subs(x, 0), r)]
+    if E.degree() > 1:
+        polys.append(sp.Poly(sp.discriminant(E.as_expr(), x), r))
+    factors = {f.monic() for P_ in polys if not P_.is_zero and P_.degree() > 0 for f, _ in P_.factor_list()[1]}
+    roots = [c for f in factors for c in f.real_roots() if c.is_positive]
+    return sorted(roots, key=_value)
+
+
+def _simplest(value: sp.Expr) -> sp.Expr:
+    """A value with radicals as ``a + b sqrt(c)`` (denominators rationalised); rationals and ``CRootOf``
+    polynomials as they are."""
+    return value if value.is_Rational or value.has(sp.CRootOf) else sp.expand(sp.radsimp(value))
+
+
 def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
     """Replace ``p*`` by ``p + rho``: L -> L + R(rho L), C -> C | R(1/(rho C)), R unchanged."""
     if isinstance(net, Resistor):
         return net
     if isinstance(net, Inductor):
-        return Series((net, Resistor(rho * net.L)))
+        return Series((net, Resistor(_simplest(rho * net.L))))
     if isinstance(net, Capacitor):
-        return Parallel((net, Resistor(1 / (rho * net.C))))
+        return Parallel((net, Resistor(_simplest(1 / (rho * net.C)))))
     if isinstance(net, Series):
         return Series(tuple(_shift_elements(part, rho) for part in net.parts))
     if isinstance(net, Parallel):
@@ -108,7 +222,7 @@ def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
     raise ParameterError(f"unknown network element {kind}")  # pragma: no cover
 
 
-def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P, *, max_degree: int | None = None) -> OnePort:
+def m_function_synthesis(Z: Any, rho: Any = None, p: sp.Symbol = P, *, max_degree: int | None = None) -> OnePort:
     """Realise an M-function (Min Nai-da) without mutual inductance and without lossless L or C.
 
     Bulgakov (1954), §9.24, eqs. (9.274)–(9.276): ``Z*(p*) = Z(p* - rho)`` is positive real; its Bott–Duffin
@@ -119,8 +233,10 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P, *, max_degree: int 
     ----------
     Z : SymPy expression
         Rational function of ``p`` with numeric coefficients.
-    rho : number or SymPy expression
+    rho : number or SymPy expression, optional
         Positive abscissa: ``Re Z(p) >= 0`` must hold for ``Re p >= -rho`` (test it with :func:`is_m_function`).
+        Default: the largest such ``rho``, :func:`m_abscissa` (exact; an irrational one makes the element values
+        algebraic numbers).
     p : sympy.Symbol
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
@@ -149,15 +265,29 @@ def m_function_synthesis(Z: Any, rho: Any, p: sp.Symbol = P, *, max_degree: int 
     >>> m_function_synthesis((2*p + 3) / (p + 4), 1, p)
     R(1/3) + ((L(5/9) + R(5/9)) | R(5/3))
 
+    Without ``rho`` the largest one is used, here ``m_abscissa = 3/2``:
+
+    >>> m_function_synthesis((2*p + 3) / (p + 4), p=p)
+    (L(4/5) + R(6/5)) | R(2)
+
     See Also
     --------
-    is_m_function, bott_duffin_synthesis, richards_function
+    m_abscissa, is_m_function, bott_duffin_synthesis, richards_function
     """
     from ._synthesis import synthesize
 
     if max_degree is not None:
         max_degree = check_int("max_degree", max_degree, minimum=1)
     p, N, D = synthesis_target(Z, p)
+    if rho is None:
+        rho = m_abscissa(N.as_expr() / D.as_expr(), p)
+        if rho == 0:
+            raise ParameterError(
+                "Z is an M-function for no rho > 0 (m_abscissa(Z) = 0: a pole or zero on the imaginary axis, or "
+                "Re Z(iω) reaches zero); realise it with bott_duffin_synthesis (Bulgakov (1954), §9.24)"
+            )
+        if rho == sp.oo:  # a constant: a resistor, whatever rho
+            rho = sp.Integer(1)
     rho = as_expr(rho, "rho")
     if rho.free_symbols or not rho.is_extended_real or not rho.is_positive:
         raise ParameterError(f"rho must be a positive real number, got {rho}")

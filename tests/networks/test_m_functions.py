@@ -21,6 +21,7 @@ from symosc.networks import (
     Parallel,
     Resistor,
     Series,
+    m_abscissa,
     m_function_synthesis,
     richards_function,
 )
@@ -152,3 +153,78 @@ def test_m_function_bad_rho():
         m_function_synthesis((p + 1) / (p + 2), 0, p)
     with pytest.raises(ParameterError, match="rho must be a positive"):
         m_function_synthesis((p + 1) / (p + 2), sp.Symbol("r"), p)
+
+
+# --- the largest rho (m_abscissa) ---------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("Z", "expected"),
+    [
+        ((2 * p + 3) / (p + 4), sp.Rational(3, 2)),  # Ex. 1: min(b1/b0, a1/a0)
+        ((5 * p + 2) / (3 * p + 7), sp.Rational(2, 5)),  # Ex. 1 again, the numerator's zero nearer the axis
+        ((p**2 + 5 * p + 4) / (p + 2), sp.Integer(1)),  # Ex. 2: min(2, roots 1 and 4 of rho² - 5 rho + 4)
+        (p + 1, sp.Integer(1)),
+        (1 / (p + 3), sp.Integer(3)),
+    ],
+)
+def test_m_abscissa_of_the_book_examples(Z, expected):
+    """Bulgakov (1954), §9.24, Ex. 1 and Ex. 2: the bounds on rho stated there are attained."""
+    assert m_abscissa(Z, p) == expected
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(1, 3).flatmap(rlc), pos, pos)
+def test_m_abscissa_of_a_shifted_network_with_an_axis_pole(net, C, rho):
+    """A network with a series capacitor has a pole at p = 0, so Z*(p) = Z(p) is an M-function for no rho > 0;
+    Z*(p + rho) is one exactly up to rho (the pole at -rho); without rho the synthesis uses that value."""
+    Zstar = (net + Capacitor(C)).impedance(p)
+    assert m_abscissa(Zstar, p) == 0
+    Z = sp.cancel(Zstar.subs(p, p + rho))
+    assert m_abscissa(Z, p) == rho
+    _check_realisation(m_function_synthesis(Z, p=p), Z, rho)
+
+
+def test_m_abscissa_at_a_zero_of_the_real_part():
+    """Z* = (p² + p + 1)/(p² + p + 4) has Re Z*(iω) = 0 at ω² = 2 (its Brune minimum is 0), so Z*(p + 1/3) is an
+    M-function exactly up to 1/3; checked numerically on both sides as well."""
+    Zstar = (p**2 + p + 1) / (p**2 + p + 4)
+    assert m_abscissa(Zstar, p) == 0
+    Z = sp.cancel(Zstar.subs(p, p + sp.Rational(1, 3)))
+    assert m_abscissa(Z, p) == sp.Rational(1, 3)
+    assert _numerically_positive_real(Z, shift=0.3333)
+    assert not _numerically_positive_real(Z, shift=0.35)
+
+
+def test_m_abscissa_irrational_and_its_synthesis():
+    """Z = (p² + 2p + 4)/(p² + p + 1): the bound is where the minimum of Re Z(-rho + iω) reaches zero, an
+    irrational number; the grid test of the closed half-plane Re p >= -rho agrees on both sides, and the
+    realisation with that rho is exact."""
+    Z = (p**2 + 2 * p + 4) / (p**2 + p + 1)
+    rho = m_abscissa(Z, p)
+    assert sp.simplify(rho - (21 - 4 * sp.sqrt(14)) / 31) == 0
+    assert _numerically_positive_real(Z, shift=float(rho) - 1e-4)
+    assert not _numerically_positive_real(Z, shift=float(rho) + 1e-2)
+    net = m_function_synthesis(Z, p=p)
+    assert sp.simplify(net.impedance(p) - Z) == 0
+
+
+def test_m_abscissa_degree_6():
+    """A degree-6 network with a series capacitor, shifted by 2/7 (the pole at p = 0 moves to -2/7)."""
+    star = (Resistor(1) | Inductor(2)) + (Capacitor(sp.Rational(1, 3)) | (Resistor(2) + Inductor(1)))
+    star = (star | Capacitor(1)) + (Inductor(3) | Resistor(5)) + Capacitor(2)
+    Zstar = star.impedance(p)
+    N, D = sp.fraction(sp.cancel(Zstar))
+    assert max(sp.degree(N, p), sp.degree(D, p)) == 6
+    Z = sp.cancel(Zstar.subs(p, p + sp.Rational(2, 7)))
+    assert m_abscissa(Z, p) == sp.Rational(2, 7)
+
+
+def test_m_abscissa_bad_input_and_edges():
+    assert m_abscissa(sp.Integer(3), p) == sp.oo
+    assert m_abscissa(p + 1 / p, p) == 0
+    with pytest.raises(ParameterError, match="not positive real"):
+        m_abscissa((p**2 + 1) / (p**2 + p + 4), p)
+    with pytest.raises(ParameterError, match="rational coefficients"):
+        m_abscissa((p + sp.sqrt(2)) / (p + 1), p)
+    with pytest.raises(ParameterError, match="for no rho > 0"):
+        m_function_synthesis((p**2 + p + 1) / (p**2 + p + 4), p=p)
+    assert m_function_synthesis(sp.Integer(3), p=p) == Resistor(3)
