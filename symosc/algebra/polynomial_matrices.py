@@ -76,6 +76,40 @@ def determinantal_divisors(f: Any, lam: sp.Symbol) -> list[sp.Expr]:
     [l - 1, (l - 2)*(l - 1)**2]
     """
     M = _as_poly_matrix(f, lam)
+    factors = _invariant_factors_exact(M, lam)
+    if factors is not None:  # D_k = E_1 ... E_k
+        out, d = [], sp.Integer(1)
+        for e in factors:
+            d = _monic(d * e, lam)
+            out.append(d)
+        return out
+    return _divisors_by_minors(M, lam)
+
+
+def _invariant_factors_exact(M: sp.Matrix, lam: sp.Symbol) -> list[sp.Expr] | None:
+    """The non-zero invariant factors (monic) by SymPy's Smith-form routine over ``K[lam]``, ``K`` the exact field
+    of the coefficients (rationals, algebraic numbers, rational functions of other symbols); None when the
+    coefficients are not exact (floats: a Euclidean algorithm on them is not reliable)."""
+    from sympy.polys.matrices import DomainMatrix
+    from sympy.polys.matrices.normalforms import invariant_factors
+
+    polys = [sp.Poly(e, lam) for e in M]
+    coeffs = [c for P in polys for c in P.all_coeffs()]
+    try:
+        K, _ = sp.polys.constructor.construct_domain(coeffs, field=True, extension=True)
+    except (NotImplementedError, sp.PolynomialError):  # pragma: no cover - unusual coefficients
+        return None
+    if not K.is_Exact or not K.is_Field:
+        return None
+    R = K[lam]
+    m, n = M.shape
+    rows = [[R.from_sympy(M[i, j]) for j in range(n)] for i in range(m)]
+    found = invariant_factors(DomainMatrix(rows, (m, n), R))
+    return [_monic(R.to_sympy(e), lam) for e in found if e]
+
+
+def _divisors_by_minors(M: sp.Matrix, lam: sp.Symbol) -> list[sp.Expr]:
+    """The definition: the monic gcd of all k-th order minors (used for inexact coefficients)."""
     m, n = M.shape
     out = []
     for k in range(1, min(m, n) + 1):

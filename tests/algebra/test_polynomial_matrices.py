@@ -168,3 +168,60 @@ def test_bad_input():
         determinantal_divisors(sp.Matrix([[1 / l, 1]]), l)
     with pytest.raises(ModelError, match="square"):
         minimal_polynomial(sp.Matrix([[1, 2]]), l)
+
+
+def _minor_gcds(M, lam):
+    """The definition, written out: monic gcd of all k-th order minors (cofactor expansion), k = 1..rank."""
+    from itertools import combinations
+
+    out = []
+    m, n = M.shape
+    for k in range(1, min(m, n) + 1):
+        g = sp.Integer(0)
+        for rows in combinations(range(m), k):
+            for cols in combinations(range(n), k):
+                g = sp.gcd(g, sp.expand(M.extract(list(rows), list(cols)).det(method="laplace")))
+        if g == 0:
+            break
+        out.append(sp.expand(sp.cancel(g / sp.Poly(g, lam).LC())))
+    return out
+
+
+entry = st.integers(-2, 2).map(sp.Integer)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    st.integers(1, 4).flatmap(
+        lambda m: st.integers(1, 4).flatmap(
+            lambda n: st.lists(st.tuples(entry, entry, entry), min_size=m * n, max_size=m * n).map(
+                lambda cs: (m, n, cs)
+            )
+        )
+    ),
+    st.booleans(),
+)
+def test_determinantal_divisors_agree_with_the_minors(shape, rank_one_row):
+    """Random rectangular polynomial matrices (quadratic entries, some with a dependent row): the Smith-form route
+    gives the monic gcds of the minors computed by cofactor expansion."""
+    m, n, cs = shape
+    lam = sp.Symbol("l")
+    M = sp.Matrix(m, n, [a * lam**2 + b * lam + c for a, b, c in cs])
+    if rank_one_row and m > 1:
+        M[m - 1, :] = (lam + 1) * M[0, :]
+    got = determinantal_divisors(M, lam)
+    want = _minor_gcds(M, lam)
+    assert len(got) == len(want)
+    assert all(sp.expand(g - w) == 0 for g, w in zip(got, want, strict=True))
+
+
+def test_determinantal_divisors_with_symbols_radicals_and_floats():
+    l, a = sp.symbols("l a")
+    M = sp.Matrix([[l - a, a, 0], [0, l - a, 1], [0, 0, l - sp.sqrt(2)]])
+    got = determinantal_divisors(M, l)
+    want = _minor_gcds(M, l)
+    assert all(sp.simplify(g - w) == 0 for g, w in zip(got, want, strict=True)) and len(got) == 3
+    F = sp.Matrix([[l - 0.5, 0], [0, l - 0.5]])  # floats: the definition is used
+    got = determinantal_divisors(F, l)
+    assert len(got) == 2
+    assert all(sp.expand(g - w) == 0 for g, w in zip(got, [l - 0.5, l**2 - l + 0.25], strict=True))
