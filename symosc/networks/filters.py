@@ -341,9 +341,12 @@ def lattice_from_transmission(X: Any, W: Any, p: sp.Symbol = P) -> FourPole:
     [0, 0],
     [0, 0]])
 
+    The arms are returned as impedances; :func:`correcting_link` realises the same lattice with networks of
+    positive R, L, C (and coupled coils where needed) for transfers of degree up to 2.
+
     See Also
     --------
-    lattice, lattice_phase_network
+    lattice, lattice_phase_network, correcting_link
     """
     from .positive_real import require_positive_real
 
