@@ -228,3 +228,46 @@ def test_m_abscissa_bad_input_and_edges():
     with pytest.raises(ParameterError, match="for no rho > 0"):
         m_function_synthesis((p**2 + p + 1) / (p**2 + p + 4), p=p)
     assert m_function_synthesis(sp.Integer(3), p=p) == Resistor(3)
+
+
+def _lossy_tree(rng, n):
+    """Random series/parallel tree of ``n`` resistors, lossy inductors (L + R) and lossy capacitors (C | R)."""
+    value = lambda: sp.Rational(rng.randint(1, 9), rng.randint(1, 5))  # noqa: E731
+    if n == 1:
+        kind = rng.choice("RLC")
+        if kind == "R":
+            return Resistor(value())
+        return Inductor(value()) + Resistor(value()) if kind == "L" else Capacitor(value()) | Resistor(value())
+    k = rng.randint(1, n - 1)
+    a, b = _lossy_tree(rng, k), _lossy_tree(rng, n - k)
+    return a + b if rng.random() < 0.5 else a | b
+
+
+def _numerically_m_function(Z, rho) -> bool:
+    """Poles and zeros left of Re p = -rho (NumPy roots) and Re Z >= 0 on that line (dense grid to |ω| = 1e5)."""
+    for poly in sp.fraction(sp.cancel(Z)):
+        c = np.array([float(a) for a in sp.Poly(poly, p).all_coeffs()])
+        if c.size > 1 and np.max(np.roots(c).real) > -rho + 1e-9:
+            return False
+    f = sp.lambdify(p, Z, "numpy")
+    far = np.geomspace(30, 1e5, 2000)
+    w = np.concatenate([np.linspace(-30, 30, 30001), far, -far])
+    return bool(np.min(np.real(f(-rho + 1j * w))) >= -1e-9)
+
+
+@pytest.mark.parametrize("state", range(8))
+def test_m_abscissa_of_random_lossy_networks(state):
+    """Networks whose every L and C carries loss have a positive abscissa, often irrational; NumPy roots and a
+    dense grid on the line Re p = -rho agree that it is the largest: PR just left of it, not PR 2 % beyond."""
+    import random
+
+    rng = random.Random(state)
+    Z = sp.cancel(_lossy_tree(rng, rng.randint(2, 4)).impedance(p))
+    rho = m_abscissa(Z, p)
+    if rho == sp.oo:
+        assert not Z.has(p)
+        return
+    r = float(rho)
+    assert r > 0
+    assert _numerically_m_function(Z, r * (1 - 1e-6) - 1e-9)
+    assert not _numerically_m_function(Z, r * 1.02 + 1e-3)
