@@ -463,34 +463,79 @@ def flatten(c, K) -> list:
 
 
 def gamma_coordinates(cs: list, K) -> list[list]:
-    """Coefficients (highest power first) of each element of ``cs`` as a polynomial in ``γ``: the powers of ``γ``
-    in the monomial basis form a rational matrix (built once per field), and the coordinate vectors are the
-    solution of one linear system with all of them as right-hand sides (flint's exact solver when installed,
-    SymPy's DomainMatrix otherwise)."""
+    """Coefficients (highest power first) of each element of ``cs`` as a polynomial in ``γ``.
+
+    With python-flint: the coordinate vectors in the monomial basis (:func:`flatten`) times the rational matrix
+    whose columns are the monomials as polynomials in ``γ`` (:func:`_gamma_basis`, built once per field).  Without
+    it: SymPy's DomainMatrix solves ``A x = b``, the columns of ``A`` the powers of ``γ`` in the monomial basis."""
     from ._exact import flint_module
 
     flint = flint_module()
     n, m = K.degree, len(cs)
-    if K._solver is None:
-        columns, pw = [], K.one
-        for _ in range(n):
-            columns.append(flatten(pw, K))
-            pw = pw * K.primitive
-        if flint is not None:
-            columns = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
-        K._solver = columns
-    columns, targets = K._solver, [flatten(c, K) for c in cs]
+    targets = [flatten(c, K) for c in cs]
     if flint is not None:
-        sol = columns.solve(flint.fmpq_mat(n, m, [_fq(flint, targets[j][i]) for i in range(n) for j in range(m)]))
-        coeffs = [[QQ(int(sol[i, j].p), int(sol[i, j].q)) for i in range(n)] for j in range(m)]
+        rhs = flint.fmpq_mat(n, m, [_fq(flint, targets[j][i]) for i in range(n) for j in range(m)])
+        sol = _gamma_basis(K) * rhs
+        coeffs = [[_from_fq(sol[i, j]) for i in range(n)] for j in range(m)]
     else:
         from sympy.polys.matrices import DomainMatrix
 
+        columns = _gamma_powers(K)
         A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
         b = DomainMatrix([[targets[j][i] for j in range(m)] for i in range(n)], (n, m), QQ)
         rows = A.lu_solve(b).to_list()
         coeffs = [[rows[i][j] for i in range(n)] for j in range(m)]
     return [dup_strip(list(reversed(c))) for c in coeffs]
+
+
+def _gamma_powers(K) -> list[list]:
+    """``γ^k`` in the monomial basis, ``k = 0, ..., n - 1``."""
+    columns, pw = [], K.one
+    for _ in range(K.degree):
+        columns.append(flatten(pw, K))
+        pw = pw * K.primitive
+    return columns
+
+
+def _gamma_basis(K):
+    """The rational matrix (flint ``fmpq_mat``, cached on ``K``) whose column ``i`` holds the coefficients (lowest
+    power first) of the ``i``-th monomial of :func:`flatten` as a polynomial in ``γ`` modulo ``φ``: the inverse of
+    the matrix ``A`` of the powers of ``γ`` in the monomial basis.
+
+    Only the primitive elements ``γ_i`` of the levels below are found by a linear solve with ``A`` (one
+    right-hand side each, the same polynomials ``Γ_i(γ)``); the adjoined roots follow as ``x_i = Γ_i - s_i
+    Γ_(i-1)`` (``γ_i = x_i + s_i γ_(i-1)``, ``Γ_L = γ``), and the monomials as their products modulo ``φ``.
+    Inverting ``A`` itself, or solving with all the right-hand sides of :func:`gamma_coordinates` at once, is several
+    times slower: ``A`` has entries of thousands of digits at degree 32-40."""
+    from ._exact import flint_module
+
+    if K._solver is not None:
+        return K._solver
+    flint, n = flint_module(), K.degree
+    columns = _gamma_powers(K)
+    A = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
+    levels = K.levels
+    rhs = [flatten(K.convert(primitive(F)), K) for F in levels[:-1]]
+    sol = A.solve(flint.fmpq_mat(n, len(rhs), [_fq(flint, rhs[j][i]) for i in range(n) for j in range(len(rhs))]))
+    gammas = [flint.fmpq_poly([sol[i, j] for i in range(n)]) for j in range(len(rhs))] + [flint.fmpq_poly([0, 1])]
+    phi = _fq_poly(flint, K.phi)
+
+    def powers(g, count: int) -> list:  # g^(count-1), ..., g, 1 modulo φ
+        out = [flint.fmpq_poly([1])]
+        for _ in range(count - 1):
+            out.append((out[-1] * g) % phi)
+        return out[::-1]
+
+    monomials = powers(gammas[0], base_degree(levels[0]))
+    for i, F in enumerate(levels[1:], start=1):
+        xs = powers(gammas[i] - gammas[i - 1] * F.s, F.e)
+        monomials = [(x * mon) % phi if j < F.e - 1 else mon for j, x in enumerate(xs) for mon in monomials]
+    K._solver = flint.fmpq_mat(n, n, [monomials[j][i] for i in range(n) for j in range(n)])
+    return K._solver
+
+
+def _from_fq(c):
+    return QQ(int(c.p), int(c.q))
 
 
 def _fq(flint, c):

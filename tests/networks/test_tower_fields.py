@@ -10,9 +10,10 @@ import mpmath
 import pytest
 import sympy as sp
 from sympy import QQ
+from sympy.polys.densebasic import dup_strip
 
 from symosc.networks import _exact as ex
-from symosc.networks import bott_duffin_synthesis
+from symosc.networks import _tower, bott_duffin_synthesis
 from symosc.networks._tower import TowerField
 
 from .test_synthesis_degree6 import _check_exact, _values
@@ -179,3 +180,33 @@ def test_root_choice_survives_a_large_generator(root):
     f = [K.one, K.convert(-sp.Rational(1, 7) - sp.Rational(1, 3)), K.convert(sp.Rational(1, 21))]  # (x - 1/7)(x - 1/3)
     r, L = ex.extend_with_root(f, K, mpmath.mpf(root.p) / root.q, "test roots")
     assert L == K and r == K.convert(root)
+
+
+@pytest.fixture(scope="module")
+def cubic_top(tower):
+    """A third level of degree 3 over the tower: ∛(1 + √(1 + √3)) (a degree-24 field)."""
+    _, _, L2, _, r2, _ = tower
+    root = mpmath.cbrt(1 + mpmath.sqrt(1 + mpmath.sqrt(3)))
+    r3, L3 = ex.extend_with_root([L2.one, L2.zero, L2.zero, -(L2.one + r2)], L2, root, "cube root")
+    assert (L3.e, ex.field_degree(L3)) == (3, 24)
+    return r3, L3
+
+
+def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
+    """The γ-coordinates from the products of the generators' polynomials in γ against the solution of
+    ``A x = b`` (``A``: the powers of γ in the monomial basis; SymPy's solver)."""
+    from sympy.polys.matrices import DomainMatrix
+
+    _, _, L2, _, _, _ = tower
+    _, L3 = cubic_top
+    rng = random.Random(13)
+    for F in (L2, L3):
+        n = F.degree
+        columns = _tower._gamma_powers(F)
+        A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
+        cs = [_random_element(F, rng) for _ in range(3)] + [F.gen, F.primitive, F.one]
+        b = DomainMatrix([[_tower.flatten(c, F)[i] for c in cs] for i in range(n)], (n, len(cs)), QQ)
+        rows = A.lu_solve(b).to_list()
+        expected = [dup_strip([rows[i][j] for i in reversed(range(n))]) for j in range(len(cs))]
+        assert _tower.gamma_coordinates(cs, F) == expected
+        assert _tower.gamma_coordinates(cs[:1], F) == expected[:1]
