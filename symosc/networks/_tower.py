@@ -54,18 +54,29 @@ _INVERSES: dict = {}
 
 
 def _algebraic_inverse(c, K):
-    """``1/c`` in QQ or an ``AlgebraicField``: flint's extended gcd of ``c`` and the minimal polynomial when
-    installed (SymPy's dense gcdex in pure Python is slow on the large coefficients of nested fields)."""
+    """``1/c`` in QQ or an ``AlgebraicField``: with python-flint the solution of ``M x = 1``, ``M`` the rational
+    matrix of multiplication by ``c`` in the basis ``1, θ, ..., θ^(n-1)`` (flint's fraction-free solver: several
+    times faster than its extended gcd of ``c`` and the minimal polynomial on the coefficients of thousands of
+    digits of nested fields); SymPy's dense gcdex without it."""
     from ._exact import flint_module
 
     flint = flint_module()
     if flint is None or K.is_QQ:
         return K.quo(K.one, c)
-    g, s, _ = _fq_poly(flint, c.to_list()).xgcd(_fq_poly(flint, K.mod.to_list()))
-    if g.degree() != 0:  # pragma: no cover - the minimal polynomial is irreducible
-        raise ZeroDivisionError("not invertible in the algebraic field")
-    coeffs = (s / g[0]).coeffs()  # lowest power first
-    return K(dup_strip([QQ(int(a.p), int(a.q)) for a in reversed(coeffs)]))
+    mod = _fq_poly(flint, K.mod.to_list())
+    n = mod.degree()
+    mod = mod / mod[n]
+    v, columns = _fq_poly(flint, c.to_list()) % mod, []
+    if v.is_zero():
+        raise ZeroDivisionError("division by zero in an algebraic field")
+    for _ in range(n):  # c θ^k modulo the minimal polynomial, lowest power first
+        columns.append([v[i] for i in range(n)])
+        v = v.left_shift(1)
+        if v.degree() == n:
+            v -= mod * v[n]
+    M = flint.fmpq_mat(n, n, [columns[k][i] for i in range(n) for k in range(n)])
+    x = M.solve(flint.fmpq_mat(n, 1, [1] + [0] * (n - 1)), algorithm="fflu")
+    return K(dup_strip([QQ(int(x[i, 0].p), int(x[i, 0].q)) for i in reversed(range(n))]))
 
 
 def _fq_poly(flint, coeffs: list):

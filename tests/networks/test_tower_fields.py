@@ -210,3 +210,15 @@ def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
         expected = [dup_strip([rows[i][j] for i in reversed(range(n))]) for j in range(len(cs))]
         assert _tower.gamma_coordinates(cs, F) == expected
         assert _tower.gamma_coordinates(cs[:1], F) == expected[:1]
+
+
+def test_algebraic_inverse_agrees_with_sympy():
+    """The inverse in an algebraic field by a rational linear solve against SymPy's own (extended gcd)."""
+    K = QQ.algebraic_field(SQ2, SQ3, sp.sqrt(5))
+    rng = random.Random(9)
+    for _ in range(8):
+        c = K([QQ(rng.randint(-99, 99), rng.randint(1, 50)) for _ in range(8)])
+        if c:
+            assert _tower._algebraic_inverse(c, K) == K.quo(K.one, c)
+    with pytest.raises(ZeroDivisionError):
+        _tower._algebraic_inverse(K.zero, K)
