@@ -114,6 +114,62 @@ def invert_mod(a: list, m: list, K) -> list:
     return _reduce([c * inv for c in s1], m, K)
 
 
+def multiplication_columns(a: list, own: list, K) -> list[list]:
+    """Coordinates (length ``e = deg own``, highest power first) of ``a x^j`` modulo the monic ``own`` over ``K``
+    for ``j = e - 1, ..., 0``: the columns of the matrix of multiplication by ``a`` in the basis
+    ``x^(e-1), ..., 1`` (no division: ``own`` is monic)."""
+    e = len(own) - 1
+    v = [K.zero] * (e - len(a)) + list(a)
+    cols = [v]
+    for _ in range(e - 1):  # times x: shift, then reduce the overflowing coefficient with own
+        c, v = v[0], [*v[1:], K.zero]
+        if c:
+            v = [v[i] - c * own[i + 1] for i in range(e)]
+        cols.append(v)
+    return cols[::-1]
+
+
+def charpoly(A: list[list], K) -> list:
+    """Characteristic polynomial ``det(t I - A)`` (highest power first) of the square matrix ``A`` (rows) over the
+    ring ``K``, by Berkowitz's division-free algorithm (Berkowitz (1984); Abdeljaoued and Lombardi (2004), ch. 7):
+    the polynomial of each leading principal submatrix from the previous one by a lower triangular Toeplitz
+    matrix whose entries are ``-R A^k C`` (``R``, ``C`` the new row and column)."""
+    poly = [K.one]
+    for r in range(1, len(A) + 1):
+        row, col = A[r - 1][: r - 1], [A[i][r - 1] for i in range(r - 1)]
+        toeplitz = [K.one, -A[r - 1][r - 1]]
+        for _ in range(r - 1):  # -R A_(r-1)^k C, k = 0, ..., r - 2
+            acc = K.zero
+            for x, y in zip(row, col, strict=True):
+                acc = acc + x * y
+            toeplitz.append(-acc)
+            col = [sum((A[i][j] * col[j] for j in range(r - 1)), K.zero) for i in range(r - 1)]
+        poly = [
+            sum((toeplitz[i - j] * poly[j] for j in range(max(0, i - r), min(i, r - 1) + 1)), K.zero)
+            for i in range(r + 1)
+        ]
+    return poly
+
+
+def invert_charpoly(a: list, own: list, K) -> list:
+    """``1/a`` modulo the monic irreducible ``own`` over ``K`` by the Cayley–Hamilton theorem: with
+    ``χ(t) = t^e + c_1 t^(e-1) + ... + c_e`` the characteristic polynomial of multiplication by ``a`` (division-free,
+    :func:`charpoly`), ``1/a = -(a^(e-1) + c_1 a^(e-2) + ... + c_(e-1)) / c_e``; ``c_e = ±`` the norm of ``a`` is
+    the one element of ``K`` inverted (the Euclidean algorithm inverts one per division step)."""
+    cols = multiplication_columns(a, own, K)
+    e = len(cols)
+    rows = [[cols[j][i] for j in range(e)] for i in range(e)]
+    chi = charpoly(rows, K)
+    if not chi[-1]:
+        raise ZeroDivisionError("not invertible modulo an irreducible polynomial")
+    h = [K.zero] * (e - 1) + [K.one]  # Horner's rule, coordinates: h <- a h + c_k (a h: the matrix times h)
+    for c in chi[1:-1]:
+        h = [sum((x * y for x, y in zip(row, h, strict=True)), K.zero) for row in rows]
+        h[-1] = h[-1] + c
+    inv = -inverse(chi[-1], K)
+    return dup_strip([x * inv for x in h])
+
+
 class TowerElement:
     """An element of a :class:`TowerField`: ``rep`` over the base field, reduced modulo ``own``."""
 
@@ -214,7 +270,7 @@ class TowerElement:
             raise ZeroDivisionError("division by zero in a tower field")
         if len(self.rep) == 1:
             return TowerElement([inverse(self.rep[0], F.base)], F)
-        return TowerElement(invert_mod(self.rep, F.own, F.base), F)
+        return TowerElement(invert_charpoly(self.rep, F.own, F.base), F)
 
     def __truediv__(self, other):
         o = self._coerce(other)

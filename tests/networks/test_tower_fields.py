@@ -14,7 +14,7 @@ from sympy.polys.densebasic import dup_strip
 
 from symosc.networks import _exact as ex
 from symosc.networks import _tower, bott_duffin_synthesis
-from symosc.networks._tower import TowerField
+from symosc.networks._tower import TowerElement, TowerField
 
 from .test_synthesis_degree6 import _check_exact, _values
 
@@ -192,6 +192,45 @@ def cubic_top(tower):
     return r3, L3
 
 
+def test_berkowitz_charpoly_agrees_with_sympy():
+    rng = random.Random(11)
+    x = sp.Symbol("x")
+    for n in (1, 2, 3, 5):
+        rows = [[QQ(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(n)] for _ in range(n)]
+        expected = sp.Matrix(n, n, [QQ.to_sympy(c) for row in rows for c in row]).charpoly(x).all_coeffs()
+        assert [QQ.to_sympy(c) for c in _tower.charpoly(rows, QQ)] == expected
+
+
+def test_charpoly_inverse_agrees_with_euclid(tower, cubic_top):
+    """The Cayley–Hamilton inverse (one inversion in the base field) against the extended Euclidean algorithm (one
+    per division step) and against ``a · a⁻¹ = 1``, on two- and three-level towers (quadratic and cubic levels)."""
+    _, L1, L2, _, _, M = tower
+    _, L3 = cubic_top
+    rng = random.Random(5)
+    for F in (L1, L2, L3):
+        for _ in range(6):
+            a = _random_element(F, rng)
+            if len(a.rep) < 2:
+                continue
+            inv = _tower.invert_charpoly(a.rep, F.own, F.base)
+            assert inv == _tower.invert_mod(a.rep, F.own, F.base)
+            assert a * TowerElement(inv, F) == F.one
+            if F is not L3:
+                assert _image(TowerElement(inv, F), F, M) == M.one / _image(a, F, M)
+
+
+def test_algebraic_inverse_agrees_with_sympy():
+    """The inverse in an algebraic field by a rational linear solve against SymPy's own (extended gcd)."""
+    K = QQ.algebraic_field(SQ2, SQ3, sp.sqrt(5))
+    rng = random.Random(9)
+    for _ in range(8):
+        c = K([QQ(rng.randint(-99, 99), rng.randint(1, 50)) for _ in range(8)])
+        if c:
+            assert _tower._algebraic_inverse(c, K) == K.quo(K.one, c)
+    with pytest.raises(ZeroDivisionError):
+        _tower._algebraic_inverse(K.zero, K)
+
+
 def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
     """The γ-coordinates from the products of the generators' polynomials in γ against the solution of
     ``A x = b`` (``A``: the powers of γ in the monomial basis; SymPy's solver)."""
@@ -210,15 +249,3 @@ def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
         expected = [dup_strip([rows[i][j] for i in reversed(range(n))]) for j in range(len(cs))]
         assert _tower.gamma_coordinates(cs, F) == expected
         assert _tower.gamma_coordinates(cs[:1], F) == expected[:1]
-
-
-def test_algebraic_inverse_agrees_with_sympy():
-    """The inverse in an algebraic field by a rational linear solve against SymPy's own (extended gcd)."""
-    K = QQ.algebraic_field(SQ2, SQ3, sp.sqrt(5))
-    rng = random.Random(9)
-    for _ in range(8):
-        c = K([QQ(rng.randint(-99, 99), rng.randint(1, 50)) for _ in range(8)])
-        if c:
-            assert _tower._algebraic_inverse(c, K) == K.quo(K.one, c)
-    with pytest.raises(ZeroDivisionError):
-        _tower._algebraic_inverse(K.zero, K)
