@@ -13,6 +13,8 @@ Trager's shift when the tower is extended again, and to write an element as an e
 
 from __future__ import annotations
 
+import math
+
 import mpmath
 import sympy as sp
 from sympy import QQ
@@ -540,10 +542,16 @@ def gamma_coordinates(cs: list, K) -> list[list]:
     flint = flint_module()
     n, m = K.degree, len(cs)
     targets = [flatten(c, K) for c in cs]
-    if flint is not None:
-        rhs = flint.fmpq_mat(n, m, [_fq(flint, targets[j][i]) for i in range(n) for j in range(m)])
-        sol = _gamma_basis(K) * rhs
-        coeffs = [[_from_fq(sol[i, j]) for i in range(n)] for j in range(m)]
+    if flint is not None:  # integer matrices: the basis over one denominator, each target over its own
+        basis, den = _gamma_basis(K)
+        dens = [math.lcm(*(int(a.denominator) for a in t)) for t in targets]
+        rhs = [
+            int(targets[j][i].numerator) * (dens[j] // int(targets[j][i].denominator))
+            for i in range(n)
+            for j in range(m)
+        ]
+        sol = basis * flint.fmpz_mat(n, m, rhs)
+        coeffs = [[QQ(int(sol[i, j]), den * dens[j]) for i in range(n)] for j in range(m)]
     else:
         from sympy.polys.matrices import DomainMatrix
 
@@ -564,10 +572,10 @@ def _gamma_powers(K) -> list[list]:
     return columns
 
 
-def _gamma_basis(K):
-    """The rational matrix (flint ``fmpq_mat``, cached on ``K``) whose column ``i`` holds the coefficients (lowest
-    power first) of the ``i``-th monomial of :func:`flatten` as a polynomial in ``γ`` modulo ``φ``: the inverse of
-    the matrix ``A`` of the powers of ``γ`` in the monomial basis.
+def _gamma_basis(K) -> tuple:
+    """``(B, d)`` (cached on ``K``): ``B / d`` (``B`` a flint ``fmpz_mat``, ``d`` an integer) is the rational matrix
+    whose column ``i`` holds the coefficients (lowest power first) of the ``i``-th monomial of :func:`flatten` as a
+    polynomial in ``γ`` modulo ``φ``, the inverse of the matrix ``A`` of the powers of ``γ`` in the monomial basis.
 
     Only the primitive elements ``γ_i`` of the levels below are found by a linear solve with ``A`` (one
     right-hand side each, the same polynomials ``Γ_i(γ)``); the adjoined roots follow as ``x_i = Γ_i - s_i
@@ -597,12 +605,14 @@ def _gamma_basis(K):
     for i, F in enumerate(levels[1:], start=1):
         xs = powers(gammas[i] - gammas[i - 1] * F.s, F.e)
         monomials = [(x * mon) % phi if j < F.e - 1 else mon for j, x in enumerate(xs) for mon in monomials]
-    K._solver = flint.fmpq_mat(n, n, [monomials[j][i] for i in range(n) for j in range(n)])
+    den = math.lcm(*(int(mon.denom()) for mon in monomials))  # in practice one denominator for all
+    columns = []
+    for mon in monomials:
+        scale = den // int(mon.denom())
+        column = [int(c) * scale for c in mon.numer().coeffs()]
+        columns.append(column + [0] * (n - len(column)))
+    K._solver = flint.fmpz_mat(n, n, [columns[j][i] for i in range(n) for j in range(n)]), den
     return K._solver
-
-
-def _from_fq(c):
-    return QQ(int(c.p), int(c.q))
 
 
 def _fq(flint, c):
