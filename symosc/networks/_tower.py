@@ -577,9 +577,10 @@ def _gamma_basis(K) -> tuple:
     whose column ``i`` holds the coefficients (lowest power first) of the ``i``-th monomial of :func:`flatten` as a
     polynomial in ``γ`` modulo ``φ``, the inverse of the matrix ``A`` of the powers of ``γ`` in the monomial basis.
 
-    Only the primitive elements ``γ_i`` of the levels below are found by a linear solve with ``A`` (one
-    right-hand side each, the same polynomials ``Γ_i(γ)``); the adjoined roots follow as ``x_i = Γ_i - s_i
-    Γ_(i-1)`` (``γ_i = x_i + s_i γ_(i-1)``, ``Γ_L = γ``), and the monomials as their products modulo ``φ``.
+    Only the primitive element ``γ_(L-1)`` of the level below is found by a linear solve with ``A`` (one
+    right-hand side: its polynomial ``Γ_(L-1)(γ)``); the lower ones ``γ_i`` are polynomials in ``γ_(L-1)`` (this
+    function in the smaller field), composed with ``Γ_(L-1)`` modulo ``φ``; the adjoined roots follow as ``x_i = Γ_i
+    - s_i Γ_(i-1)`` (``γ_i = x_i + s_i γ_(i-1)``, ``Γ_L = γ``), and the monomials as their products modulo ``φ``.
     Inverting ``A`` itself, or solving with all the right-hand sides of :func:`gamma_coordinates` at once, is several
     times slower: ``A`` has entries of thousands of digits at degree 32-40."""
     from ._exact import flint_module
@@ -589,11 +590,18 @@ def _gamma_basis(K) -> tuple:
     flint, n = flint_module(), K.degree
     columns = _gamma_powers(K)
     A = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
-    levels = K.levels
-    rhs = [flatten(K.convert(primitive(F)), K) for F in levels[:-1]]
-    sol = A.solve(flint.fmpq_mat(n, len(rhs), [_fq(flint, rhs[j][i]) for i in range(n) for j in range(len(rhs))]))
-    gammas = [flint.fmpq_poly([sol[i, j] for i in range(n)]) for j in range(len(rhs))] + [flint.fmpq_poly([0, 1])]
-    phi = _fq_poly(flint, K.phi)
+    levels, phi = K.levels, _fq_poly(flint, K.phi)
+    sol = A.solve(flint.fmpq_mat(n, 1, [_fq(flint, c) for c in flatten(K.convert(primitive(K.base)), K)]))
+    below = flint.fmpq_poly([sol[i, 0] for i in range(n)])  # γ_(L-1), the primitive element of the level below
+    gammas = []
+    if isinstance(K.base, TowerField):  # the lower ones: polynomials in γ_(L-1) (the smaller field's), composed
+        lower = [K.base.convert(primitive(F)) for F in levels[:-2]]
+        for poly in gamma_coordinates(lower, K.base):
+            acc = flint.fmpq_poly([])
+            for c in poly:
+                acc = (acc * below) % phi + _fq(flint, c)
+            gammas.append(acc)
+    gammas += [below, flint.fmpq_poly([0, 1])]
 
     def powers(g, count: int) -> list:  # g^(count-1), ..., g, 1 modulo φ
         out = [flint.fmpq_poly([1])]
