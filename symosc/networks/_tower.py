@@ -544,13 +544,8 @@ def gamma_coordinates(cs: list, K) -> list[list]:
     targets = [flatten(c, K) for c in cs]
     if flint is not None:  # integer matrices: the basis over one denominator, each target over its own
         basis, den = _gamma_basis(K)
-        dens = [math.lcm(*(int(a.denominator) for a in t)) for t in targets]
-        rhs = [
-            int(targets[j][i].numerator) * (dens[j] // int(targets[j][i].denominator))
-            for i in range(n)
-            for j in range(m)
-        ]
-        sol = basis * flint.fmpz_mat(n, m, rhs)
+        rhs, dens = _integer_rows(targets)
+        sol = basis * rhs.transpose()
         coeffs = [[QQ(int(sol[i, j]), den * dens[j]) for i in range(n)] for j in range(m)]
     else:
         from sympy.polys.matrices import DomainMatrix
@@ -577,31 +572,18 @@ def _gamma_basis(K) -> tuple:
     whose column ``i`` holds the coefficients (lowest power first) of the ``i``-th monomial of :func:`flatten` as a
     polynomial in ``γ`` modulo ``φ``, the inverse of the matrix ``A`` of the powers of ``γ`` in the monomial basis.
 
-    Only the primitive element ``γ_(L-1)`` of the level below is found by a linear solve with ``A`` (one
-    right-hand side: its polynomial ``Γ_(L-1)(γ)``); the lower ones ``γ_i`` are polynomials in ``γ_(L-1)`` (this
-    function in the smaller field), composed with ``Γ_(L-1)`` modulo ``φ``; the adjoined roots follow as ``x_i = Γ_i
-    - s_i Γ_(i-1)`` (``γ_i = x_i + s_i γ_(i-1)``, ``Γ_L = γ``), and the monomials as their products modulo ``φ``.
-    Inverting ``A`` itself, or solving with all the right-hand sides of :func:`gamma_coordinates` at once, is several
-    times slower: ``A`` has entries of thousands of digits at degree 32-40."""
+    The generators of the levels (``θ`` of the bottom field, the adjoined roots ``x_i``) as polynomials in ``γ`` by
+    :func:`_in_gamma` (traces, no linear solve), the monomials as their products modulo ``φ``.  Solving with ``A``
+    (entries of 10 000-30 000 digits at degree 32-40) took most of the time of the hardest syntheses."""
     from ._exact import flint_module
 
     if K._solver is not None:
         return K._solver
     flint, n = flint_module(), K.degree
-    columns = _gamma_powers(K)
-    A = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
-    levels, phi = K.levels, _fq_poly(flint, K.phi)
-    sol = A.solve(flint.fmpq_mat(n, 1, [_fq(flint, c) for c in flatten(K.convert(primitive(K.base)), K)]))
-    below = flint.fmpq_poly([sol[i, 0] for i in range(n)])  # γ_(L-1), the primitive element of the level below
-    gammas = []
-    if isinstance(K.base, TowerField):  # the lower ones: polynomials in γ_(L-1) (the smaller field's), composed
-        lower = [K.base.convert(primitive(F)) for F in levels[:-2]]
-        for poly in gamma_coordinates(lower, K.base):
-            acc = flint.fmpq_poly([])
-            for c in poly:
-                acc = (acc * below) % phi + _fq(flint, c)
-            gammas.append(acc)
-    gammas += [below, flint.fmpq_poly([0, 1])]
+    levels = K.levels
+    gens = [levels[0].unit] + [F.gen for F in levels[1:]]
+    polys = _in_gamma([K.convert(g) for g in gens], K)
+    phi = _fq_poly(flint, K.phi)
 
     def powers(g, count: int) -> list:  # g^(count-1), ..., g, 1 modulo φ
         out = [flint.fmpq_poly([1])]
@@ -609,9 +591,9 @@ def _gamma_basis(K) -> tuple:
             out.append((out[-1] * g) % phi)
         return out[::-1]
 
-    monomials = powers(gammas[0], base_degree(levels[0]))
+    monomials = powers(polys[0], base_degree(levels[0]))
     for i, F in enumerate(levels[1:], start=1):
-        xs = powers(gammas[i] - gammas[i - 1] * F.s, F.e)
+        xs = powers(polys[i], F.e)
         monomials = [(x * mon) % phi if j < F.e - 1 else mon for j, x in enumerate(xs) for mon in monomials]
     den = math.lcm(*(int(mon.denom()) for mon in monomials))  # in practice one denominator for all
     columns = []
@@ -621,6 +603,79 @@ def _gamma_basis(K) -> tuple:
         columns.append(column + [0] * (n - len(column)))
     K._solver = flint.fmpz_mat(n, n, [columns[j][i] for i in range(n) for j in range(n)]), den
     return K._solver
+
+
+def _integer_rows(vectors: list[list]) -> tuple:
+    """``(M, dens)``: the rational vectors as the rows of an integer matrix (flint ``fmpz_mat``), each row multiplied
+    by its least common denominator ``dens[i]``."""
+    from ._exact import flint_module
+
+    dens = [math.lcm(*(int(a.denominator) for a in v)) for v in vectors]
+    entries = [int(a.numerator) * (den // int(a.denominator)) for v, den in zip(vectors, dens, strict=True) for a in v]
+    return flint_module().fmpz_mat(len(vectors), len(vectors[0]), entries), dens
+
+
+def _in_gamma(cs: list, K) -> list:
+    """Each element ``δ`` of ``cs`` as a polynomial ``T(y)`` (flint ``fmpq_poly``) with ``T(γ) = δ``, by
+    Lagrange interpolation over the conjugates: ``G(y) = Tr(δ φ(y)/(y - γ))`` takes the value ``σ(δ) φ'(σ(γ))`` at
+    each root ``σ(γ)`` of ``φ``, so ``T = G / φ'`` modulo ``φ``.  With ``φ(y)/(y - γ) = Σ_k b_k y^k``,
+    ``b_k = Σ_(j>k) f_j γ^(j-1-k)``, the coefficients of ``G`` need only the traces ``τ_m = Tr(δ γ^m)``:
+    ``G`` is ``φ(y) Σ_m τ_m y^(n-1-m)`` shifted down by ``n``; ``τ_m = u · (γ^m in the monomial basis)`` with
+    ``u_i = Tr(δ · monomial_i)`` (:func:`trace`)."""
+    from ._exact import flint_module
+
+    flint, n = flint_module(), K.degree
+    monomials = [_unflatten([QQ.one if i == j else QQ.zero for j in range(n)], K) for i in range(n)]
+    A, col_dens = _integer_rows(_gamma_powers(K))  # row m: γ^m
+    U, row_dens = _integer_rows([[trace(c * mon, K) for mon in monomials] for c in cs])
+    tau = U * A.transpose()
+    phi = _fq_poly(flint, K.phi)
+    dphi = phi.derivative()
+    g, inv, _ = dphi.xgcd(phi)
+    inv = inv / g[0]
+    out = []
+    for r, den in enumerate(row_dens):
+        R = flint.fmpq_poly([flint.fmpq(tau[r, m], den * col_dens[m]) for m in reversed(range(n))])
+        G = (phi * R).right_shift(n)
+        out.append((G * inv) % phi)
+    return out
+
+
+def trace(c, K):
+    """``Tr_(K/QQ)(c)``: level by level, ``Tr(Σ c_j x^j) = Σ c_j p_j`` with ``p_j`` the power sums of the roots of
+    the level's monic polynomial (Newton's identities, cached per field)."""
+    if not isinstance(K, TowerField) and K.is_QQ:
+        return c
+    sums = _power_sums(K)
+    coeffs = c.rep if isinstance(K, TowerField) else c.to_list()
+    base = K.base if isinstance(K, TowerField) else QQ
+    acc = base.zero
+    for a, p in zip(reversed(coeffs), sums, strict=False):
+        acc = acc + a * p
+    return trace(acc, K.base) if isinstance(K, TowerField) else acc
+
+
+def _power_sums(K) -> list:
+    """``p_0, ..., p_(e-1)``: power sums of the roots of ``K``'s defining polynomial (in the field below)."""
+    if K in _POWER_SUMS:
+        return _POWER_SUMS[K]
+    if isinstance(K, TowerField):
+        base, poly = K.base, K.own
+    else:
+        base, mod = QQ, K.mod.to_list()
+        poly = [c / mod[0] for c in mod]
+    e = len(poly) - 1
+    sums = [base.convert(e)]
+    for k in range(1, e):
+        acc = poly[k] * base.convert(k)
+        for i in range(1, k):
+            acc = acc + poly[i] * sums[k - i]
+        sums.append(-acc)
+    _POWER_SUMS[K] = sums
+    return sums
+
+
+_POWER_SUMS: dict = {}
 
 
 def _fq(flint, c):

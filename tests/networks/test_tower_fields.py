@@ -249,3 +249,17 @@ def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
         expected = [dup_strip([rows[i][j] for i in reversed(range(n))]) for j in range(len(cs))]
         assert _tower.gamma_coordinates(cs, F) == expected
         assert _tower.gamma_coordinates(cs[:1], F) == expected[:1]
+
+
+def test_trace_agrees_with_the_multiplication_matrix(tower, cubic_top):
+    """``Tr(c)`` level by level (power sums of the levels' polynomials) against the trace of the rational matrix of
+    multiplication by ``c``."""
+    K, L1, L2, _, _, _ = tower
+    _, L3 = cubic_top
+    rng = random.Random(17)
+    for F in (K, L1, L2, L3):
+        for _ in range(4):
+            c = _random_element(F, rng)
+            M = _tower.matrix(c, F)
+            diagonal = sum((M[i, i] for i in range(M.nrows())), QQ.zero)
+            assert _tower.trace(c, F) == diagonal
