@@ -621,22 +621,24 @@ def _in_gamma(cs: list, K) -> list:
     each root ``σ(γ)`` of ``φ``, so ``T = G / φ'`` modulo ``φ``.  With ``φ(y)/(y - γ) = Σ_k b_k y^k``,
     ``b_k = Σ_(j>k) f_j γ^(j-1-k)``, the coefficients of ``G`` need only the traces ``τ_m = Tr(δ γ^m)``:
     ``G`` is ``φ(y) Σ_m τ_m y^(n-1-m)`` shifted down by ``n``; ``τ_m = u · (γ^m in the monomial basis)`` with
-    ``u_i = Tr(δ · monomial_i)`` (:func:`trace`)."""
+    ``u_i = Tr(δ · monomial_i)`` (:func:`trace`), the powers of ``γ`` by the rational matrix of multiplication by
+    ``γ`` (flint's products; the same powers in the tower's own arithmetic take several times longer)."""
     from ._exact import flint_module
 
     flint, n = flint_module(), K.degree
     monomials = [_unflatten([QQ.one if i == j else QQ.zero for j in range(n)], K) for i in range(n)]
-    A, col_dens = _integer_rows(_gamma_powers(K))  # row m: γ^m
-    U, row_dens = _integer_rows([[trace(c * mon, K) for mon in monomials] for c in cs])
-    tau = U * A.transpose()
+    U = flint.fmpq_mat(len(cs), n, [_fq(flint, trace(c * mon, K)) for c in cs for mon in monomials])
+    step, power = matrix(K.primitive, K), flint.fmpq_mat(n, 1, [0] * (n - 1) + [1])
+    taus = []  # τ_m for every δ: U times γ^m in the monomial basis (the powers by flint's matrix products)
+    for _ in range(n):
+        taus.append(U * power)
+        power = step * power
     phi = _fq_poly(flint, K.phi)
-    dphi = phi.derivative()
-    g, inv, _ = dphi.xgcd(phi)
+    g, inv, _ = phi.derivative().xgcd(phi)
     inv = inv / g[0]
     out = []
-    for r, den in enumerate(row_dens):
-        R = flint.fmpq_poly([flint.fmpq(tau[r, m], den * col_dens[m]) for m in reversed(range(n))])
-        G = (phi * R).right_shift(n)
+    for r in range(len(cs)):
+        G = (phi * flint.fmpq_poly([taus[m][r, 0] for m in reversed(range(n))])).right_shift(n)
         out.append((G * inv) % phi)
     return out
 
