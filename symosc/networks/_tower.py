@@ -703,8 +703,15 @@ def in_crootof_all(cs: list, K) -> list[sp.Expr]:
         root = K.crootof()
         for i, coeffs in zip(todo, gamma_coordinates([cs[i] for i in todo], K), strict=True):
             n = len(coeffs) - 1
-            out[i] = sp.Add(*[QQ.to_sympy(a) * root ** (n - k) for k, a in enumerate(coeffs) if a])
+            out[i] = sp.Add(*[_rational(a) * root ** (n - k) for k, a in enumerate(coeffs) if a])
     return out
+
+
+def _rational(a) -> sp.Rational:
+    """``QQ.to_sympy(a)`` without SymPy's gcd of numerator and denominator (a domain element is in lowest terms
+    with a positive denominator; the gcds of the 10 000-digit coefficients of nested fields took seconds)."""
+    make = getattr(sp.Rational, "from_coprime_ints", sp.Rational)  # SymPy >= 1.13
+    return make(int(a.numerator), int(a.denominator))
 
 
 def scaled_charpoly(M) -> tuple:
