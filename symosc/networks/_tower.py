@@ -96,7 +96,8 @@ def monic(f: list, K) -> list:
 
 def invert_mod(a: list, m: list, K) -> list:
     """``1/a`` modulo the monic irreducible ``m`` over ``K`` by the extended Euclidean algorithm (one inversion in
-    ``K`` per division step)."""
+    ``K`` per division step; the tower's inverse is :func:`invert_charpoly`, this one its independent check in the
+    tests)."""
     r0, r1, s0, s1 = m, a, [], [K.one]
     while len(r1) > 1:
         inv = inverse(r1[0], K)
@@ -690,7 +691,7 @@ def in_crootof(c, K) -> sp.Expr:
 
 
 def in_crootof_all(cs: list, K) -> list[sp.Expr]:
-    """:func:`in_crootof` of several elements of ``K`` (one linear solve)."""
+    """:func:`in_crootof` of several elements of ``K`` (one matrix product, :func:`gamma_coordinates`)."""
     out: list = [None] * len(cs)
     todo = []
     for i, c in enumerate(cs):
