@@ -41,15 +41,15 @@ _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
-#: minutes — a Brune one needing 40 took 77 s, a Bott–Duffin one needing 36 about 5 min — and their exact values
-#: have coefficients of thousands of digits)
+#: under a minute — a Brune one needing 40 takes 10 s, a Bott–Duffin one needing 36 about 35 s — and their exact
+#: values have coefficients of thousands of digits)
 MAX_FIELD_DEGREE_FLINT = 24
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of {what}); exact synthesis keeps every element of a network in one number field of degree <= {limit}; "
     "brune_synthesis, bott_duffin_synthesis and "
     "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 30-40 take seconds to "
-    "minutes)"
+    "a minute)"
 )
 
 

@@ -13,6 +13,8 @@ Trager's shift when the tower is extended again, and to write an element as an e
 
 from __future__ import annotations
 
+import math
+
 import mpmath
 import sympy as sp
 from sympy import QQ
@@ -54,18 +56,29 @@ _INVERSES: dict = {}
 
 
 def _algebraic_inverse(c, K):
-    """``1/c`` in QQ or an ``AlgebraicField``: flint's extended gcd of ``c`` and the minimal polynomial when
-    installed (SymPy's dense gcdex in pure Python is slow on the large coefficients of nested fields)."""
+    """``1/c`` in QQ or an ``AlgebraicField``: with python-flint the solution of ``M x = 1``, ``M`` the rational
+    matrix of multiplication by ``c`` in the basis ``1, θ, ..., θ^(n-1)`` (flint's fraction-free solver: several
+    times faster than its extended gcd of ``c`` and the minimal polynomial on the coefficients of thousands of
+    digits of nested fields); SymPy's dense gcdex without it."""
     from ._exact import flint_module
 
     flint = flint_module()
     if flint is None or K.is_QQ:
         return K.quo(K.one, c)
-    g, s, _ = _fq_poly(flint, c.to_list()).xgcd(_fq_poly(flint, K.mod.to_list()))
-    if g.degree() != 0:  # pragma: no cover - the minimal polynomial is irreducible
-        raise ZeroDivisionError("not invertible in the algebraic field")
-    coeffs = (s / g[0]).coeffs()  # lowest power first
-    return K(dup_strip([QQ(int(a.p), int(a.q)) for a in reversed(coeffs)]))
+    mod = _fq_poly(flint, K.mod.to_list())
+    n = mod.degree()
+    mod = mod / mod[n]
+    v, columns = _fq_poly(flint, c.to_list()) % mod, []
+    if v.is_zero():
+        raise ZeroDivisionError("division by zero in an algebraic field")
+    for _ in range(n):  # c θ^k modulo the minimal polynomial, lowest power first
+        columns.append([v[i] for i in range(n)])
+        v = v.left_shift(1)
+        if v.degree() == n:
+            v -= mod * v[n]
+    M = flint.fmpq_mat(n, n, [columns[k][i] for i in range(n) for k in range(n)])
+    x = M.solve(flint.fmpq_mat(n, 1, [1] + [0] * (n - 1)), algorithm="fflu")
+    return K(dup_strip([QQ(int(x[i, 0].p), int(x[i, 0].q)) for i in reversed(range(n))]))
 
 
 def _fq_poly(flint, coeffs: list):
@@ -83,7 +96,8 @@ def monic(f: list, K) -> list:
 
 def invert_mod(a: list, m: list, K) -> list:
     """``1/a`` modulo the monic irreducible ``m`` over ``K`` by the extended Euclidean algorithm (one inversion in
-    ``K`` per division step)."""
+    ``K`` per division step; the tower's inverse is :func:`invert_charpoly`, this one its independent check in the
+    tests)."""
     r0, r1, s0, s1 = m, a, [], [K.one]
     while len(r1) > 1:
         inv = inverse(r1[0], K)
@@ -101,6 +115,62 @@ def invert_mod(a: list, m: list, K) -> list:
         raise ZeroDivisionError("not invertible modulo an irreducible polynomial")
     inv = inverse(r1[0], K)
     return _reduce([c * inv for c in s1], m, K)
+
+
+def multiplication_columns(a: list, own: list, K) -> list[list]:
+    """Coordinates (length ``e = deg own``, highest power first) of ``a x^j`` modulo the monic ``own`` over ``K``
+    for ``j = e - 1, ..., 0``: the columns of the matrix of multiplication by ``a`` in the basis
+    ``x^(e-1), ..., 1`` (no division: ``own`` is monic)."""
+    e = len(own) - 1
+    v = [K.zero] * (e - len(a)) + list(a)
+    cols = [v]
+    for _ in range(e - 1):  # times x: shift, then reduce the overflowing coefficient with own
+        c, v = v[0], [*v[1:], K.zero]
+        if c:
+            v = [v[i] - c * own[i + 1] for i in range(e)]
+        cols.append(v)
+    return cols[::-1]
+
+
+def charpoly(A: list[list], K) -> list:
+    """Characteristic polynomial ``det(t I - A)`` (highest power first) of the square matrix ``A`` (rows) over the
+    ring ``K``, by Berkowitz's division-free algorithm (Berkowitz (1984); Abdeljaoued and Lombardi (2004), ch. 7):
+    the polynomial of each leading principal submatrix from the previous one by a lower triangular Toeplitz
+    matrix whose entries are ``-R A^k C`` (``R``, ``C`` the new row and column)."""
+    poly = [K.one]
+    for r in range(1, len(A) + 1):
+        row, col = A[r - 1][: r - 1], [A[i][r - 1] for i in range(r - 1)]
+        toeplitz = [K.one, -A[r - 1][r - 1]]
+        for _ in range(r - 1):  # -R A_(r-1)^k C, k = 0, ..., r - 2
+            acc = K.zero
+            for x, y in zip(row, col, strict=True):
+                acc = acc + x * y
+            toeplitz.append(-acc)
+            col = [sum((A[i][j] * col[j] for j in range(r - 1)), K.zero) for i in range(r - 1)]
+        poly = [
+            sum((toeplitz[i - j] * poly[j] for j in range(max(0, i - r), min(i, r - 1) + 1)), K.zero)
+            for i in range(r + 1)
+        ]
+    return poly
+
+
+def invert_charpoly(a: list, own: list, K) -> list:
+    """``1/a`` modulo the monic irreducible ``own`` over ``K`` by the Cayley–Hamilton theorem: with
+    ``χ(t) = t^e + c_1 t^(e-1) + ... + c_e`` the characteristic polynomial of multiplication by ``a`` (division-free,
+    :func:`charpoly`), ``1/a = -(a^(e-1) + c_1 a^(e-2) + ... + c_(e-1)) / c_e``; ``c_e = ±`` the norm of ``a`` is
+    the one element of ``K`` inverted (the Euclidean algorithm inverts one per division step)."""
+    cols = multiplication_columns(a, own, K)
+    e = len(cols)
+    rows = [[cols[j][i] for j in range(e)] for i in range(e)]
+    chi = charpoly(rows, K)
+    if not chi[-1]:
+        raise ZeroDivisionError("not invertible modulo an irreducible polynomial")
+    h = [K.zero] * (e - 1) + [K.one]  # Horner's rule, coordinates: h <- a h + c_k (a h: the matrix times h)
+    for c in chi[1:-1]:
+        h = [sum((x * y for x, y in zip(row, h, strict=True)), K.zero) for row in rows]
+        h[-1] = h[-1] + c
+    inv = -inverse(chi[-1], K)
+    return dup_strip([x * inv for x in h])
 
 
 class TowerElement:
@@ -203,7 +273,7 @@ class TowerElement:
             raise ZeroDivisionError("division by zero in a tower field")
         if len(self.rep) == 1:
             return TowerElement([inverse(self.rep[0], F.base)], F)
-        return TowerElement(invert_mod(self.rep, F.own, F.base), F)
+        return TowerElement(invert_charpoly(self.rep, F.own, F.base), F)
 
     def __truediv__(self, other):
         o = self._coerce(other)
@@ -463,34 +533,152 @@ def flatten(c, K) -> list:
 
 
 def gamma_coordinates(cs: list, K) -> list[list]:
-    """Coefficients (highest power first) of each element of ``cs`` as a polynomial in ``γ``: the powers of ``γ``
-    in the monomial basis form a rational matrix (built once per field), and the coordinate vectors are the
-    solution of one linear system with all of them as right-hand sides (flint's exact solver when installed,
-    SymPy's DomainMatrix otherwise)."""
+    """Coefficients (highest power first) of each element of ``cs`` as a polynomial in ``γ``.
+
+    With python-flint: the coordinate vectors in the monomial basis (:func:`flatten`) times the rational matrix
+    whose columns are the monomials as polynomials in ``γ`` (:func:`_gamma_basis`, built once per field).  Without
+    it: SymPy's DomainMatrix solves ``A x = b``, the columns of ``A`` the powers of ``γ`` in the monomial basis."""
     from ._exact import flint_module
 
     flint = flint_module()
     n, m = K.degree, len(cs)
-    if K._solver is None:
-        columns, pw = [], K.one
-        for _ in range(n):
-            columns.append(flatten(pw, K))
-            pw = pw * K.primitive
-        if flint is not None:
-            columns = flint.fmpq_mat(n, n, [_fq(flint, columns[j][i]) for i in range(n) for j in range(n)])
-        K._solver = columns
-    columns, targets = K._solver, [flatten(c, K) for c in cs]
-    if flint is not None:
-        sol = columns.solve(flint.fmpq_mat(n, m, [_fq(flint, targets[j][i]) for i in range(n) for j in range(m)]))
-        coeffs = [[QQ(int(sol[i, j].p), int(sol[i, j].q)) for i in range(n)] for j in range(m)]
+    targets = [flatten(c, K) for c in cs]
+    if flint is not None:  # integer matrices: the basis over one denominator, each target over its own
+        basis, den = _gamma_basis(K)
+        rhs, dens = _integer_rows(targets)
+        sol = basis * rhs.transpose()
+        coeffs = [[QQ(int(sol[i, j]), den * dens[j]) for i in range(n)] for j in range(m)]
     else:
         from sympy.polys.matrices import DomainMatrix
 
+        columns = _gamma_powers(K)
         A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
         b = DomainMatrix([[targets[j][i] for j in range(m)] for i in range(n)], (n, m), QQ)
         rows = A.lu_solve(b).to_list()
         coeffs = [[rows[i][j] for i in range(n)] for j in range(m)]
     return [dup_strip(list(reversed(c))) for c in coeffs]
+
+
+def _gamma_powers(K) -> list[list]:
+    """``γ^k`` in the monomial basis, ``k = 0, ..., n - 1``."""
+    columns, pw = [], K.one
+    for _ in range(K.degree):
+        columns.append(flatten(pw, K))
+        pw = pw * K.primitive
+    return columns
+
+
+def _gamma_basis(K) -> tuple:
+    """``(B, d)`` (cached on ``K``): ``B / d`` (``B`` a flint ``fmpz_mat``, ``d`` an integer) is the rational matrix
+    whose column ``i`` holds the coefficients (lowest power first) of the ``i``-th monomial of :func:`flatten` as a
+    polynomial in ``γ`` modulo ``φ``, the inverse of the matrix ``A`` of the powers of ``γ`` in the monomial basis.
+
+    The generators of the levels (``θ`` of the bottom field, the adjoined roots ``x_i``) as polynomials in ``γ`` by
+    :func:`_in_gamma` (traces, no linear solve), the monomials as their products modulo ``φ``.  Solving with ``A``
+    (entries of 10 000-30 000 digits at degree 32-40) took most of the time of the hardest syntheses."""
+    from ._exact import flint_module
+
+    if K._solver is not None:
+        return K._solver
+    flint, n = flint_module(), K.degree
+    levels = K.levels
+    gens = [levels[0].unit] + [F.gen for F in levels[1:]]
+    polys = _in_gamma([K.convert(g) for g in gens], K)
+    phi = _fq_poly(flint, K.phi)
+
+    def powers(g, count: int) -> list:  # g^(count-1), ..., g, 1 modulo φ
+        out = [flint.fmpq_poly([1])]
+        for _ in range(count - 1):
+            out.append((out[-1] * g) % phi)
+        return out[::-1]
+
+    monomials = powers(polys[0], base_degree(levels[0]))
+    for i, F in enumerate(levels[1:], start=1):
+        xs = powers(polys[i], F.e)
+        monomials = [(x * mon) % phi if j < F.e - 1 else mon for j, x in enumerate(xs) for mon in monomials]
+    den = math.lcm(*(int(mon.denom()) for mon in monomials))  # in practice one denominator for all
+    columns = []
+    for mon in monomials:
+        scale = den // int(mon.denom())
+        column = [int(c) * scale for c in mon.numer().coeffs()]
+        columns.append(column + [0] * (n - len(column)))
+    K._solver = flint.fmpz_mat(n, n, [columns[j][i] for i in range(n) for j in range(n)]), den
+    return K._solver
+
+
+def _integer_rows(vectors: list[list]) -> tuple:
+    """``(M, dens)``: the rational vectors as the rows of an integer matrix (flint ``fmpz_mat``), each row multiplied
+    by its least common denominator ``dens[i]``."""
+    from ._exact import flint_module
+
+    dens = [math.lcm(*(int(a.denominator) for a in v)) for v in vectors]
+    entries = [int(a.numerator) * (den // int(a.denominator)) for v, den in zip(vectors, dens, strict=True) for a in v]
+    return flint_module().fmpz_mat(len(vectors), len(vectors[0]), entries), dens
+
+
+def _in_gamma(cs: list, K) -> list:
+    """Each element ``δ`` of ``cs`` as a polynomial ``T(y)`` (flint ``fmpq_poly``) with ``T(γ) = δ``, by
+    Lagrange interpolation over the conjugates: ``G(y) = Tr(δ φ(y)/(y - γ))`` takes the value ``σ(δ) φ'(σ(γ))`` at
+    each root ``σ(γ)`` of ``φ``, so ``T = G / φ'`` modulo ``φ``.  With ``φ(y)/(y - γ) = Σ_k b_k y^k``,
+    ``b_k = Σ_(j>k) f_j γ^(j-1-k)``, the coefficients of ``G`` need only the traces ``τ_m = Tr(δ γ^m)``:
+    ``G`` is ``φ(y) Σ_m τ_m y^(n-1-m)`` shifted down by ``n``; ``τ_m = u · (γ^m in the monomial basis)`` with
+    ``u_i = Tr(δ · monomial_i)`` (:func:`trace`), the powers of ``γ`` by the rational matrix of multiplication by
+    ``γ`` (flint's products; the same powers in the tower's own arithmetic take several times longer)."""
+    from ._exact import flint_module
+
+    flint, n = flint_module(), K.degree
+    monomials = [_unflatten([QQ.one if i == j else QQ.zero for j in range(n)], K) for i in range(n)]
+    U = flint.fmpq_mat(len(cs), n, [_fq(flint, trace(c * mon, K)) for c in cs for mon in monomials])
+    step, power = matrix(K.primitive, K), flint.fmpq_mat(n, 1, [0] * (n - 1) + [1])
+    taus = []  # τ_m for every δ: U times γ^m in the monomial basis (the powers by flint's matrix products)
+    for _ in range(n):
+        taus.append(U * power)
+        power = step * power
+    phi = _fq_poly(flint, K.phi)
+    g, inv, _ = phi.derivative().xgcd(phi)
+    inv = inv / g[0]
+    out = []
+    for r in range(len(cs)):
+        G = (phi * flint.fmpq_poly([taus[m][r, 0] for m in reversed(range(n))])).right_shift(n)
+        out.append((G * inv) % phi)
+    return out
+
+
+def trace(c, K):
+    """``Tr_(K/QQ)(c)``: level by level, ``Tr(Σ c_j x^j) = Σ c_j p_j`` with ``p_j`` the power sums of the roots of
+    the level's monic polynomial (Newton's identities, cached per field)."""
+    if not isinstance(K, TowerField) and K.is_QQ:
+        return c
+    sums = _power_sums(K)
+    coeffs = c.rep if isinstance(K, TowerField) else c.to_list()
+    base = K.base if isinstance(K, TowerField) else QQ
+    acc = base.zero
+    for a, p in zip(reversed(coeffs), sums, strict=False):
+        acc = acc + a * p
+    return trace(acc, K.base) if isinstance(K, TowerField) else acc
+
+
+def _power_sums(K) -> list:
+    """``p_0, ..., p_(e-1)``: power sums of the roots of ``K``'s defining polynomial (in the field below)."""
+    if K in _POWER_SUMS:
+        return _POWER_SUMS[K]
+    if isinstance(K, TowerField):
+        base, poly = K.base, K.own
+    else:
+        base, mod = QQ, K.mod.to_list()
+        poly = [c / mod[0] for c in mod]
+    e = len(poly) - 1
+    sums = [base.convert(e)]
+    for k in range(1, e):
+        acc = poly[k] * base.convert(k)
+        for i in range(1, k):
+            acc = acc + poly[i] * sums[k - i]
+        sums.append(-acc)
+    _POWER_SUMS[K] = sums
+    return sums
+
+
+_POWER_SUMS: dict = {}
 
 
 def _fq(flint, c):
@@ -503,7 +691,7 @@ def in_crootof(c, K) -> sp.Expr:
 
 
 def in_crootof_all(cs: list, K) -> list[sp.Expr]:
-    """:func:`in_crootof` of several elements of ``K`` (one linear solve)."""
+    """:func:`in_crootof` of several elements of ``K`` (one matrix product, :func:`gamma_coordinates`)."""
     out: list = [None] * len(cs)
     todo = []
     for i, c in enumerate(cs):
@@ -516,8 +704,15 @@ def in_crootof_all(cs: list, K) -> list[sp.Expr]:
         root = K.crootof()
         for i, coeffs in zip(todo, gamma_coordinates([cs[i] for i in todo], K), strict=True):
             n = len(coeffs) - 1
-            out[i] = sp.Add(*[QQ.to_sympy(a) * root ** (n - k) for k, a in enumerate(coeffs) if a])
+            out[i] = sp.Add(*[_rational(a) * root ** (n - k) for k, a in enumerate(coeffs) if a])
     return out
+
+
+def _rational(a) -> sp.Rational:
+    """``QQ.to_sympy(a)`` without SymPy's gcd of numerator and denominator (a domain element is in lowest terms
+    with a positive denominator; the gcds of the 10 000-digit coefficients of nested fields took seconds)."""
+    make = getattr(sp.Rational, "from_coprime_ints", sp.Rational)  # SymPy >= 1.13
+    return make(int(a.numerator), int(a.denominator))
 
 
 def scaled_charpoly(M) -> tuple:

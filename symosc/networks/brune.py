@@ -41,7 +41,7 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) 
         Largest degree over the rationals of the number field holding the exact element values; default 24 with
         python-flint (the ``exact`` extra), 8 without, for nested extensions (the first one, of degree at most
         ``2n - 2``, is bounded only by a given value).  Random degree-6 targets occasionally need 32 or more; with
-        python-flint fields of degree 32–40 take seconds to a few minutes, and the exact values then have
+        python-flint fields of degree 32–40 take seconds to under a minute, and the exact values then have
         coefficients of thousands of digits (the network prints them by 15 digits after ``≈``).
 
     Returns

@@ -10,10 +10,11 @@ import mpmath
 import pytest
 import sympy as sp
 from sympy import QQ
+from sympy.polys.densebasic import dup_strip
 
 from symosc.networks import _exact as ex
-from symosc.networks import bott_duffin_synthesis
-from symosc.networks._tower import TowerField
+from symosc.networks import _tower, bott_duffin_synthesis
+from symosc.networks._tower import TowerElement, TowerField
 
 from .test_synthesis_degree6 import _check_exact, _values
 
@@ -179,3 +180,86 @@ def test_root_choice_survives_a_large_generator(root):
     f = [K.one, K.convert(-sp.Rational(1, 7) - sp.Rational(1, 3)), K.convert(sp.Rational(1, 21))]  # (x - 1/7)(x - 1/3)
     r, L = ex.extend_with_root(f, K, mpmath.mpf(root.p) / root.q, "test roots")
     assert L == K and r == K.convert(root)
+
+
+@pytest.fixture(scope="module")
+def cubic_top(tower):
+    """A third level of degree 3 over the tower: ∛(1 + √(1 + √3)) (a degree-24 field)."""
+    _, _, L2, _, r2, _ = tower
+    root = mpmath.cbrt(1 + mpmath.sqrt(1 + mpmath.sqrt(3)))
+    r3, L3 = ex.extend_with_root([L2.one, L2.zero, L2.zero, -(L2.one + r2)], L2, root, "cube root")
+    assert (L3.e, ex.field_degree(L3)) == (3, 24)
+    return r3, L3
+
+
+def test_berkowitz_charpoly_agrees_with_sympy():
+    rng = random.Random(11)
+    x = sp.Symbol("x")
+    for n in (1, 2, 3, 5):
+        rows = [[QQ(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(n)] for _ in range(n)]
+        expected = sp.Matrix(n, n, [QQ.to_sympy(c) for row in rows for c in row]).charpoly(x).all_coeffs()
+        assert [QQ.to_sympy(c) for c in _tower.charpoly(rows, QQ)] == expected
+
+
+def test_charpoly_inverse_agrees_with_euclid(tower, cubic_top):
+    """The Cayley–Hamilton inverse (one inversion in the base field) against the extended Euclidean algorithm (one
+    per division step) and against ``a · a⁻¹ = 1``, on two- and three-level towers (quadratic and cubic levels)."""
+    _, L1, L2, _, _, M = tower
+    _, L3 = cubic_top
+    rng = random.Random(5)
+    for F in (L1, L2, L3):
+        for _ in range(6):
+            a = _random_element(F, rng)
+            if len(a.rep) < 2:
+                continue
+            inv = _tower.invert_charpoly(a.rep, F.own, F.base)
+            assert inv == _tower.invert_mod(a.rep, F.own, F.base)
+            assert a * TowerElement(inv, F) == F.one
+            if F is not L3:
+                assert _image(TowerElement(inv, F), F, M) == M.one / _image(a, F, M)
+
+
+def test_algebraic_inverse_agrees_with_sympy():
+    """The inverse in an algebraic field by a rational linear solve against SymPy's own (extended gcd)."""
+    K = QQ.algebraic_field(SQ2, SQ3, sp.sqrt(5))
+    rng = random.Random(9)
+    for _ in range(8):
+        c = K([QQ(rng.randint(-99, 99), rng.randint(1, 50)) for _ in range(8)])
+        if c:
+            assert _tower._algebraic_inverse(c, K) == K.quo(K.one, c)
+    with pytest.raises(ZeroDivisionError):
+        _tower._algebraic_inverse(K.zero, K)
+
+
+def test_gamma_coordinates_agree_with_a_linear_solve(tower, cubic_top):
+    """The γ-coordinates from the products of the generators' polynomials in γ against the solution of
+    ``A x = b`` (``A``: the powers of γ in the monomial basis; SymPy's solver)."""
+    from sympy.polys.matrices import DomainMatrix
+
+    _, _, L2, _, _, _ = tower
+    _, L3 = cubic_top
+    rng = random.Random(13)
+    for F in (L2, L3):
+        n = F.degree
+        columns = _tower._gamma_powers(F)
+        A = DomainMatrix([[columns[j][i] for j in range(n)] for i in range(n)], (n, n), QQ)
+        cs = [_random_element(F, rng) for _ in range(3)] + [F.gen, F.primitive, F.one]
+        b = DomainMatrix([[_tower.flatten(c, F)[i] for c in cs] for i in range(n)], (n, len(cs)), QQ)
+        rows = A.lu_solve(b).to_list()
+        expected = [dup_strip([rows[i][j] for i in reversed(range(n))]) for j in range(len(cs))]
+        assert _tower.gamma_coordinates(cs, F) == expected
+        assert _tower.gamma_coordinates(cs[:1], F) == expected[:1]
+
+
+def test_trace_agrees_with_the_multiplication_matrix(tower, cubic_top):
+    """``Tr(c)`` level by level (power sums of the levels' polynomials) against the trace of the rational matrix of
+    multiplication by ``c``."""
+    K, L1, L2, _, _, _ = tower
+    _, L3 = cubic_top
+    rng = random.Random(17)
+    for F in (K, L1, L2, L3):
+        for _ in range(4):
+            c = _random_element(F, rng)
+            M = _tower.matrix(c, F)
+            diagonal = sum((M[i, i] for i in range(M.nrows())), QQ.zero)
+            assert _tower.trace(c, F) == diagonal
