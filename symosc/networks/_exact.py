@@ -42,14 +42,15 @@ _DIGITS = 40
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
 #: under a minute — a Brune one needing 40 takes 10 s, a Bott–Duffin one needing 36 about 35 s — and their exact
-#: values have coefficients of thousands of digits)
-MAX_FIELD_DEGREE_FLINT = 24
+#: values have coefficients of thousands of digits; above 40 the norms alone take minutes: deciding that a target
+#: needs 128 took 110 s, a target needing 50 did not finish in 8 min with the limit at 64)
+MAX_FIELD_DEGREE_FLINT = 40
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of {what}); exact synthesis keeps every element of a network in one number field of degree <= {limit}; "
     "brune_synthesis, bott_duffin_synthesis and "
-    "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 30-40 take seconds to "
-    "a minute)"
+    "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 32-40 take seconds to "
+    "a minute, larger ones minutes or more)"
 )
 
 

@@ -43,7 +43,7 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     p : sympy.Symbol
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
-        :func:`brune_synthesis` (default 24 with python-flint, 8 without; fields of degree 32–40 take seconds to
+        :func:`brune_synthesis` (default 40 with python-flint, 8 without; fields of degree 32–40 take seconds to
         under a minute).
 
     Returns

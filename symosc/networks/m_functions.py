@@ -240,7 +240,7 @@ def m_function_synthesis(Z: Any, rho: Any = None, p: sp.Symbol = P, *, max_degre
     p : sympy.Symbol
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
-        :func:`bott_duffin_synthesis` (default 24 with python-flint, 8 without).
+        :func:`bott_duffin_synthesis` (default 40 with python-flint, 8 without).
 
     Returns
     -------

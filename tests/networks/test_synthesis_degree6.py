@@ -200,7 +200,7 @@ def _brune_or_documented_refusal(synth, Z):
 
 
 @settings(
-    max_examples=10,
+    max_examples=25,
     deadline=None,
     derandomize=True,  # fixed draws: a rare target needing a large field can take minutes; keep CI time bounded
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
@@ -375,17 +375,77 @@ def _impedance_at(net, s):
     return (Lp - M) * s + shunt * out / (shunt + out)
 
 
-def test_larger_field_on_request():
-    """Refused under the default limit (naming the degree it needs); with ``max_degree=32`` the network's values
-    are positive and its impedance, from SymPy's own 60-digit evaluation of the exact values, is the target's at
-    three points to 45 digits (exact cancellation is checked on the smaller fields above)."""
+# one whose Bott–Duffin synthesis needs degree 50, above the default limit
+_NEEDS_50 = (224400 * p**6 + 570504 * p**5 + 136912 * p**4 + 252172 * p**3 + 18634 * p**2 + 17824 * p + 564) / (
+    39600 * p**6 + 183150 * p**5 + 226779 * p**4 + 48891 * p**3 + 23700 * p**2 + 2886 * p + 36
+)
+
+
+def test_degree_32_field_under_the_default_limit():
+    """Refused by ``max_degree=24`` (naming the degree it needs); under the default limit (40 with python-flint)
+    the network's values are positive and its impedance, from SymPy's own 60-digit evaluation of the exact values,
+    is the target's at three points to 45 digits (exact cancellation is checked on the smaller fields above)."""
     with pytest.raises(ModelError, match=r"degree 32 > 24"):
-        bott_duffin_synthesis(_NEEDS_32, p)
-    net = bott_duffin_synthesis(_NEEDS_32, p, max_degree=32)
+        bott_duffin_synthesis(_NEEDS_32, p, max_degree=24)
+    net = bott_duffin_synthesis(_NEEDS_32, p)
     assert all(sp.N(v, 30) > 0 for v in _values(net))
     for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
         target = sp.N(_NEEDS_32.subs(p, s), 60)
         assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
+
+
+def _random_degree_6(state: int):
+    """A random series/parallel tree of 6 inductors/capacitors and 1-3 resistors whose impedance has degree exactly
+    6 (values ``a/b``, ``a <= 30``, ``b <= 6``), from Python's generator in the given state."""
+    import random
+
+    rng = random.Random(state)
+    value = lambda: sp.Rational(rng.randint(1, 30), rng.randint(1, 6))  # noqa: E731
+
+    def build(items):
+        if len(items) == 1:
+            return items[0]
+        cut = rng.randint(1, len(items) - 1)
+        a, b = build(items[:cut]), build(items[cut:])
+        return a + b if rng.random() < 0.5 else a | b
+
+    while True:
+        leaves = [rng.choice([Inductor, Capacitor])(value()) for _ in range(6)]
+        leaves += [Resistor(value()) for _ in range(rng.randint(1, 3))]
+        rng.shuffle(leaves)
+        Z = sp.cancel(build(leaves).impedance(p))
+        if _degree(Z) == 6:
+            return Z
+
+
+def _check_exact_or_to_45_digits(net, Z):
+    """Exact check (SymPy's own field arithmetic) when the values lie in one field of degree <= 12; otherwise the
+    values' signs and the impedance at three points from SymPy's 60-digit evaluation of the exact values."""
+    values = _values(net)
+    atoms = _algebraic_atoms(values)
+    if len(atoms) <= 1 and all(a.poly.degree() <= 12 for a in atoms if isinstance(a, sp.CRootOf)):
+        _check_exact(net, Z)
+        return
+    assert all(sp.N(v, 30) > 0 for v in values)
+    for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
+        target = sp.N(Z.subs(p, s), 60)
+        assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
+
+
+@pytest.mark.parametrize("state", range(30))
+def test_random_degree_6_targets_are_exact_under_the_default_limit(state):
+    """30 random degree-6 R-L-C impedances: Brune and Bott–Duffin both give networks of positive elements equal to
+    the target (fields up to degree 32 occur; the default limit is 40 with python-flint, which the dev extra
+    installs)."""
+    Z = _random_degree_6(state)
+    for synth in (brune_synthesis, bott_duffin_synthesis):
+        _check_exact_or_to_45_digits(synth(Z, p), Z)
+
+
+def test_default_limit_refusal_names_the_degree_and_the_keyword():
+    """Beyond the default limit (40 with python-flint): ModelError with the degree needed and ``max_degree=``."""
+    with pytest.raises(ModelError, match=r"degree 50 > 40 .*max_degree=50"):
+        bott_duffin_synthesis(_NEEDS_50, p)
 
 
 def test_max_degree_bounds_the_first_extension_too():
