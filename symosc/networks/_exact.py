@@ -42,8 +42,8 @@ _DIGITS = 40
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
 #: under a minute — a Brune one needing 40 takes 10 s, a Bott–Duffin one needing 36 about 35 s — and their exact
-#: values have coefficients of thousands of digits; above 40 the norms alone take minutes: deciding that a target
-#: needs 128 took 110 s, a target needing 50 did not finish in 8 min with the limit at 64)
+#: values have coefficients of thousands of digits; above 40 the norms alone take minutes: a target needing 50 did
+#: not finish in 8 min with the limit at 64)
 MAX_FIELD_DEGREE_FLINT = 40
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
@@ -182,16 +182,58 @@ def coprime(f: list, g: list, K) -> bool:
     return False
 
 
+def irreducible_modulo_primes(f: list, K) -> bool:
+    """True when ``f`` (monic, over an algebraic or a tower field ``K``) is certainly irreducible over ``K``: for
+    each prime of :func:`_reductions` where ``f`` keeps its degree and stays squarefree, every factor of ``f`` over
+    ``K`` reduces to a product of irreducible factors modulo that prime, so its degree is a sum of some of their
+    degrees; when no degree below ``deg f`` is such a sum for all the primes at once, ``f`` has no proper factor.
+    False means "not decided".  Only primes at which every level's defining polynomial stays squarefree are used
+    (Dedekind's criterion: the generators then span the local ring of integers and the residue field is ``F_q``;
+    at other primes a factor could reduce over a larger residue field).  Needs python-flint; without it always
+    False."""
+    n = dup_degree(f)
+    if flint_module() is None or K.is_QQ or n < 2:
+        return False
+    possible = (1 << n) - 2  # bit d set: a factor of degree d (0 < d < n) not yet excluded
+    for q, roots in _reductions(K):
+        if not _levels_squarefree(K, q, roots):
+            continue
+        F = _reduce(f, K, q, roots)
+        if F is None or F.degree() != n:
+            continue
+        _, factors = F.factor()
+        if any(mult > 1 for _, mult in factors):
+            continue
+        sums = 1  # bit d set: d is a sum of degrees of some of the factors modulo q
+        for g, _ in factors:
+            sums |= sums << g.degree()
+        possible &= sums
+        if not possible:
+            return True
+    return False
+
+
+def _levels_squarefree(K, q: int, roots: list) -> bool:
+    """Every level's defining polynomial, reduced modulo ``q`` (the lower levels' generators sent to ``roots``),
+    is squarefree."""
+    levels = _tower.levels(K)
+    for level, F in enumerate(levels):
+        image = _reduce(F.own, levels[level - 1], q, roots[:level]) if level else _reduce_qq(F.mod.to_list(), q)
+        if image is None or image.gcd(image.derivative()).degree() != 0:
+            return False
+    return True
+
+
 _REDUCTIONS: dict = {}
 
 
 def _reductions(K) -> list:
-    """Up to three pairs ``(q, roots)``: word-size primes ``q`` with roots mod ``q`` of the defining polynomial of
+    """Up to six pairs ``(q, roots)``: word-size primes ``q`` with roots mod ``q`` of the defining polynomial of
     each level of ``K`` (bottom first; the polynomials ``q``-integral)."""
     if K not in _REDUCTIONS:
         levels = _tower.levels(K)
         out, q, tries = [], 2**62, 0
-        while len(out) < 3 and tries < 200:
+        while len(out) < 6 and tries < 400:
             q, tries = int(sp.prevprime(q)), tries + 1
             roots: list = []
             for level, F in enumerate(levels):
@@ -372,6 +414,10 @@ def extend_with_root(f: list, K, x_num, what: str):
     theta, f = _tower.primitive(K), _tower.monic(f, K)
     if dup_degree(f) == 1:
         return K.neg(f[1]), K
+    degree = field_degree(K) * dup_degree(f)
+    if degree > max_field_degree() and irreducible_modulo_primes(f, K):  # refused before the (costly) norm
+        what = f"a polynomial whose coefficients are themselves algebraic numbers: {what}"
+        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
     for s in (1, -1, 2, -2, 3, -3, 4, -4):
         shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s Θ)
         N = norm(shifted, K)

@@ -263,3 +263,42 @@ def test_trace_agrees_with_the_multiplication_matrix(tower, cubic_top):
             M = _tower.matrix(c, F)
             diagonal = sum((M[i, i] for i in range(M.nrows())), QQ.zero)
             assert _tower.trace(c, F) == diagonal
+
+
+def _random_monic(F, rng, degree):
+    return [F.one, *(_random_element(F, rng) for _ in range(degree))]
+
+
+def _irreducible_by_norm(f, F):
+    """Ground truth (Trager (1976), §3): a monic squarefree ``f`` over ``F`` is irreducible iff the norm of some
+    shift ``f(x - sΘ)`` with a squarefree norm is irreducible over the rationals."""
+    theta = ex._tower.primitive(F)
+    for s in (1, -1, 2, -2, 3):
+        N = ex.norm(ex.dup_shift(f, F.mul(F.convert(-s), theta), F), F)
+        if ex.squarefree_qq(N):
+            return len(ex.factor_qq(N)) == 1 and ex.factor_qq(N)[0][1] == 1
+    raise AssertionError("no squarefree norm")  # pragma: no cover
+
+
+def test_modular_irreducibility_is_never_wrong(tower, cubic_top):
+    """``irreducible_modulo_primes`` (used to refuse a too-large field before computing a norm) says True only for
+    polynomials the norm proves irreducible; products of two polynomials are never called irreducible; and on
+    irreducible ones of degree 2-4 it usually decides (at least half here)."""
+    from sympy.polys.densearith import dup_mul
+
+    K, L1, L2, _, _, _ = tower
+    _, L3 = cubic_top
+    rng = random.Random(21)
+    decided = checked = 0
+    for F in (K, L1, L2, L3):
+        for degree in (2, 3, 4):
+            f = _random_monic(F, rng, degree)
+            verdict = ex.irreducible_modulo_primes(f, F)
+            if F is not L3:  # the norm of a degree-4 polynomial over a degree-24 field is slow to factor
+                truth = _irreducible_by_norm(f, F)
+                assert truth or not verdict
+                checked += truth
+                decided += verdict
+            product = dup_mul(_random_monic(F, rng, 1), _random_monic(F, rng, degree - 1), F)
+            assert not ex.irreducible_modulo_primes(product, F)
+    assert checked >= 6 and decided * 2 >= checked
