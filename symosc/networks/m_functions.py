@@ -126,7 +126,7 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
         When ``Z`` is not positive real (the message names the failed condition) or has irrational
         coefficients.
     ConvergenceError
-        When two candidate roots agree to 50 digits, so that no rational point can be placed between them (not
+        When two candidate roots agree to 40 digits, so that no rational point is placed between them (not
         seen in practice).
 
     Examples
