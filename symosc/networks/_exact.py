@@ -42,8 +42,8 @@ _DIGITS = 40
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
 #: under a minute — a Brune one needing 40 takes 10 s, a Bott–Duffin one needing 36 about 35 s — and their exact
-#: values have coefficients of thousands of digits; above 40 the norms alone take minutes: a target needing 50 did
-#: not finish in 8 min with the limit at 64)
+#: values have coefficients of thousands of digits; the two sample targets refused at 40 need 128 and, past 50,
+#: 300: beyond any practical limit)
 MAX_FIELD_DEGREE_FLINT = 40
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
