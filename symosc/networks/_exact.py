@@ -63,7 +63,7 @@ def sym(c, K) -> sp.Expr:
     return K.to_sympy(c)
 
 
-_GENERATORS: dict = {}
+_GENERATORS = _tower.FieldCache()
 
 
 def flint_module():
@@ -224,7 +224,7 @@ def _levels_squarefree(K, q: int, roots: list) -> bool:
     return True
 
 
-_REDUCTIONS: dict = {}
+_REDUCTIONS = _tower.FieldCache()
 
 
 def _reductions(K) -> list:

@@ -38,10 +38,27 @@ def _reduce(rep: list, own: list, K) -> list:
     return dup_strip(rep)
 
 
+class FieldCache(dict):
+    """Per-field data (multiplication matrices, inverses, reductions, …) for the ``maxsize`` fields added last: the
+    fields of large syntheses hold numbers of thousands of digits, and an unbounded cache would grow with every
+    synthesis of a session.  Entries are pure functions of their key, so an evicted one is only recomputed."""
+
+    def __init__(self, maxsize: int = 32) -> None:
+        super().__init__()
+        self.maxsize = maxsize
+
+    def __setitem__(self, key, value) -> None:
+        if key not in self and len(self) >= self.maxsize:
+            del self[next(iter(self))]  # the oldest
+        super().__setitem__(key, value)
+
+
 def inverse(c, K):
     """``1/c`` in ``K`` (an algebraic or a tower field), remembering the last few inverses of each field (the dense
     routines divide many times by the same leading coefficient)."""
-    cache = _INVERSES.setdefault(K, {})
+    cache = _INVERSES.get(K)
+    if cache is None:
+        cache = _INVERSES[K] = {}
     key = c if isinstance(c, TowerElement) else tuple(c.to_list()) if not K.is_QQ else c
     inv = cache.get(key)
     if inv is None:
@@ -52,7 +69,7 @@ def inverse(c, K):
     return inv
 
 
-_INVERSES: dict = {}
+_INVERSES = FieldCache()
 
 
 def _algebraic_inverse(c, K):
@@ -515,7 +532,7 @@ def companion(K):
     return Y
 
 
-_COMPANIONS: dict = {}
+_COMPANIONS = FieldCache()
 
 
 # --- exact conversion to one CRootOf ---------------------------------------------------------------------------
@@ -678,7 +695,7 @@ def _power_sums(K) -> list:
     return sums
 
 
-_POWER_SUMS: dict = {}
+_POWER_SUMS = FieldCache()
 
 
 def _fq(flint, c):
@@ -771,7 +788,7 @@ def _unflatten(coords: list, K):
     return TowerElement(dup_strip([_unflatten(coords[i * d : (i + 1) * d], K.base) for i in range(K.e)]), K)
 
 
-_EMBEDDINGS: dict = {}
+_EMBEDDINGS = FieldCache()
 
 
 def factor_holding(f: list, K, phi: list, s: int, e: int) -> list | None:

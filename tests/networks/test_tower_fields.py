@@ -302,3 +302,17 @@ def test_modular_irreducibility_is_never_wrong(tower, cubic_top):
             product = dup_mul(_random_monic(F, rng, 1), _random_monic(F, rng, degree - 1), F)
             assert not ex.irreducible_modulo_primes(product, F)
     assert checked >= 6 and decided * 2 >= checked
+
+
+def test_field_caches_are_bounded():
+    """The per-field caches keep the fields added last (an unbounded cache grew by about 8 MB per large synthesis)."""
+    cache = _tower.FieldCache(maxsize=2)
+    cache["a"], cache["b"] = 1, 2
+    cache["a"] = 3  # an update keeps the entry count
+    assert cache == {"a": 3, "b": 2}
+    cache["c"] = 4
+    assert cache == {"b": 2, "c": 4}
+    assert all(
+        isinstance(c, _tower.FieldCache)
+        for c in (_tower._INVERSES, _tower._COMPANIONS, _tower._POWER_SUMS, ex._REDUCTIONS, ex._GENERATORS)
+    )
