@@ -188,8 +188,9 @@ def _at_root(poly: list, root: sp.Expr) -> sp.Expr:
 
 
 def _family_values(a: list, h: list, K, values: _Values) -> list[tuple[sp.Expr, sp.Expr]]:
-    """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)`` over the roots ``y_i = -w2_i`` of ``h``: pairs ``(1/c_i, c_i/w2_i)``,
-    each computed in the field of its root (as polynomials in the root reduced modulo ``h``)."""
+    """``p a(p²)/h(p²) = Σ c_i p/(p² + w2_i)`` over the roots ``y_i = -w2_i`` of ``h`` (linear, or over the
+    rationals): pairs ``(1/c_i, c_i/w2_i)``, each computed in the field of its root (as polynomials in the root
+    reduced modulo ``h``; over an algebraic field a nonlinear ``h`` is realised by :func:`_axis_ladder`)."""
     if ex.dup_degree(h) == 1:
         yi = K.quo(K.neg(h[1]), h[0])
         c = K.quo(ex.dup_eval(a, yi, K), ex.dup_eval(ex.dup_diff(h, 1, K), yi, K))
@@ -199,11 +200,6 @@ def _family_values(a: list, h: list, K, values: _Values) -> list[tuple[sp.Expr, 
                 values.positive(K.quo(c, K.neg(yi)), K, "tank element"),
             )
         ]
-    if not K.is_QQ:
-        raise ex.Nested(
-            "imaginary-axis poles at the roots of an irreducible polynomial in p² over an algebraic field: each "
-            "tank would need its own conjugate field, and exact synthesis keeps a network in one number field"
-        )
     r = ex.dup_rem(ex.dup_mul(a, ex.dup_invert(ex.dup_diff(h, 1, K), h, K), K), h, K)  # c(y) = a(y)/h'(y) mod h
     inv_r = ex.dup_invert(r, h, K)  # 1/c(y)
     r_over_w2 = ex.dup_rem(ex.dup_mul(r, ex.dup_invert([K.neg(K.one), K.zero], h, K), K), h, K)  # c(y)/(-y)
@@ -247,11 +243,25 @@ def remove_axis_poles(
             A = ex.dup_rem(ex.dup_mul(N, ex.dup_invert(D2, Hp, K), K), Hp, K)
             N = ex.exquo(ex.dup_sub(N, ex.dup_mul(A, D2, K), K), Hp, K, "axis-pole remainder")
             D = D2
+            if ex.dup_degree(h) > 1 and not K.is_QQ:
+                parts.append(_axis_ladder(A, Hp, K, mode, values))
+                continue
             a = ex.even_in_y(ex.exquo(A, [K.one, K.zero], K, "odd part"), K) if A else []
             for v1, v2 in _family_values(a, h, K, values):
                 parts.append(_tank(v1, v2, mode))
     N, D = ex.normalize(N, D, K)
     return parts, N, D
+
+
+def _axis_ladder(A: list, Hp: list, K, mode: str, values: _Values) -> OnePort:
+    """The reactance ``A/Hp`` (an impedance in series for ``mode="Z"``, an admittance in parallel for ``"Y"``) of
+    imaginary-axis poles at the conjugate roots of ``Hp``, irreducible over the algebraic field ``K``: one tank per
+    pole would need each root's own conjugate field, while the Cauer ladder of the whole reactance (continued
+    fraction at infinity, Bulgakov (1954), §9.21) has its elements in ``K`` and positive (Cauer's theorem)."""
+    from .foster_cauer import _cauer
+
+    other = "Y" if mode == "Z" else "Z"  # A/Hp vanishes at infinity: the ladder starts with its inverse
+    return _cauer(Hp, A, K, other, True, positive=values.positive)
 
 
 def _in_p2(h: list, K) -> list:

@@ -115,15 +115,16 @@ def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     return _join(parts, Parallel)
 
 
-def _cauer(N: list, D: list, K, mode: str, at_infinity: bool) -> OnePort:
-    """Continued fraction of ``F = N/D``: remove the pole at infinity (or zero), invert, repeat (exact over K)."""
+def _cauer(N: list, D: list, K, mode: str, at_infinity: bool, positive: Any = ex.positive) -> OnePort:
+    """Continued fraction of ``F = N/D``: remove the pole at infinity (or zero), invert, repeat (exact over K).
+    ``positive(c, K, what)`` turns a coefficient into an element value (checking its sign)."""
     elements: list[tuple[OnePort, str]] = []
     while True:
         if at_infinity:
             if ex.dup_degree(N) != ex.dup_degree(D) + 1:
                 raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
             k = K.quo(N[0], D[0])
-            kv = ex.positive(k, K, "Cauer coefficient")
+            kv = positive(k, K, "Cauer coefficient")
             element = Inductor(kv) if mode == "Z" else Capacitor(kv)
             N = ex.dup_sub(N, ex.dup_mul_ground(ex.mul_p(D, K), k, K), K)
         else:
@@ -131,7 +132,7 @@ def _cauer(N: list, D: list, K, mode: str, at_infinity: bool) -> OnePort:
                 raise ParameterError("Cauer expansion stalled: the remainder has no pole where expected (not LC)")
             D = D[:-1]
             k = K.quo(ex.dup_eval(N, K.zero, K), D[-1])
-            kv = ex.positive(k, K, "Cauer coefficient")
+            kv = positive(k, K, "Cauer coefficient")
             element = Capacitor(1 / kv) if mode == "Z" else Inductor(1 / kv)
             N = ex.exquo(ex.dup_sub(N, ex.dup_mul_ground(D, k, K), K), [K.one, K.zero], K, "Cauer remainder")
         elements.append((element, mode))

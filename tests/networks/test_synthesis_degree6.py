@@ -437,6 +437,18 @@ def test_random_degree_6_targets_are_exact_under_the_default_limit(state):
         _check_exact_or_to_45_digits(synth(Z, p), Z)
 
 
+def test_conjugate_axis_poles_over_an_algebraic_field_are_realised():
+    """A random degree-6 target (no. 119 of the benchmark's 300-target sample) whose remainder, over an algebraic
+    field, has imaginary-axis poles at the conjugate roots of an irreducible polynomial in p²: it was refused (one
+    tank per pole would need each root's own field); the poles are now realised together by a Cauer ladder with
+    its elements in the field.  Exact for both methods."""
+    Z = (23677920 * p**6 + 4275180 * p**5 + 17260452 * p**4 + 1907910 * p**3 + 1925919 * p**2 + 23200 * p + 20880) / (
+        10342080 * p**6 + 7545636 * p**5 + 6256494 * p**4 + 4221207 * p**3 + 268833 * p**2 + 65040 * p + 2160
+    )
+    for synth in (brune_synthesis, bott_duffin_synthesis):
+        _check_exact_or_to_45_digits(synth(Z, p), Z)
+
+
 def test_default_limit_refusal_names_the_degree_and_the_keyword():
     """Beyond the default limit (40 with python-flint): ModelError with the degree needed and ``max_degree=``."""
     with pytest.raises(ModelError, match=r"degree 50 > 40 .*max_degree=50"):
