@@ -161,8 +161,9 @@ def sample_table(n, limits, timeout):
                 try:
                     synth(Z, p, max_degree=limit)
                     ok += 1
-                except ModelError as exc:
-                    needed.append(int(re.search(r"degree (\d+) >", str(exc)).group(1)))
+                except ModelError as exc:  # a field-degree refusal names the degree; any other is listed by its text
+                    found = re.search(r"degree (\d+) >", str(exc))
+                    needed.append(int(found.group(1)) if found else f"other: {str(exc)[:60]}")
                 except _Timeout:
                     stopped += 1
                 finally:
@@ -171,7 +172,7 @@ def sample_table(n, limits, timeout):
             shown = "default" if limit is None else str(limit)
             print(
                 f"{name:>12} {shown:>6} {ok:>6} {len(needed):>8} {stopped:>8} {statistics.median(times):9.2f} "
-                f"{max(times):7.1f}  {sorted(needed)}",
+                f"{max(times):7.1f}  {sorted(needed, key=str)}",
                 flush=True,
             )
 
