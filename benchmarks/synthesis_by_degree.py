@@ -172,7 +172,7 @@ def sample_table(n, limits, timeout):
             shown = "default" if limit is None else str(limit)
             print(
                 f"{name:>12} {shown:>6} {ok:>6} {len(needed):>8} {stopped:>8} {statistics.median(times):9.2f} "
-                f"{max(times):7.1f}  {sorted(needed, key=str)}",
+                f"{max(times):7.1f}  {sorted(needed, key=lambda v: (isinstance(v, str), str(v).zfill(6)))}",
                 flush=True,
             )
 
