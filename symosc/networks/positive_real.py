@@ -102,8 +102,8 @@ def real_part_on_axis(Z: Any, p: sp.Symbol = P) -> tuple[sp.Poly, sp.Poly]:
     x = sp.Dummy("x")
     ev = sp.expand((N.as_expr() * D.as_expr().subs(p, -p) + N.as_expr().subs(p, -p) * D.as_expr()) / 2)
     q = sp.expand(D.as_expr() * D.as_expr().subs(p, -p))
-    E = sp.Poly(sp.expand(ev.subs(p, sp.sqrt(-x))), x)
-    Q = sp.Poly(sp.expand(q.subs(p, sp.sqrt(-x))), x)
+    E = sp.Poly(sp.expand(ev.subs(p, sp.sqrt(-x))), x, extension=True)
+    Q = sp.Poly(sp.expand(q.subs(p, sp.sqrt(-x))), x, extension=True)
     return E, Q
 
 
@@ -182,7 +182,7 @@ def _axis_poles(N: sp.Poly, D: sp.Poly, G: sp.Poly, p: sp.Symbol) -> PositiveRea
     k = 0
     while sp.Poly(g, p).eval(0) == 0:
         g, k = sp.cancel(g / p), k + 1
-    H = sp.Poly(sp.expand(g.subs(p, sp.sqrt(-x))), x)  # roots x = ω² > 0 expected
+    H = sp.Poly(sp.expand(g.subs(p, sp.sqrt(-x))), x, extension=True)  # roots x = ω² > 0 expected
     if H.degree() > 0 and H.count_roots(0, None) - (1 if H.eval(0) == 0 else 0) != H.degree():
         return _fail("pole in the right half-plane", f"the denominator factor {G.as_expr()} has roots off the axis")
     dD = D.diff(p)

@@ -476,3 +476,27 @@ def test_m_function_synthesis_takes_max_degree():
     for bad in (0, 1.5, "2"):
         with pytest.raises(ParameterError, match="max_degree"):
             m_function_synthesis(Z, rho, p, max_degree=bad)
+
+
+def test_axis_poles_with_algebraic_coefficients():
+    """``Z = 1 + p/(p² + w1) + p/(p² + w2)`` with ``w1 + w2 = 3``, ``w1 w2 = 2 - √2`` (conjugate over QQ(√2)): positive
+    real by construction; with ``2 + √2`` the poles leave the axis, and with numerator ``2p² - 3`` one residue is
+    negative (the positive-real test raised SymPy's DomainError on such coefficients).  Brune and Bott–Duffin
+    realise the conjugate pair by one Cauer ladder with elements in QQ(√2)."""
+    from symosc.networks import positive_real_report
+
+    r2 = sp.sqrt(2)
+    Z = p * (2 * p**2 + 3) / (p**4 + 3 * p**2 + 2 - r2) + 1
+    assert positive_real_report(Z, p)
+    assert positive_real_report(p * (2 * p**2 + 3) / (p**4 + 3 * p**2 + 2 + r2) + 1, p).failed == (
+        "pole in the right half-plane"
+    )
+    assert positive_real_report(p * (2 * p**2 - 3) / (p**4 + 3 * p**2 + 2 - r2) + 1, p).failed == (
+        "residue at an imaginary-axis pole"
+    )
+    for synth in (brune_synthesis, bott_duffin_synthesis):
+        net = synth(Z, p)
+        values = _values(net)
+        assert any(v.has(r2) for v in values)
+        assert all(sp.N(v, 30) > 0 for v in values)
+        assert sp.simplify(sp.radsimp(sp.cancel(net.impedance(p) - Z))) == 0
