@@ -195,9 +195,7 @@ def irreducible_modulo_primes(f: list, K) -> bool:
     if flint_module() is None or K.is_QQ or n < 2:
         return False
     possible = (1 << n) - 2  # bit d set: a factor of degree d (0 < d < n) not yet excluded
-    for q, roots in _reductions(K):
-        if not _levels_squarefree(K, q, roots):
-            continue
+    for q, roots in _unramified_reductions(K):
         F = _reduce(f, K, q, roots)
         if F is None or F.degree() != n:
             continue
@@ -213,6 +211,13 @@ def irreducible_modulo_primes(f: list, K) -> bool:
     return False
 
 
+def _unramified_reductions(K) -> list:
+    """The pairs of :func:`_reductions` at which every level's defining polynomial stays squarefree (cached)."""
+    if K not in _UNRAMIFIED:
+        _UNRAMIFIED[K] = [(q, roots) for q, roots in _reductions(K) if _levels_squarefree(K, q, roots)]
+    return _UNRAMIFIED[K]
+
+
 def _levels_squarefree(K, q: int, roots: list) -> bool:
     """Every level's defining polynomial, reduced modulo ``q`` (the lower levels' generators sent to ``roots``),
     is squarefree."""
@@ -225,6 +230,7 @@ def _levels_squarefree(K, q: int, roots: list) -> bool:
 
 
 _REDUCTIONS = _tower.FieldCache()
+_UNRAMIFIED = _tower.FieldCache()
 
 
 def _reductions(K) -> list:

@@ -18,7 +18,7 @@ import math
 import mpmath
 import sympy as sp
 from sympy import QQ
-from sympy.polys.densearith import dup_mul, dup_sub
+from sympy.polys.densearith import dup_mul
 from sympy.polys.densebasic import dup_strip
 from sympy.polys.domains.characteristiczero import CharacteristicZero
 from sympy.polys.domains.field import Field
@@ -109,29 +109,6 @@ def monic(f: list, K) -> list:
         return f
     inv = inverse(f[0], K)
     return [K.one, *(c * inv for c in f[1:])]
-
-
-def invert_mod(a: list, m: list, K) -> list:
-    """``1/a`` modulo the monic irreducible ``m`` over ``K`` by the extended Euclidean algorithm (one inversion in
-    ``K`` per division step; the tower's inverse is :func:`invert_charpoly`, this one its independent check in the
-    tests)."""
-    r0, r1, s0, s1 = m, a, [], [K.one]
-    while len(r1) > 1:
-        inv = inverse(r1[0], K)
-        q, r = [], list(r0)
-        while len(r) >= len(r1):
-            c = r[0] * inv
-            q.append(c)
-            for i in range(1, len(r1)):
-                r[i] = r[i] - c * r1[i]
-            r.pop(0)
-        q = dup_strip(q)
-        r = dup_strip(r)
-        r0, r1, s0, s1 = r1, r, s1, dup_sub(s0, dup_mul(q, s1, K), K)
-    if not r1:
-        raise ZeroDivisionError("not invertible modulo an irreducible polynomial")
-    inv = inverse(r1[0], K)
-    return _reduce([c * inv for c in s1], m, K)
 
 
 def multiplication_columns(a: list, own: list, K) -> list[list]:

@@ -29,6 +29,7 @@ import sympy as sp
 from .._validate import check_int
 from ..errors import ConvergenceError, ParameterError
 from ..operational._rational import exactify
+from ._synthesis import _clean
 from ._util import P, as_expr, as_symbol, rational_function, synthesis_target
 from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
 from .positive_real import is_positive_real, positive_real_report, require_positive_real
@@ -152,13 +153,12 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     require_positive_real(N.as_expr() / D.as_expr(), p)
     if N.degree() <= 0 and D.degree() <= 0:
         return sp.oo
-    candidates = _ordered_candidates(N, D, p)
-    below = sp.Integer(0)
-    for k, c in enumerate(candidates):
-        if not is_positive_real(_shifted(N, D, p, _between(candidates, k)), p):
+    below, low = sp.Integer(0), sp.Integer(0)  # the last candidate passed, exact and as a 50-digit rational
+    for c, value in _ordered_candidates(N, D, p):
+        if not is_positive_real(_shifted(N, D, p, _between(low, value)), p):
             return below
-        below = c
-    return sp.oo if is_positive_real(_shifted(N, D, p, 2 * _value(below) + 1), p) else below
+        below, low = c, value
+    return sp.oo if is_positive_real(_shifted(N, D, p, 2 * low + 1), p) else below
 
 
 def _shifted(N: sp.Poly, D: sp.Poly, p: sp.Symbol, t: sp.Expr) -> sp.Expr:
@@ -169,17 +169,16 @@ def _value(c: sp.Expr) -> sp.Rational:
     return sp.Rational(str(sp.N(c, _DIGITS)))
 
 
-def _between(candidates: list, k: int) -> sp.Rational:
-    """A rational strictly between candidate ``k - 1`` (or 0) and candidate ``k``."""
-    lo = _value(candidates[k - 1]) if k else sp.Integer(0)
-    hi = _value(candidates[k])
+def _between(lo: sp.Rational, hi: sp.Rational) -> sp.Rational:
+    """A rational strictly between the 50-digit values of two consecutive candidates."""
     if hi - lo <= abs(hi) * sp.Rational(1, 10 ** (_DIGITS - 10)):
         raise ConvergenceError(f"two candidate abscissae agree to {_DIGITS - 10} digits ({sp.N(hi, 20)})")
     return (lo + hi) / 2
 
 
 def _ordered_candidates(N: sp.Poly, D: sp.Poly, p: sp.Symbol) -> list:
-    """Distinct positive roots (exact, ascending) of the polynomials that vanish at every boundary ``rho``."""
+    """``(root, value)`` of the distinct positive roots (exact, with their 50-digit rational values, ascending) of
+    the polynomials that vanish at every boundary ``rho``."""
     r, y, x = sp.Dummy("rho"), sp.Dummy("y"), sp.Dummy("x")
     polys = []
     for F in (N, D):
@@ -194,14 +193,8 @@ def _ordered_candidates(N: sp.Poly, D: sp.Poly, p: sp.Symbol) -> list:
     if E.degree() > 1:
         polys.append(sp.Poly(sp.discriminant(E.as_expr(), x), r))
     factors = {f.monic() for P_ in polys if not P_.is_zero and P_.degree() > 0 for f, _ in P_.factor_list()[1]}
-    roots = [c for f in factors for c in f.real_roots() if c.is_positive]
-    return sorted(roots, key=_value)
-
-
-def _simplest(value: sp.Expr) -> sp.Expr:
-    """A value with radicals as ``a + b sqrt(c)`` (denominators rationalised); rationals and ``CRootOf``
-    polynomials as they are."""
-    return value if value.is_Rational or value.has(sp.CRootOf) else sp.expand(sp.radsimp(value))
+    roots = [(c, _value(c)) for f in factors for c in f.real_roots() if c.is_positive]
+    return sorted(roots, key=lambda rv: rv[1])
 
 
 def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
@@ -209,9 +202,9 @@ def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
     if isinstance(net, Resistor):
         return net
     if isinstance(net, Inductor):
-        return Series((net, Resistor(_simplest(rho * net.L))))
+        return Series((net, Resistor(_clean(rho * net.L))))
     if isinstance(net, Capacitor):
-        return Parallel((net, Resistor(_simplest(1 / (rho * net.C)))))
+        return Parallel((net, Resistor(_clean(1 / (rho * net.C)))))
     if isinstance(net, Series):
         return Series(tuple(_shift_elements(part, rho) for part in net.parts))
     if isinstance(net, Parallel):
