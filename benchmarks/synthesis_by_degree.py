@@ -5,7 +5,7 @@ Targets are impedances of random networks of positive elements (fixed random gen
   ``Z.network("cauerI" | "cauerII" | "fosterI" | "fosterII")`` (lcapy has no Brune or Bott–Duffin);
 - RLC: random series/parallel trees with ``d`` reactive elements and 1-3 resistors, kept when the impedance has
   degree exactly ``d``; Brune and Bott–Duffin in symosc, counting exact realisations and documented refusals
-  (the element values would need a number field of degree > 40 with python-flint, > 8 without).
+  (the element values would need a number field of degree > 64 with python-flint, > 8 without).
 
 ``--sample N`` adds a larger random sample (random generator state 7: N R-L-C targets of degree 5 and 2N of
 degree 6) run with Brune and Bott–Duffin at the default field-degree limit and at each ``--max-degree`` given,

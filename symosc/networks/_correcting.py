@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import mpmath
@@ -76,20 +77,30 @@ def max_gain_on_axis(N: sp.Poly, D: sp.Poly) -> float:
     return float(mpmath.sqrt(max(mpmath.mpf(sp.N(v, _DIGITS)) for v in vals)))
 
 
-def dual(net: OnePort, W2: sp.Expr) -> OnePort | None:
-    """The inverse network with ``Z_dual = W2 / Z`` (series <-> parallel, L <-> C); None when it has no dual."""
+def dual(net: OnePort, W2: Any, scale: Callable[[Any, str], Any] | None = None) -> OnePort | None:
+    """The inverse network with ``Z_dual = W2 / Z`` (series <-> parallel, L <-> C); None when it has no dual.
+
+    ``scale(value, kind)`` computes the new values when given (``kind`` ``"R"``: the resistance ``W2/R``, ``"L"``:
+    the capacitance ``L/W2``, ``"C"``: the inductance ``W2 C``), e.g. in exact field arithmetic; by default they
+    are SymPy expressions."""
+    if scale is None:
+        scale = scale_expr(W2)
     if isinstance(net, Resistor):
-        return Resistor(W2 / net.R)
+        return Resistor(scale(net.R, "R"))
     if isinstance(net, Inductor):
-        return Capacitor(net.L / W2)
+        return Capacitor(scale(net.L, "L"))
     if isinstance(net, Capacitor):
-        return Inductor(net.C * W2)
+        return Inductor(scale(net.C, "C"))
     if isinstance(net, Series | Parallel):
-        parts = [dual(part, W2) for part in net.parts]
+        parts = [dual(part, W2, scale) for part in net.parts]
         if any(part is None for part in parts):
             return None
         return Parallel(tuple(parts)) if isinstance(net, Series) else Series(tuple(parts))
     return None
+
+
+def scale_expr(W2: sp.Expr) -> Callable[[sp.Expr, str], sp.Expr]:
+    return lambda v, kind: {"R": W2 / v, "L": v / W2, "C": W2 * v}[kind]
 
 
 def positive(value: Any, name: str) -> sp.Expr:

@@ -40,22 +40,26 @@ from ._tower import TowerField
 _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
-#: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds to
-#: under a minute — a Brune one needing 40 takes 10 s, a Bott–Duffin one needing 36 about 35 s — and their exact
-#: values have coefficients of thousands of digits; the two sample targets refused at 40 need 128 and, past 50,
-#: 300: beyond any practical limit)
-MAX_FIELD_DEGREE_FLINT = 40
+#: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds, the
+#: Bott–Duffin ones needing 64 half a minute to two and a half minutes; the targets of the benchmark's samples refused
+#: at 64 need 120, 128 or, past 50, 300: beyond any practical limit)
+MAX_FIELD_DEGREE_FLINT = 64
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "
     "of {what}); exact synthesis keeps every element of a network in one number field of degree <= {limit}; "
     "brune_synthesis, bott_duffin_synthesis and "
-    "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 32-40 take seconds to "
-    "a minute, larger ones minutes or more)"
+    "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 32-40 take seconds, "
+    "degree 64 up to minutes, larger ones more)"
 )
 
 
 class Nested(ModelError):
-    """A step needs an algebraic number outside the current field (the limitation of the exact synthesis)."""
+    """A step needs an algebraic number outside the current field (the limitation of the exact synthesis); ``degree``
+    is the degree over the rationals of the field it needs (None when unknown)."""
+
+    def __init__(self, message: str, degree: int | None = None) -> None:
+        super().__init__(message)
+        self.degree = degree
 
 
 def sym(c, K) -> sp.Expr:
@@ -356,7 +360,7 @@ def extension(root: sp.Expr, what: str = "a polynomial"):
     chosen = _LIMIT.get()
     if chosen is not None and field_degree(K) > chosen:
         what = f"the polynomial of degree {field_degree(K)} over the rationals giving {what}"
-        raise Nested(NESTED.format(degree=field_degree(K), limit=chosen, what=what))
+        raise Nested(NESTED.format(degree=field_degree(K), limit=chosen, what=what), field_degree(K))
     return K
 
 
@@ -423,7 +427,7 @@ def extend_with_root(f: list, K, x_num, what: str):
     degree = field_degree(K) * dup_degree(f)
     if degree > max_field_degree() and irreducible_modulo_primes(f, K):  # refused before the (costly) norm
         what = f"a polynomial whose coefficients are themselves algebraic numbers: {what}"
-        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
+        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what), degree)
     for s in (1, -1, 2, -2, 3, -3, 4, -4):
         shifted = dup_shift(f, K.mul(K.convert(-s), theta), K)  # f(x - s Θ)
         N = norm(shifted, K)
@@ -443,7 +447,7 @@ def extend_with_root(f: list, K, x_num, what: str):
     degree, m = dup_degree(phi), field_degree(K)
     if degree > max_field_degree():
         what = f"a polynomial whose coefficients are themselves algebraic numbers: {what}"
-        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what))
+        raise Nested(NESTED.format(degree=degree, limit=max_field_degree(), what=what), degree)
     if degree == m * dup_degree(f):
         own = f
     elif isinstance(K, TowerField) and (own := _tower.factor_holding(f, K, phi, s, degree // m)) is not None:

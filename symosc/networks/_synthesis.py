@@ -4,8 +4,9 @@ Every step is exact arithmetic over a number field ``K`` (see ``_exact``): ``QQ`
 by an algebraic number (a square root or ``CRootOf``, then tower fields ``K[x]/(own)``, total degree <=
 ``_exact.max_field_degree()``) when the minimum of ``Re Z(iω)`` (Brune) or Richards' ``k`` (Bott–Duffin) is
 irrational.  Element values are kept as field elements until the network is complete and then written as exact
-algebraic numbers (radicals or polynomials in one ``CRootOf``: the primitive element of the largest field used,
-when every other field used lies below it in its tower).
+algebraic numbers: radicals or polynomials in one ``CRootOf`` (the primitive element of the largest field used,
+every other field used lying below it in its tower), in fields of degree above 24 polynomials in the root adjoined
+at each level of the tower (``_tower.in_levels_all``).
 """
 
 from __future__ import annotations
@@ -21,11 +22,15 @@ from sympy.polys.constructor import construct_domain
 from ..errors import ModelError, ParameterError
 from . import _exact as ex
 from . import _tower
+from ._correcting import dual, scale_expr
 from ._tower import TowerField
 from ._util import P, as_symbol, rational_function, values_checked
 from .oneports import BruneSection, Capacitor, Inductor, OnePort, Parallel, Resistor, Series
 
 _MAX_DEPTH = 200
+#: how many times one synthesis may undo a step whose continuation needs a field above the limit and take the other
+#: minimum (of ``Re Z`` or of ``Re 1/Z``) instead
+_MAX_RETRIES = 4
 
 
 def to_exact(Z: Any, p: sp.Symbol) -> tuple[list, list, Any]:
@@ -291,9 +296,28 @@ class _Values:
         self.pending[d] = (c, K)
         return d
 
+    def dual(self, net: OnePort, r2, K) -> OnePort:
+        """The dual of the R-L-C tree ``net``, impedance ``r2/Z`` (``r2 > 0`` in ``K``, below every field of ``net``'s
+        values): its values lie in the same fields and are positive with those of ``net`` (not checked again)."""
+
+        def scale(v: sp.Expr, kind: str) -> sp.Expr:
+            if v not in self.pending:  # an exact number already
+                return _clean(scale_expr(ex.sym(r2, K))(v, kind))
+            c, F = self.pending[v]
+            r = ex.convert(r2, K, F)
+            d = sp.Dummy(positive=True)
+            self.pending[d] = ({"R": F.quo(r, c), "L": F.quo(c, r), "C": F.mul(r, c)}[kind], F)
+            return d
+
+        out = dual(net, r2, scale)
+        if out is None:  # pragma: no cover - the cycle builds R-L-C trees only
+            raise ModelError("Bott–Duffin: a remainder network has no dual")
+        return out
+
     def finish(self, net: OnePort | None) -> OnePort | None:
         """``net`` with its placeholders replaced by exact numbers: in the field above all others of one tower
-        (one ``CRootOf`` for all values), in each value's own field when two branches extended differently."""
+        (one ``CRootOf`` for all values; the procedures extend one tower, Bott–Duffin's second branch being the
+        dual of its first), else in each value's own field."""
         fields = {id(K): K for _, K in self.pending.values()}.values()
         top = max(fields, key=ex.field_degree, default=None)
         below = set(map(id, _tower.levels(top)))
@@ -305,7 +329,7 @@ class _Values:
             by_field.setdefault(id(K), (K, []))[1].append((d, c))
         subs = {}
         for K, items in by_field.values():
-            exact = _tower.in_crootof_all([c for _, c in items], K) if isinstance(K, TowerField) else None
+            exact = _tower.in_sympy_all([c for _, c in items], K) if isinstance(K, TowerField) else None
             for i, (d, c) in enumerate(items):
                 subs[d] = _clean(exact[i] if exact is not None else ex.sym(c, K))
         if net is None:
@@ -334,6 +358,7 @@ class Engine:
         self.cycle = cycle
         self.values = _Values()
         self._roots: list = []  # (field, ω0²) of the minima found so far
+        self._retries = 0
 
     def _minimum(self, N: list, D: list, K, extend: bool = True):
         """:func:`_minimum` trying the earlier ``ω0²`` first; a new interior ``ω0²`` is remembered."""
@@ -360,27 +385,46 @@ class Engine:
             return join(parts, inner, Parallel)
         # subtract the minimum resistance of Z or the minimum conductance of Y = 1/Z (both keep the function
         # positive real, Theorem III): first one that needs no field extension (decided from numbers), else the one
-        # in the smaller field; a zero minimum starts the cycle at its ω0
+        # in the smaller field (the other one when the first leads to a field above the limit); a zero minimum
+        # starts the cycle at its ω0
         zmin = self._minimum(N, D, K, extend=False)
-        if zmin is None:
-            ymin = self._minimum(D, N, K, extend=False)
-            if ymin is not None and ymin[0]:
-                return self._remove_constant(*ymin, "Y", depth)
-            *zmin, is_z = self._smaller_extension(N, D, K)
-            if zmin[0]:
-                return self._remove_constant(*zmin, "Z" if is_z else "Y", depth)
-        elif zmin[0]:
-            return self._remove_constant(*zmin, "Z", depth)
-        _R, x0, K, N, D = zmin
+        if zmin is not None:
+            return self._step(zmin, True, depth)
+        ymin = self._minimum(D, N, K, extend=False)
+        if ymin is not None and ymin[0]:
+            return self._remove_constant(*ymin, "Y", depth)
+        refusals = []
+        for *m, is_z in self._extensions(N, D, K):
+            if refusals:  # the other minimum, when the retries allow
+                if self._retries >= _MAX_RETRIES:
+                    break
+                self._retries += 1
+            mark = (set(self.values.pending), len(self._roots))
+            try:
+                return self._step(m, is_z, depth)
+            except ex.Nested as exc:  # undo the branch (its values and minima); the refusal naming the least degree
+                refusals.append(exc)
+                for d in set(self.values.pending) - mark[0]:
+                    del self.values.pending[d]
+                del self._roots[mark[1] :]
+        raise min(refusals, key=lambda exc: exc.degree or float("inf"))
+
+    def _step(self, m: tuple, is_z: bool, depth: int) -> OnePort:
+        """Subtract the minimum ``m = (R, x0, K, N, D)`` of ``Re Z`` (``is_z``) or of ``Re Y``, or, when it is zero,
+        run the cycle at its ``ω0``."""
+        R, x0, K, N, D = m
+        if R:
+            return self._remove_constant(R, x0, K, N, D, "Z" if is_z else "Y", depth)
         if x0 in ("0", "oo"):  # pragma: no cover - excluded by the removals above
             raise ModelError("Re Z vanishes at 0 or infinity after the pole removals")
         if self.cycle == "brune":
             return self._brune(N, D, x0, K, depth)
         return self._bott_duffin(N, D, x0, K, depth)
 
-    def _smaller_extension(self, N: list, D: list, K) -> tuple:
-        """The minimum of ``Re Z`` or of ``Re Y`` whose field is smaller, tagged (``True`` for ``Z``); the refusal
-        when both need fields above the limit.  A zero minimum is one of ``Z`` (``Re Y = Re Z / |Z|²``)."""
+    def _extensions(self, N: list, D: list, K) -> list[tuple]:
+        """The minima of ``Re Z`` and of ``Re Y`` that need a field extension, tagged (``True`` for ``Z``), the one
+        in the smaller field first; the refusal when both need fields above the limit.  A zero minimum is one of
+        ``Z`` (``Re Y = Re Z / |Z|²``)."""
         found, refusal = [], None
         for is_z, (n, d) in ((True, (N, D)), (False, (D, N))):
             try:
@@ -394,7 +438,7 @@ class Engine:
             found.append((ex.field_degree(m[2]), not is_z, (*m, is_z)))
         if not found:
             raise refusal
-        return min(found, key=lambda c: c[:2])[2]
+        return [c[2] for c in sorted(found, key=lambda c: c[:2])]
 
     def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
         """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
@@ -454,13 +498,15 @@ class Engine:
             raise ModelError("Bott–Duffin: Richards' k is not positive")
         C1 = self.values.positive(K.quo(K.one, K.mul(k, Fk)), K, "Bott–Duffin element")
         L1 = self.values.positive(K.quo(Fk, k), K, "Bott–Duffin element")
+        # the second remainder is the first one's dual: Fk/R = Fk²/(Fk R), so it is built from it (same field)
+        # instead of synthesised again, where it would extend the field separately (Bott & Duffin 1949)
+        r2 = K.mul(Fk, Fk)
         if inductive:
-            first = Parallel((Capacitor(C1), sub(ex.dup_mul_ground(Rn, Fk, K), Rd)))
-            second = Parallel((Inductor(L1), sub(ex.dup_mul_ground(Rd, Fk, K), Rn)))
-            return Series((first, second))
-        first = Series((sub(Rd, ex.dup_mul_ground(Rn, Fk, K)), Inductor(C1)))
-        second = Series((Capacitor(L1), sub(Rn, ex.dup_mul_ground(Rd, Fk, K))))
-        return Parallel((first, second))
+            z1 = sub(ex.dup_mul_ground(Rn, Fk, K), Rd)  # Fk R
+            return Series((Parallel((Capacitor(C1), z1)), Parallel((Inductor(L1), self.values.dual(z1, r2, K)))))
+        y1 = sub(Rd, ex.dup_mul_ground(Rn, Fk, K))  # 1/(Fk R)
+        r2 = K.quo(K.one, r2)  # R/Fk = (1/Fk²) Fk R
+        return Parallel((Series((y1, Inductor(C1))), Series((Capacitor(L1), self.values.dual(y1, r2, K)))))
 
 
 def _richards_k(P1: list, K):

@@ -7,7 +7,10 @@ Where Brune's cycle needs unit-coupled coils, Bott and Duffin use Richards' func
 ``Z = [1/(Z(k) R) + p/(k Z(k))]^-1 + [k/(p Z(k)) + R/Z(k)]^-1``,
 
 two parallel pairs in series, each holding a remainder of lower degree after the imaginary-axis removals.  The
-dual step (on ``1/Z``) handles ``Z(iω0) = -i|X|``.  The result uses only R, L and C (more of them than Brune).
+remainders ``Z(k) R`` and ``Z(k)/R = Z(k)²/(Z(k) R)`` are duals of each other, so the second network is the first
+one's dual (series and parallel exchanged, ``L`` and ``C`` exchanged, values scaled by ``Z(k)²``): one synthesis per
+cycle, and one number field for both branches.  The dual step (on ``1/Z``) handles ``Z(iω0) = -i|X|``.  The
+result uses only R, L and C (more of them than Brune).
 
 >>> import sympy as sp
 >>> from symosc.networks import bott_duffin_synthesis
@@ -43,8 +46,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     p : sympy.Symbol
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
-        :func:`brune_synthesis` (default 40 with python-flint, 8 without; fields of degree 32–40 take seconds to
-        under a minute).
+        :func:`brune_synthesis` (default 64 with python-flint, 8 without; fields of degree 32–40 take seconds,
+        degree 64 up to a few minutes).
 
     Returns
     -------
@@ -57,7 +60,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
         When ``Z`` is not positive real (naming the failed condition).
     ModelError
         When the exact element values would need a number field of degree above ``max_degree`` over the
-        rationals, e.g. an irrational ``ω0`` of degree 6 followed by a Richards' ``k`` of degree 3 over it.
+        rationals, e.g. an irrational ``ω0`` of degree 6 followed by a Richards' ``k`` of degree 3 over it,
+        whichever of the minima of ``Re Z`` and ``Re 1/Z`` a step subtracts (as in :func:`brune_synthesis`).
 
     Examples
     --------

@@ -38,12 +38,12 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) 
         Rational positive-real function of ``p`` with numeric coefficients.
     p : sympy.Symbol
     max_degree : int, optional
-        Largest degree over the rationals of the number field holding the exact element values; default 40 with
+        Largest degree over the rationals of the number field holding the exact element values; default 64 with
         python-flint (the ``exact`` extra), 8 without, for nested extensions (the first one, of degree at most
         ``2n - 2``, is bounded only by a given value).  Random degree-6 targets occasionally need 32 or more (a
         Brune chain of degree 6 can need up to 10·6·2 = 120); with python-flint fields of degree 32–40 take
-        seconds to under a minute, and the exact values then have coefficients of thousands of digits (the network
-        prints them by 15 digits after ``≈``).  A smaller limit makes such targets fail fast.
+        seconds, degree 64 up to a few minutes, and the exact values then have coefficients of thousands of digits
+        (the network prints them by 15 digits after ``≈``).  A smaller limit makes such targets fail fast.
 
     Returns
     -------
@@ -57,8 +57,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) 
         When ``Z`` is not positive real (the message names the failed condition), or is identically zero.
     ModelError
         When the exact element values would need a number field of degree above ``max_degree`` over the
-        rationals; element values are exact numbers: rationals, square roots, polynomials in a ``CRootOf``
-        number.
+        rationals (whichever of the minima of ``Re Z`` and ``Re 1/Z`` a step subtracts: when the one in the
+        smaller field leads above the limit, the step is undone and the other one taken); element values are exact numbers: rationals, square roots, polynomials in a ``CRootOf``
+        number (in fields of degree above 24, polynomials in one ``CRootOf`` per level of the field tower).
 
     Examples
     --------

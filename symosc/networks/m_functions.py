@@ -25,6 +25,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.polys.constructor import construct_domain
 
 from .._validate import check_int
 from ..errors import ConvergenceError, ParameterError
@@ -106,13 +107,16 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     such ``rho`` is a positive real root of one of these polynomials: the resultants
     ``res_y(F(y), F(-2 rho - y))`` for ``F = N, D`` (their roots include minus the real part of every pole and
     zero), and the discriminant, the leading coefficient and the constant term in ``x = ω²`` of the numerator of
-    ``Re Z(-rho + iω)``.  The roots are ordered and ``Z(p - t)`` is tested exactly (Sturm counts) at a rational
-    ``t`` between each pair of consecutive roots; the last root below the first failing ``t`` is the answer.
+    ``Re Z(-rho + iω)`` (with algebraic coefficients: their norms over the rationals, whose roots include those
+    of the conjugate functions as harmless extra candidates).  The roots are ordered and ``Z(p - t)`` is tested
+    exactly (Sturm counts) at a rational ``t`` between each pair of consecutive roots; the last root below the
+    first failing ``t`` is the answer.
 
     Parameters
     ----------
     Z : SymPy expression
-        Positive-real rational function of ``p`` with rational (or floating-point, taken exactly) coefficients.
+        Positive-real rational function of ``p`` with rational or algebraic (e.g. ``sqrt(2)``) coefficients
+        (floating-point ones are taken exactly).
     p : sympy.Symbol
 
     Returns
@@ -124,8 +128,8 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     Raises
     ------
     ParameterError
-        When ``Z`` is not positive real (the message names the failed condition) or has irrational
-        coefficients.
+        When ``Z`` is not positive real (the message names the failed condition) or has coefficients that are
+        not algebraic numbers (symbols, ``pi``).
     ConvergenceError
         When two candidate roots agree to 40 digits, so that no rational point is placed between them (not
         seen in practice).
@@ -148,8 +152,7 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     """
     p = as_symbol(p)
     N, D = rational_function(exactify(Z), p)
-    if any(not c.is_Rational for c in N.all_coeffs() + D.all_coeffs()):
-        raise ParameterError(f"m_abscissa needs rational coefficients, got {N.as_expr() / D.as_expr()}")
+    _require_algebraic(N.all_coeffs() + D.all_coeffs(), N.as_expr() / D.as_expr())
     require_positive_real(N.as_expr() / D.as_expr(), p)
     if N.degree() <= 0 and D.degree() <= 0:
         return sp.oo
@@ -192,9 +195,26 @@ def _ordered_candidates(N: sp.Poly, D: sp.Poly, p: sp.Symbol) -> list:
     polys += [sp.Poly(E.LC(), r), sp.Poly(E.as_expr().subs(x, 0), r)]
     if E.degree() > 1:
         polys.append(sp.Poly(sp.discriminant(E.as_expr(), x), r))
+    polys = [_rational_multiple(P_, r) for P_ in polys]
     factors = {f.monic() for P_ in polys if not P_.is_zero and P_.degree() > 0 for f, _ in P_.factor_list()[1]}
     roots = [(c, _value(c)) for f in factors for c in f.real_roots() if c.is_positive]
     return sorted(roots, key=lambda rv: rv[1])
+
+
+def _require_algebraic(coeffs: list, Z: sp.Expr) -> None:
+    try:
+        K, _ = construct_domain(coeffs, extension=True)
+    except (sp.PolynomialError, NotImplementedError, ValueError):  # pragma: no cover - SymPy's own refusals
+        K = None
+    if K is None or not (K.is_ZZ or K.is_QQ or K.is_AlgebraicField):
+        raise ParameterError(f"m_abscissa needs rational or algebraic coefficients, got {Z}")
+
+
+def _rational_multiple(P_: sp.Poly, r: sp.Symbol) -> sp.Poly:
+    """``P_`` itself over the rationals; over an algebraic field its norm, a rational polynomial holding every
+    root of ``P_`` (and those of its conjugates, harmless extra candidates)."""
+    P_ = sp.Poly(P_.as_expr(), r, extension=True)
+    return P_.norm() if P_.domain.is_AlgebraicField else P_
 
 
 def _shift_elements(net: OnePort, rho: sp.Expr) -> OnePort:
@@ -233,7 +253,7 @@ def m_function_synthesis(Z: Any, rho: Any = None, p: sp.Symbol = P, *, max_degre
     p : sympy.Symbol
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
-        :func:`bott_duffin_synthesis` (default 40 with python-flint, 8 without).
+        :func:`bott_duffin_synthesis` (default 64 with python-flint, 8 without).
 
     Returns
     -------

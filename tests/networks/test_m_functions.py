@@ -223,23 +223,26 @@ def test_m_abscissa_bad_input_and_edges():
     assert m_abscissa(p + 1 / p, p) == 0
     with pytest.raises(ParameterError, match="not positive real"):
         m_abscissa((p**2 + 1) / (p**2 + p + 4), p)
-    with pytest.raises(ParameterError, match="rational coefficients"):
-        m_abscissa((p + sp.sqrt(2)) / (p + 1), p)
+    with pytest.raises(ParameterError, match="rational or algebraic coefficients"):
+        m_abscissa((p + sp.pi) / (p + 1), p)
+    with pytest.raises(ParameterError, match="rational or algebraic coefficients"):
+        m_abscissa((p + sp.Symbol("a", positive=True)) / (p + 1), p)
     with pytest.raises(ParameterError, match="for no rho > 0"):
         m_function_synthesis((p**2 + p + 1) / (p**2 + p + 4), p=p)
     assert m_function_synthesis(sp.Integer(3), p=p) == Resistor(3)
 
 
-def _lossy_tree(rng, n):
-    """Random series/parallel tree of ``n`` resistors, lossy inductors (L + R) and lossy capacitors (C | R)."""
-    value = lambda: sp.Rational(rng.randint(1, 9), rng.randint(1, 5))  # noqa: E731
+def _lossy_tree(rng, n, surd=1):
+    """Random series/parallel tree of ``n`` resistors, lossy inductors (L + R) and lossy capacitors (C | R); with
+    ``surd`` = sqrt(2) about half of the values are rational multiples of it."""
+    value = lambda: sp.Rational(rng.randint(1, 9), rng.randint(1, 5)) * (surd if rng.random() < 0.5 else 1)  # noqa: E731
     if n == 1:
         kind = rng.choice("RLC")
         if kind == "R":
             return Resistor(value())
         return Inductor(value()) + Resistor(value()) if kind == "L" else Capacitor(value()) | Resistor(value())
     k = rng.randint(1, n - 1)
-    a, b = _lossy_tree(rng, k), _lossy_tree(rng, n - k)
+    a, b = _lossy_tree(rng, k, surd), _lossy_tree(rng, n - k, surd)
     return a + b if rng.random() < 0.5 else a | b
 
 
@@ -267,6 +270,34 @@ def test_m_abscissa_of_random_lossy_networks(state):
     if rho == sp.oo:
         assert not Z.has(p)
         return
+    r = float(rho)
+    assert r > 0
+    assert _numerically_m_function(Z, r * (1 - 1e-6) - 1e-9)
+    assert not _numerically_m_function(Z, r * 1.02 + 1e-3)
+
+
+def test_m_abscissa_with_algebraic_coefficients():
+    """Z = (p + sqrt 2)/(p + 1): Z(p - rho) keeps its zero and pole in Re p <= 0 up to rho = 1, and
+    Re[(a + iω)/(b + iω)] = (ab + ω²)/(b² + ω²) >= 0 needs a b >= 0 (a = sqrt 2 - rho, b = 1 - rho): rho* = 1 by
+    hand; the realisation with R_L/L = 1 is exact."""
+    Z = (p + sp.sqrt(2)) / (p + 1)
+    assert m_abscissa(Z, p) == 1
+    net = m_function_synthesis(Z, p=p)
+    assert sp.simplify(net.impedance(p) - Z) == 0
+    assert all(sp.N(v) > 0 for e in net.elements() for v in vars(e).values())
+
+
+@pytest.mark.parametrize("state", [102, 103, 104, 105, 109])
+def test_m_abscissa_of_random_lossy_networks_with_surds(state):
+    """Lossy networks with element values in QQ(sqrt 2): the abscissa is exact (a root of a rational norm) and
+    NumPy roots and the dense grid agree that it is the largest (the states give rational, surd and quartic
+    abscissae)."""
+    import random
+
+    rng = random.Random(state)
+    Z = sp.cancel(_lossy_tree(rng, rng.randint(2, 3), sp.sqrt(2)).impedance(p))
+    assert Z.has(sp.sqrt(2))
+    rho = m_abscissa(Z, p)
     r = float(rho)
     assert r > 0
     assert _numerically_m_function(Z, r * (1 - 1e-6) - 1e-9)

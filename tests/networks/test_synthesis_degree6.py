@@ -12,6 +12,9 @@ some of which need a second extension, must succeed.
 
 from __future__ import annotations
 
+import functools
+import itertools
+
 import pytest
 import sympy as sp
 from hypothesis import HealthCheck, assume, event, given, settings
@@ -358,37 +361,66 @@ _NEEDS_32 = (8064000 * p**6 + 40415760 * p**5 + 1683900 * p**4 + 4778334 * p**3 
 )
 
 
+@functools.lru_cache(maxsize=4096)
+def _n60(value):
+    """SymPy's 60-digit value of an exact element value (once per value: the large ones take a second)."""
+    return sp.N(value, 60)
+
+
 def _impedance_at(net, s):
     """The network's impedance at the complex point ``s`` from SymPy's 60-digit values of the exact elements."""
     if isinstance(net, Resistor):
-        return sp.N(net.R, 60)
+        return _n60(net.R)
     if isinstance(net, Inductor):
-        return s * sp.N(net.L, 60)
+        return s * _n60(net.L)
     if isinstance(net, Capacitor):
-        return 1 / (s * sp.N(net.C, 60))
+        return 1 / (s * _n60(net.C))
     if isinstance(net, Series):
         return sum(_impedance_at(part, s) for part in net.parts)
     if isinstance(net, Parallel):
         return 1 / sum(1 / _impedance_at(part, s) for part in net.parts)
-    Lp, Ls, M, Cc = (sp.N(v, 60) for v in (net.Lp, net.Ls, net.M, net.C))
+    Lp, Ls, M, Cc = (_n60(v) for v in (net.Lp, net.Ls, net.M, net.C))
     shunt, out = M * s + 1 / (Cc * s), (Ls - M) * s + _impedance_at(net.load, s)
     return (Lp - M) * s + shunt * out / (shunt + out)
 
 
-# one whose Bott–Duffin synthesis needs degree 50, above the default limit
-_NEEDS_50 = (224400 * p**6 + 570504 * p**5 + 136912 * p**4 + 252172 * p**3 + 18634 * p**2 + 17824 * p + 564) / (
-    39600 * p**6 + 183150 * p**5 + 226779 * p**4 + 48891 * p**3 + 23700 * p**2 + 2886 * p + 36
+# one whose Bott–Duffin synthesis needs a field of degree 64 (no. 177 of the benchmark's 300-target sample)
+_NEEDS_64 = (15309000 * p**6 + 1160325 * p**5 + 3383775 * p**4 + 147690 * p**3 + 82620 * p**2 + 1800 * p) / (
+    1224720 * p**6 + 3467610 * p**5 + 527094 * p**4 + 605907 * p**3 + 35925 * p**2 + 4860 * p + 100
+)
+# one whose Bott–Duffin synthesis needs degree 128, above the default limit, whichever minimum it takes (no. 261 of
+# the 300-target sample)
+_NEEDS_128 = (61600 * p**6 + 68360 * p**5 + 89224 * p**4 + 89748 * p**3 + 2766 * p**2 + 2772 * p) / (
+    2800 * p**6 + 72240 * p**5 + 71500 * p**4 + 15648 * p**3 + 13171 * p**2 + 342 * p + 264
+)
+# one whose Bott–Duffin synthesis needs degree 128 through the minimum it tries first and 32 through the
+# other (no. 78 of the sample)
+_OTHER_MINIMUM = (854700 * p**5 + 654003 * p**4 + 1344010 * p**3 + 340356 * p**2 + 83240 * p + 8880) / (
+    173250 * p**5 + 212205 * p**4 + 222375 * p**3 + 192660 * p**2 + 36150 * p + 1800
 )
 
 
+def _tower_degrees(values) -> list[int]:
+    """Degrees of the distinct ``CRootOf`` polynomials in the values, ascending; checked to form one tower (each
+    degree a proper divisor of the next: one field per level, as ``in_levels_all`` writes them)."""
+    degrees = sorted(poly.degree() for poly in {a.poly for a in _algebraic_atoms(values) if isinstance(a, sp.CRootOf)})
+    assert all(high % low == 0 and high > low for low, high in itertools.pairwise(degrees))
+    return degrees
+
+
 def test_degree_32_field_under_the_default_limit():
-    """Refused by ``max_degree=24`` (naming the degree it needs); under the default limit (40 with python-flint)
+    """Refused by ``max_degree=24`` (naming the degree it needs); under the default limit (64 with python-flint)
     the network's values are positive and its impedance, from SymPy's own 60-digit evaluation of the exact values,
-    is the target's at three points to 45 digits (exact cancellation is checked on the smaller fields above)."""
+    is the target's at three points to 45 digits (exact cancellation is checked on the smaller fields above).
+    All values lie in one tower of fields (written level by level above degree 24: one ``CRootOf`` per level, of
+    distinct degrees, each dividing the next, 32 at the top): the second remainder of each Bott–Duffin cycle is
+    the dual of the first, built in its field (synthesised separately, the branches used five fields, two of them
+    of degree 32)."""
     with pytest.raises(ModelError, match=r"degree 32 > 24"):
         bott_duffin_synthesis(_NEEDS_32, p, max_degree=24)
     net = bott_duffin_synthesis(_NEEDS_32, p)
-    assert all(sp.N(v, 30) > 0 for v in _values(net))
+    assert all(_n60(v) > 0 for v in _values(net))
+    assert _tower_degrees(_values(net))[-1] == 32
     for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
         target = sp.N(_NEEDS_32.subs(p, s), 60)
         assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
@@ -421,7 +453,7 @@ def _check_exact_or_to_45_digits(net, Z):
     if len(atoms) <= 1 and all(a.poly.degree() <= 12 for a in atoms if isinstance(a, sp.CRootOf)):
         _check_exact(net, Z)
         return
-    assert all(sp.N(v, 30) > 0 for v in values)
+    assert all(_n60(v) > 0 for v in values)
     for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
         target = sp.N(Z.subs(p, s), 60)
         assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
@@ -431,7 +463,7 @@ def _check_exact_or_to_45_digits(net, Z):
 def test_random_degree_6_targets_are_exact_under_the_default_limit(state):
     """30 random degree-6 R-L-C impedances: Brune and Bott–Duffin both give networks of positive elements equal to
     the target.  Bott–Duffin needs fields of degree 32-36 for three of them (refused by ``max_degree=24``, the
-    earlier default); the default limit is 40 with python-flint, which the dev extra installs."""
+    earlier default); the default limit is 64 with python-flint, which the dev extra installs."""
     Z = _random_degree_6(state)
     for synth in (brune_synthesis, bott_duffin_synthesis):
         _check_exact_or_to_45_digits(synth(Z, p), Z)
@@ -450,9 +482,38 @@ def test_conjugate_axis_poles_over_an_algebraic_field_are_realised():
 
 
 def test_default_limit_refusal_names_the_degree_and_the_keyword():
-    """Beyond the default limit (40 with python-flint): ModelError with the degree needed and ``max_degree=``."""
-    with pytest.raises(ModelError, match=r"degree 50 > 40 .*max_degree=50"):
-        bott_duffin_synthesis(_NEEDS_50, p)
+    """Beyond the default limit (64 with python-flint): ModelError with the degree needed and ``max_degree=``."""
+    with pytest.raises(ModelError, match=r"degree 128 > 64 .*max_degree=128"):
+        bott_duffin_synthesis(_NEEDS_128, p)
+
+
+def test_the_other_minimum_when_the_first_needs_too_large_a_field():
+    """When the minimum (of ``Re Z`` or ``Re 1/Z``) in the smaller field leads to a field above the limit, the step
+    is undone and the other minimum taken (both keep the remainder positive real, Bulgakov (1954), §9.23,
+    Theorem III): this target was refused (degree 128 > 64) and is now realised exactly: positive values, the
+    impedance from SymPy's 60-digit values equal to the target's at three points to 45 digits."""
+    net = bott_duffin_synthesis(_OTHER_MINIMUM, p)
+    values = _values(net)
+    assert _tower_degrees(values) == [8, 32]
+    assert all(_n60(v) > 0 for v in values)
+    for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
+        target = sp.N(_OTHER_MINIMUM.subs(p, s), 60)
+        assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
+
+
+def test_degree_64_field_under_the_default_limit():
+    """Refused by ``max_degree=40``, the earlier default, which names the degree 64 it needs; under the default the
+    values lie in one tower topped by a field of degree 64, written level by level, all positive, and the
+    impedance from SymPy's 60-digit evaluation of the exact values is the target's at three points to 45 digits."""
+    with pytest.raises(ModelError, match=r"degree 64 > 40"):
+        bott_duffin_synthesis(_NEEDS_64, p, max_degree=40)
+    net = bott_duffin_synthesis(_NEEDS_64, p)
+    values = _values(net)
+    assert _tower_degrees(values)[-1] == 64
+    assert all(_n60(v) > 0 for v in values)
+    for s in (sp.Rational(1, 3) + sp.I, 2 + sp.I / 5, sp.Rational(7, 10)):
+        target = sp.N(_NEEDS_64.subs(p, s), 60)
+        assert abs(sp.N(_impedance_at(net, s) - target, 60)) < 1e-45 * abs(target)
 
 
 def test_max_degree_bounds_the_first_extension_too():
@@ -498,5 +559,5 @@ def test_axis_poles_with_algebraic_coefficients():
         net = synth(Z, p)
         values = _values(net)
         assert any(v.has(r2) for v in values)
-        assert all(sp.N(v, 30) > 0 for v in values)
+        assert all(_n60(v) > 0 for v in values)
         assert sp.simplify(sp.radsimp(sp.cancel(net.impedance(p) - Z))) == 0
