@@ -41,8 +41,8 @@ _DIGITS = 40
 #: largest degree over QQ of the number field holding one network's element values (without python-flint)
 MAX_FIELD_DEGREE = 8
 #: the same with python-flint installed (tower fields: random degree-6 targets needing degree 32–40 take seconds, the
-#: Bott–Duffin ones needing 64 half a minute to two and a half minutes; the targets of the benchmark's samples refused
-#: at 64 need 120, 128 or, past 50, 300: beyond any practical limit)
+#: Bott–Duffin ones needing 64 half a minute to three minutes; the targets of the benchmark's 300-target sample
+#: refused at 64 need 128 or 200 whichever minimum is taken: beyond any practical limit)
 MAX_FIELD_DEGREE_FLINT = 64
 NESTED = (
     "the exact element values would need algebraic numbers of degree {degree} > {limit} over the rationals (a root "

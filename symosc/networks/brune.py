@@ -58,8 +58,9 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) 
     ModelError
         When the exact element values would need a number field of degree above ``max_degree`` over the
         rationals (whichever of the minima of ``Re Z`` and ``Re 1/Z`` a step subtracts: when the one in the
-        smaller field leads above the limit, the step is undone and the other one taken); element values are exact numbers: rationals, square roots, polynomials in a ``CRootOf``
-        number (in fields of degree above 24, polynomials in one ``CRootOf`` per level of the field tower).
+        smaller field leads above the limit, the step is undone and the other one taken).  Element values are
+        exact numbers: rationals, square roots, polynomials in a ``CRootOf`` number (in fields of degree above 24,
+        polynomials in one ``CRootOf`` per level of the field tower).
 
     Examples
     --------
