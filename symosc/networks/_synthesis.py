@@ -438,7 +438,10 @@ class Engine:
             found.append((ex.field_degree(m[2]), not is_z, (*m, is_z)))
         if not found:
             raise refusal
-        return [c[2] for c in sorted(found, key=lambda c: c[:2])]
+        found.sort(key=lambda c: c[:2])
+        if all(not c[2][0] for c in found):  # Re Z and Re Y vanish together: one cycle, in the smaller field
+            found = found[:1]
+        return [c[2] for c in found]
 
     def _remove_constant(self, R, x0, K, N: list, D: list, mode: str, depth: int) -> OnePort:
         """``Z = R + Z1`` (series resistor) or ``Y = G + Y1`` (shunt resistor ``1/G``)."""
