@@ -48,7 +48,7 @@ def exact_polys(N: sp.Poly, D: sp.Poly) -> tuple[list, list, Any]:
     if K.is_ZZ:
         K, elems = QQ, [QQ.convert_from(c, K) for c in elems]
     if not (K.is_QQ or K.is_AlgebraicField):
-        raise ParameterError(f"Z must have rational or algebraic coefficients for exact synthesis, got domain {K}")
+        raise ParameterError(f"Z must have rational or algebraic coefficients for exact arithmetic, got domain {K}")
     n = len(N.all_coeffs())
     N_, D_ = ex.normalize(elems[:n], elems[n:], K)
     return N_, D_, K
@@ -315,23 +315,20 @@ class _Values:
         return out
 
     def finish(self, net: OnePort | None) -> OnePort | None:
-        """``net`` with its placeholders replaced by exact numbers: in the field above all others of one tower
-        (one ``CRootOf`` for all values; the procedures extend one tower, Bott–Duffin's second branch being the
-        dual of its first), else in each value's own field."""
+        """``net`` with its placeholders replaced by exact numbers, all written in the field above all others (the
+        procedures extend one tower; Bott–Duffin's second branch is the dual of its first): one ``CRootOf`` for
+        all values, or one per level of the tower above degree 24."""
         fields = {id(K): K for _, K in self.pending.values()}.values()
         top = max(fields, key=ex.field_degree, default=None)
         below = set(map(id, _tower.levels(top)))
-        common = all(id(K) in below for K in fields)
-        by_field: dict = {}
-        for d, (c, K) in self.pending.items():
-            if common and K != top:
-                c, K = top.convert(c), top
-            by_field.setdefault(id(K), (K, []))[1].append((d, c))
-        subs = {}
-        for K, items in by_field.values():
-            exact = _tower.in_sympy_all([c for _, c in items], K) if isinstance(K, TowerField) else None
-            for i, (d, c) in enumerate(items):
-                subs[d] = _clean(exact[i] if exact is not None else ex.sym(c, K))
+        if not all(id(K) in below for K in fields):  # pragma: no cover - one tower by construction
+            raise ModelError("synthesis values in fields of different towers")
+        items = [(d, c if K == top else top.convert(c)) for d, (c, K) in self.pending.items()]
+        if isinstance(top, TowerField):
+            exact = _tower.in_sympy_all([c for _, c in items], top)
+        else:
+            exact = [ex.sym(c, top) for _, c in items]
+        subs = {d: _clean(v) for (d, _), v in zip(items, exact, strict=True)}
         if net is None:
             return None
         with values_checked():  # each sign was decided exactly when the value was made

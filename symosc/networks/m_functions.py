@@ -25,12 +25,11 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
-from sympy.polys.constructor import construct_domain
 
 from .._validate import check_int
 from ..errors import ConvergenceError, ParameterError
 from ..operational._rational import exactify
-from ._synthesis import _clean
+from ._synthesis import _clean, exact_polys
 from ._util import P, as_expr, as_symbol, rational_function, synthesis_target
 from .oneports import BruneSection, Capacitor, Impedance, Inductor, OnePort, Parallel, Resistor, Series
 from .positive_real import is_positive_real, positive_real_report, require_positive_real
@@ -152,7 +151,7 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     """
     p = as_symbol(p)
     N, D = rational_function(exactify(Z), p)
-    _require_algebraic(N.all_coeffs() + D.all_coeffs(), N.as_expr() / D.as_expr())
+    exact_polys(N, D)  # ParameterError unless the coefficients are rational or algebraic
     require_positive_real(N.as_expr() / D.as_expr(), p)
     if N.degree() <= 0 and D.degree() <= 0:
         return sp.oo
@@ -199,15 +198,6 @@ def _ordered_candidates(N: sp.Poly, D: sp.Poly, p: sp.Symbol) -> list:
     factors = {f.monic() for P_ in polys if not P_.is_zero and P_.degree() > 0 for f, _ in P_.factor_list()[1]}
     roots = [(c, _value(c)) for f in factors for c in f.real_roots() if c.is_positive]
     return sorted(roots, key=lambda rv: rv[1])
-
-
-def _require_algebraic(coeffs: list, Z: sp.Expr) -> None:
-    try:
-        K, _ = construct_domain(coeffs, extension=True)
-    except (sp.PolynomialError, NotImplementedError, ValueError):  # pragma: no cover - SymPy's own refusals
-        K = None
-    if K is None or not (K.is_ZZ or K.is_QQ or K.is_AlgebraicField):
-        raise ParameterError(f"m_abscissa needs rational or algebraic coefficients, got {Z}")
 
 
 def _rational_multiple(P_: sp.Poly, r: sp.Symbol) -> sp.Poly:
