@@ -6,7 +6,7 @@ Run ``python benchmarks/networks_vs_peers.py``.  Three tasks, each timed in one 
    1001 frequencies (scikit-rf ``a2z``) against symosc's symbolic conversion compiled once with lambdify;
 2. cascades: chain matrix of n identical L-C sections, symbolic (lcapy ``chain``) and closed form
    (``chain_power``), and numerically at 1001 frequencies (scikit-rf ``cascade`` of ABCD via ``a2s``/``s2a``);
-3. ladder impedance: input impedance of an n-element L-C ladder (lcapy ``Z`` of nested Series/Par).
+3. ladder impedance: input impedance of an n-element L-C ladder (n = 12, 40) (lcapy ``Z`` of nested Series/Par).
 
 Agreement is reported as the largest relative difference.  lcapy and scikit-rf are benchmark-only dependencies.
 """
@@ -125,28 +125,28 @@ def main() -> None:
         (f"numeric cascade {m} sections x 1001 freqs (ABCD power)", t1, "scikit-rf", t2, max(agree, agree_ours))
     )
 
-    # 3. ladder input impedance, 12 elements
-    k = 12
+    # 3. ladder input impedance, 12 and 40 elements
+    for k in (12, 40):
 
-    def ours_ladder():
-        net = None
-        for i in reversed(range(k)):
-            e = Inductor(i + 1) if i % 2 == 0 else Capacitor(i + 1)
-            net = e if net is None else ((e + net) if i % 2 == 0 else (e | net))
-        return net.impedance(p)
+        def ours_ladder(k=k):
+            net = None
+            for i in reversed(range(k)):
+                e = Inductor(i + 1) if i % 2 == 0 else Capacitor(i + 1)
+                net = e if net is None else ((e + net) if i % 2 == 0 else (e | net))
+            return net.impedance(p)
 
-    def lcapy_ladder():
-        net = None
-        for i in reversed(range(k)):
-            e = lcapy.L(i + 1) if i % 2 == 0 else lcapy.C(i + 1)
-            net = e if net is None else ((e + net) if i % 2 == 0 else (e | net))
-        return net.Z
+        def lcapy_ladder(k=k):
+            net = None
+            for i in reversed(range(k)):
+                e = lcapy.L(i + 1) if i % 2 == 0 else lcapy.C(i + 1)
+                net = e if net is None else ((e + net) if i % 2 == 0 else (e | net))
+            return net.Z
 
-    t1, Z1 = timed(ours_ladder, repeat=1)
-    t2, Z2 = timed(lcapy_ladder, repeat=1)
-    Z2s = sp.sympify(str(Z2)).subs(sp.Symbol("s"), p)
-    agree = abs(complex((Z1 - Z2s).subs(p, 0.3 + 1.1j))) / abs(complex(Z2s.subs(p, 0.3 + 1.1j)))
-    rows.append((f"ladder impedance, {k} elements", t1, "lcapy", t2, agree))
+        t1, Z1 = timed(ours_ladder, repeat=1)
+        t2, Z2 = timed(lcapy_ladder, repeat=1)
+        Z2s = sp.sympify(str(Z2)).subs(sp.Symbol("s"), p)
+        agree = abs(complex((Z1 - Z2s).subs(p, 0.3 + 1.1j))) / abs(complex(Z2s.subs(p, 0.3 + 1.1j)))
+        rows.append((f"ladder impedance, {k} elements", t1, "lcapy", t2, agree))
 
     print(f"{'task':58s} | {'symosc [s]':>10s} | {'peer':9s} | {'peer [s]':>9s} | {'peer/symosc':>11s} | agreement")
     for task, a, peer, b, agree in rows:

@@ -13,10 +13,16 @@ R(1) + (L(2) | C(3))
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
 import sympy as sp
+from sympy import QQ
+from sympy.polys.densearith import dup_add, dup_mul, dup_quo_ground
+from sympy.polys.densebasic import dup_strip
+from sympy.polys.euclidtools import dup_inner_gcd
+from sympy.polys.rings import PolyRing
 
 from ..errors import ParameterError
 from ._util import P, as_expr, as_symbol, element_value
@@ -213,7 +219,8 @@ class Series(OnePort):
             raise ParameterError("Series needs at least one part")
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
-        return sp.cancel(sp.Add(*(part.impedance(p) for part in self.parts)))
+        fast = _rational_impedance(self, p)
+        return fast if fast is not None else sp.cancel(sp.Add(*(part.impedance(p) for part in self.parts)))
 
     def elements(self) -> tuple:
         return tuple(e for part in self.parts for e in part.elements())
@@ -234,13 +241,82 @@ class Parallel(OnePort):
             raise ParameterError("Parallel needs at least one part")
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
-        return sp.cancel(1 / sp.Add(*(1 / part.impedance(p) for part in self.parts)))
+        fast = _rational_impedance(self, p)
+        return fast if fast is not None else sp.cancel(1 / sp.Add(*(1 / part.impedance(p) for part in self.parts)))
 
     def elements(self) -> tuple:
         return tuple(e for part in self.parts for e in part.elements())
 
     def _sympystr(self, printer: Any) -> str:
         return " | ".join(_wrap(part, Series) for part in self.parts)
+
+
+def _rational_impedance(net: OnePort, p: sp.Symbol) -> sp.Expr | None:
+    """The impedance of a network whose element values are all rational numbers, by exact polynomial arithmetic
+    over QQ (one numerator/denominator pair per subnetwork, one gcd per connection) and a single ``cancel`` at the
+    end; None when a value is not rational (symbols, radicals, ``CRootOf``: SymPy's ``cancel`` level by level)."""
+    p = as_symbol(p)
+    try:
+        N, D = _pair(net)
+    except _NotRational:
+        return None
+    if not N:
+        return sp.S.Zero
+    R = _ring(p)
+    top, bottom = R.from_list(N).cancel(R.from_list(D))  # SymPy's cancel(), whose normal form this returns
+    return top.as_expr() / bottom.as_expr()
+
+
+@functools.lru_cache(maxsize=8)
+def _ring(p: sp.Symbol) -> PolyRing:
+    return PolyRing([p], QQ)
+
+
+class _NotRational(Exception):
+    pass
+
+
+def _q(value: sp.Expr):
+    if not value.is_Rational:
+        raise _NotRational
+    return QQ.from_sympy(value)
+
+
+def _pair(net: OnePort) -> tuple[list, list]:
+    """``(N, D)``: coprime dense coefficient lists over QQ (highest power of ``p`` first) with ``Z = N/D``."""
+    one = [QQ.one]
+    if isinstance(net, Resistor):
+        return dup_strip([_q(net.R)]), one
+    if isinstance(net, Inductor):
+        return [_q(net.L), QQ.zero], one
+    if isinstance(net, Capacitor):
+        return one, [_q(net.C), QQ.zero]
+    if isinstance(net, Series | Parallel):
+        pairs = [_pair(part) for part in net.parts]
+        if isinstance(net, Parallel):  # admittances add
+            pairs = [(D, N) for N, D in pairs]
+        top, bottom = pairs[0]
+        for n, d in pairs[1:]:
+            top, bottom = _reduced(dup_add(dup_mul(top, d, QQ), dup_mul(n, bottom, QQ), QQ), dup_mul(bottom, d, QQ))
+        return (bottom, top) if isinstance(net, Parallel) else (top, bottom)
+    if isinstance(net, BruneSection):
+        Lp, Ls, M, C = (_q(v) for v in (net.Lp, net.Ls, net.M, net.C))
+        n_load, d_load = _pair(net.load)
+        s_top, s_bottom = [M * C, QQ.zero, QQ.one], [C, QQ.zero]  # shunt M p + 1/(C p)
+        o_top = dup_add(dup_mul([Ls - M, QQ.zero], d_load, QQ), n_load, QQ)  # output arm (Ls - M) p + Z_load
+        bottom = dup_add(dup_mul(s_top, d_load, QQ), dup_mul(o_top, s_bottom, QQ), QQ)
+        top = dup_add(dup_mul([Lp - M, QQ.zero], bottom, QQ), dup_mul(s_top, o_top, QQ), QQ)
+        return _reduced(top, bottom)
+    raise _NotRational  # a generic Impedance
+
+
+def _reduced(top: list, bottom: list) -> tuple[list, list]:
+    """``top/bottom`` in lowest terms with a monic denominator."""
+    if not top:
+        return [], [QQ.one]
+    _, top, bottom = dup_inner_gcd(top, bottom, QQ)
+    lc = bottom[0]
+    return dup_quo_ground(top, lc, QQ), dup_quo_ground(bottom, lc, QQ)
 
 
 def _wrap(part: OnePort, cls: type) -> str:
@@ -271,6 +347,9 @@ class BruneSection(OnePort):
         _check_port(self.load)
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
+        fast = _rational_impedance(self, p)
+        if fast is not None:
+            return fast
         p = as_symbol(p)
         shunt = self.M * p + 1 / (self.C * p)
         out = (self.Ls - self.M) * p + self.load.impedance(p)

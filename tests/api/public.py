@@ -61,28 +61,37 @@ def _collect(value: Any, classes: tuple[type, ...], found: dict[type, Any], dept
         _collect(v, classes, found, depth + 1)
 
 
-def _returns(obj: Any, cls: type) -> bool:
-    """Whether ``obj`` (function or method) is annotated to return ``cls`` (alone or inside a container)."""
+def _return_text(obj: Any) -> str:
+    """The return annotation of ``obj`` (function or method) as text ("" when it has none)."""
     try:
         ann = inspect.signature(obj).return_annotation
     except (TypeError, ValueError):
-        return False
-    text = ann if isinstance(ann, str) else getattr(ann, "__name__", str(ann))
-    return re.search(rf"\b{cls.__name__}\b", str(text)) is not None
+        return ""
+    return str(ann if isinstance(ann, str) else getattr(ann, "__name__", str(ann)))
+
+
+@cache
+def _annotated_callables() -> tuple[tuple[str, Any, str], ...]:
+    """``(qualified name, callable or property, return annotation text)`` for every public function and every
+    method or property of a public class (read once: ``inspect.signature`` over the whole API takes seconds)."""
+    out = []
+    for modname, name, obj in public_objects():
+        if inspect.isfunction(obj):
+            out.append((f"{modname}.{name}", obj, _return_text(obj)))
+        elif inspect.isclass(obj):
+            for mname, meth in vars(obj).items():
+                if inspect.isfunction(meth) or isinstance(meth, property):
+                    text = _return_text(meth.fget if isinstance(meth, property) else meth)
+                    out.append((f"{modname}.{name}.{mname}", meth, text))
+    return tuple(out)
 
 
 def _producers(cls: type) -> list[tuple[str, Any]]:
-    """Where the documentation builds ``cls``: the class itself, then public callables annotated to return it."""
+    """Where the documentation builds ``cls``: the class itself, then public callables annotated to return it
+    (alone or inside a container)."""
+    pattern = re.compile(rf"\b{cls.__name__}\b")
     out: list[tuple[str, Any]] = [(f"{cls.__module__}.{cls.__qualname__}", cls)]
-    for modname, name, obj in public_objects():
-        if inspect.isfunction(obj) and _returns(obj, cls):
-            out.append((f"{modname}.{name}", obj))
-        elif inspect.isclass(obj):
-            for mname, meth in vars(obj).items():
-                if (inspect.isfunction(meth) or isinstance(meth, property)) and _returns(
-                    meth.fget if isinstance(meth, property) else meth, cls
-                ):
-                    out.append((f"{modname}.{name}.{mname}", meth))
+    out += [(qualname, obj) for qualname, obj, text in _annotated_callables() if pattern.search(text)]
     return out
 
 

@@ -340,3 +340,34 @@ def test_boundary_problem_iterative_form():
         chain = cascade(*[sec.subs(p, sp.I * omega)] * 5)
         iy = complex(sp.N(terminated_response(chain, E, Zr, ZH).Iy))
         assert abs(iy - complex(iy_book)) < 1e-12 * abs(iy)
+
+
+@pytest.mark.parametrize(
+    "arms",
+    [
+        [(p, 1 / p)] * 8,  # L-C half-sections: polynomial entries
+        [(sp.Symbol("R", positive=True) + sp.Symbol("L", positive=True) * p, 1 / (sp.Symbol("C", positive=True) * p))]
+        * 3,  # symbolic values: a polynomial ring in p, R, L, C
+        [(1 / (3 * p), 2 * p + 1), (sp.Rational(1, 2) * p, 1 / (p + 4)), (5, 1 / (7 * p))],  # rational functions
+        [(sp.sqrt(2) * p, 1 / (sp.sqrt(3) * p)), (p + sp.pi, 1 / p)],  # radicals and pi: SymPy's expressions
+    ],
+    ids=["lc", "symbolic", "rational", "radicals"],
+)
+def test_cascade_chain_is_the_product_in_lowest_terms(arms):
+    """The cascade's chain matrix (Bulgakov (1954), eq. (8.270)) equals the product of the sections' chain matrices
+    evaluated one by one at a complex point in 40-digit mpmath, and every entry is in SymPy's ``cancel`` form."""
+    sections = [cascade(series_element(z), shunt_element(y)) for z, y in arms]
+    A = cascade(*sections).chain
+    assert all(sp.cancel(a) == a for a in A)
+    values = {s: sp.Rational(3, 2) + k for k, s in enumerate(sorted(A.free_symbols - {p}, key=str))}
+    at = sp.Rational(3, 10) + sp.Rational(17, 10) * sp.I
+    with mpmath.workdps(40):
+        product = mpmath.eye(2)
+        for sec in sections:
+            product = product * mpmath.matrix(
+                [[sp.N(e.subs(values).subs(p, at), 50) for e in row] for row in sec.chain.tolist()]
+            )
+        for i in range(2):
+            for j in range(2):
+                got = mpmath.mpmathify(sp.N(A[i, j].subs(values).subs(p, at), 50))
+                assert abs(got - product[i, j]) <= mpmath.mpf(10) ** -35 * (1 + abs(product[i, j]))
