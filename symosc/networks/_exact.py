@@ -296,14 +296,25 @@ def _reduce(f: list, K, q: int, roots: list):
 
 
 def even_value(N: list, D: list, x0, K):
-    """Value of the even part of ``N/D`` at ``p² = -x0`` (in ``K``, no square root of ``x0`` needed)."""
-    Dm, Nm = reflect(D, K), reflect(N, K)
-    top = in_x(dup_add(dup_mul(N, Dm, K), dup_mul(Nm, D, K), K), K)
-    bottom = in_x(dup_mul_ground(dup_mul(D, Dm, K), K(2), K), K)
-    den = dup_eval(bottom, x0, K)
+    """Value of the even part of ``N/D`` at ``p² = -x0`` (in ``K``, no square root of ``x0`` needed).
+
+    With ``N = Ne(y) + p No(y)`` and ``D = De(y) + p Do(y)`` (``y = p²``) the even part is
+    ``(Ne De - y No Do)/(De² - y Do²)``: four evaluations at ``y = -x0`` and a handful of products, instead of
+    the products of the polynomials themselves."""
+    y0 = K.neg(x0)
+    (ne, no), (de, do) = ([dup_eval(g, y0, K) for g in _even_odd(f)] for f in (N, D))
+    den = K.sub(K.mul(de, de), K.mul(y0, K.mul(do, do)))
     if not den:
         raise ModelError("synthesis step evaluated a function at one of its poles")  # pragma: no cover
-    return K.quo(dup_eval(top, x0, K), den)
+    return K.quo(K.sub(K.mul(ne, de), K.mul(y0, K.mul(no, do))), den)
+
+
+def _even_odd(f: list) -> tuple[list, list]:
+    """``(fe, fo)`` with ``f(p) = fe(p²) + p fo(p²)`` (dense lists, highest power first)."""
+    n = len(f) - 1
+    even = [c for i, c in enumerate(f) if (n - i) % 2 == 0]
+    odd = [c for i, c in enumerate(f) if (n - i) % 2 == 1]
+    return dup_strip(even), dup_strip(odd)
 
 
 def real_part_x(N: list, D: list, K) -> tuple[list, list]:

@@ -182,6 +182,22 @@ def test_random_realisable_transfers_are_realised_exactly(X):
     assert all(sp.N(v) > 0 for v in element_values(link.Za) + element_values(link.Zb))
 
 
+def test_max_gain_with_a_double_critical_point():
+    """A transfer drawn by the test above whose ``d|X(iω)|²/dω²`` numerator has a double root: mpmath's
+    ``polyroots`` (SymPy's ``nroots``) did not converge on it and ``correcting_link`` failed; the critical points
+    are now isolated exactly.  ``max_gain`` equals the maximum of ``|X(iω)|`` on a dense logarithmic grid (to the
+    grid's resolution, never above it by more than rounding) and the lattice reproduces ``X``."""
+    import numpy as np
+
+    X = (-10 * p**2 + 10 * p) / (13 * p**2 + 104 * p + 91)
+    link = correcting_link(X, W=1)
+    check_lattice(link, X, 1)
+    w = np.logspace(-4, 6, 200001)
+    s = 1j * w
+    grid = np.max(np.abs((-10 * s**2 + 10 * s) / (13 * s**2 + 104 * s + 91)))
+    assert grid - 1e-12 <= link.max_gain <= grid + 1e-6
+
+
 CONVERTIBLE = [
     ("attenuator", {"k": 3}),
     ("lead", {"T1": 2, "T2": 1}),

@@ -10,7 +10,7 @@ import mpmath
 import pytest
 import sympy as sp
 from sympy import QQ
-from sympy.polys.densearith import dup_mul, dup_sub
+from sympy.polys.densearith import dup_add, dup_mul, dup_sub
 from sympy.polys.densebasic import dup_strip
 
 from symosc.networks import _exact as ex
@@ -364,3 +364,25 @@ def test_level_by_level_values_are_exact(tower, cubic_top):
             exact = ex.num(a, L3, 60)
             assert abs(mpmath.mpf(str(sp.N(value, 60))) - exact) < mpmath.mpf(10) ** -50 * (1 + abs(exact))
             assert abs(mpmath.mpf(str(sp.N(other, 60))) - exact) < mpmath.mpf(10) ** -50 * (1 + abs(exact))
+
+
+def test_even_part_value_agrees_with_sympy_fields(tower):
+    """``even_value(N, D, x0)`` (the even part of ``N/D`` at ``p² = -x0``, from the even and odd parts of ``N`` and
+    ``D``) equals ``(N(p) D(-p) + N(-p) D(p)) / (2 D(p) D(-p))`` from the full polynomial products, written in
+    ``x = -p²`` and evaluated at ``x0`` in SymPy's own field (its own primitive element and arithmetic); random
+    polynomials of degrees 0-6 over the degree-8 tower."""
+    _, _, L2, _, _, M = tower
+    rng = random.Random(5)
+    for _ in range(12):
+        N = dup_strip([_random_element(L2, rng) for _ in range(rng.randint(1, 7))])
+        D = dup_strip([_random_element(L2, rng) for _ in range(rng.randint(1, 7))])
+        x0 = _random_element(L2, rng)
+        if not N or not D:
+            continue
+        Nm, Dm = ([_image(c, L2, M) for c in f] for f in (N, D))
+        reflected = [ex.reflect(f, M) for f in (Nm, Dm)]
+        top = ex.in_x(dup_add(dup_mul(Nm, reflected[1], M), dup_mul(reflected[0], Dm, M), M), M)
+        bottom = ex.in_x(dup_mul(Dm, reflected[1], M), M)
+        x0m = _image(x0, L2, M)
+        expected = M.quo(ex.dup_eval(top, x0m, M), M.mul(M(2), ex.dup_eval(bottom, x0m, M)))
+        assert _image(ex.even_value(N, D, x0, L2), L2, M) == expected
