@@ -141,7 +141,7 @@ def reflect(f: list, K) -> list:
 
 
 def even_in_y(f: list, K) -> list:
-    """An even polynomial in ``p`` as a polynomial in ``y = p**2``."""
+    """The even part of a polynomial in ``p`` (all of it when ``f`` is even) as a polynomial in ``y = p**2``."""
     n = len(f) - 1
     return dup_strip([c for i, c in enumerate(f) if (n - i) % 2 == 0]) if f else []
 
@@ -302,19 +302,12 @@ def even_value(N: list, D: list, x0, K):
     ``(Ne De - y No Do)/(De² - y Do²)``: four evaluations at ``y = -x0`` and a handful of products, instead of
     the products of the polynomials themselves."""
     y0 = K.neg(x0)
-    (ne, no), (de, do) = ([dup_eval(g, y0, K) for g in _even_odd(f)] for f in (N, D))
+    # the even part of f is even_in_y(f); its odd part, f(p) - fe(p²) = p fo(p²), is even_in_y(f / p) (f[:-1])
+    (ne, no), (de, do) = ([dup_eval(even_in_y(g, K), y0, K) for g in (f, f[:-1])] for f in (N, D))
     den = K.sub(K.mul(de, de), K.mul(y0, K.mul(do, do)))
     if not den:
         raise ModelError("synthesis step evaluated a function at one of its poles")  # pragma: no cover
     return K.quo(K.sub(K.mul(ne, de), K.mul(y0, K.mul(no, do))), den)
-
-
-def _even_odd(f: list) -> tuple[list, list]:
-    """``(fe, fo)`` with ``f(p) = fe(p²) + p fo(p²)`` (dense lists, highest power first)."""
-    n = len(f) - 1
-    even = [c for i, c in enumerate(f) if (n - i) % 2 == 0]
-    odd = [c for i, c in enumerate(f) if (n - i) % 2 == 1]
-    return dup_strip(even), dup_strip(odd)
 
 
 def real_part_x(N: list, D: list, K) -> tuple[list, list]:

@@ -19,12 +19,12 @@ from typing import Any
 
 import sympy as sp
 from sympy import QQ
-from sympy.polys.densearith import dup_add, dup_mul, dup_quo_ground
+from sympy.polys.densearith import dup_add, dup_mul
 from sympy.polys.densebasic import dup_strip
-from sympy.polys.euclidtools import dup_inner_gcd
 from sympy.polys.rings import PolyRing
 
 from ..errors import ParameterError
+from ._exact import normalize
 from ._util import P, as_expr, as_symbol, element_value
 
 __all__ = [
@@ -297,7 +297,9 @@ def _pair(net: OnePort) -> tuple[list, list]:
             pairs = [(D, N) for N, D in pairs]
         top, bottom = pairs[0]
         for n, d in pairs[1:]:
-            top, bottom = _reduced(dup_add(dup_mul(top, d, QQ), dup_mul(n, bottom, QQ), QQ), dup_mul(bottom, d, QQ))
+            top, bottom = normalize(
+                dup_add(dup_mul(top, d, QQ), dup_mul(n, bottom, QQ), QQ), dup_mul(bottom, d, QQ), QQ
+            )
         return (bottom, top) if isinstance(net, Parallel) else (top, bottom)
     if isinstance(net, BruneSection):
         Lp, Ls, M, C = (_q(v) for v in (net.Lp, net.Ls, net.M, net.C))
@@ -306,17 +308,8 @@ def _pair(net: OnePort) -> tuple[list, list]:
         o_top = dup_add(dup_mul([Ls - M, QQ.zero], d_load, QQ), n_load, QQ)  # output arm (Ls - M) p + Z_load
         bottom = dup_add(dup_mul(s_top, d_load, QQ), dup_mul(o_top, s_bottom, QQ), QQ)
         top = dup_add(dup_mul([Lp - M, QQ.zero], bottom, QQ), dup_mul(s_top, o_top, QQ), QQ)
-        return _reduced(top, bottom)
+        return normalize(top, bottom, QQ)
     raise _NotRational  # a generic Impedance
-
-
-def _reduced(top: list, bottom: list) -> tuple[list, list]:
-    """``top/bottom`` in lowest terms with a monic denominator."""
-    if not top:
-        return [], [QQ.one]
-    _, top, bottom = dup_inner_gcd(top, bottom, QQ)
-    lc = bottom[0]
-    return dup_quo_ground(top, lc, QQ), dup_quo_ground(bottom, lc, QQ)
 
 
 def _wrap(part: OnePort, cls: type) -> str:
