@@ -28,6 +28,7 @@ from typing import Any
 import sympy as sp
 
 from .._validate import check_int
+from ._exact import Nested
 from ._synthesis import synthesize
 from ._util import P, synthesis_target
 from .oneports import OnePort
@@ -47,7 +48,7 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
         :func:`brune_synthesis` (default 64 with python-flint, 8 without; fields of degree 32–40 take seconds,
-        degree 64 up to a few minutes).
+        degree 64 up to a few minutes, degree 128 a quarter to half an hour).
 
     Returns
     -------
@@ -61,7 +62,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     ModelError
         When the exact element values would need a number field of degree above ``max_degree`` over the
         rationals, e.g. an irrational ``ω0`` of degree 6 followed by a Richards' ``k`` of degree 3 over it,
-        whichever of the minima of ``Re Z`` and ``Re 1/Z`` a step subtracts (as in :func:`brune_synthesis`).
+        whichever of the minima of ``Re Z`` and ``Re 1/Z`` a step subtracts (as in :func:`brune_synthesis`).  The
+        message names the degree needed and suggests :func:`brune_synthesis`, which needs no Richards' ``k``.
 
     Examples
     --------
@@ -80,4 +82,14 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     p, N, D = synthesis_target(Z, p)
     Z = N.as_expr() / D.as_expr()
     require_positive_real(Z, p)
-    return synthesize(Z, p, "bott_duffin", max_degree)
+    try:
+        return synthesize(Z, p, "bott_duffin", max_degree)
+    except Nested as exc:
+        raise Nested(f"{exc}. {_BRUNE_HINT}", exc.degree) from None
+
+
+#: the advice added to a refusal: Bott–Duffin's fields grow through Richards' ``k`` on top of each ``ω0``
+_BRUNE_HINT = (
+    "Bott–Duffin's values need Richards' k on top of each frequency ω0 of a minimum; brune_synthesis needs no k "
+    "(it uses unit-coupled coils instead) and so usually a much smaller field"
+)

@@ -525,9 +525,12 @@ def test_conjugate_axis_poles_over_an_algebraic_field_are_realised():
 
 
 def test_default_limit_refusal_names_the_degree_and_the_keyword():
-    """Beyond the default limit (64 with python-flint): ModelError with the degree needed and ``max_degree=``."""
-    with pytest.raises(ModelError, match=r"degree 128 > 64 .*max_degree=128"):
+    """Beyond the default limit (64 with python-flint): ModelError with the degree needed and ``max_degree=``, and
+    the advice to use Brune's procedure, which needs no Richards' ``k``; it does realise this target under the
+    default limit (positive values, impedance the target's)."""
+    with pytest.raises(ModelError, match=r"degree 128 > 64 .*max_degree=128.*brune_synthesis needs no k"):
         bott_duffin_synthesis(_NEEDS_128, p)
+    _check_exact_or_to_45_digits(brune_synthesis(_NEEDS_128, p), _NEEDS_128)
 
 
 def test_the_other_minimum_when_the_first_needs_too_large_a_field():

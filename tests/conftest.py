@@ -1,0 +1,16 @@
+"""Hypothesis profiles for the property tests.
+
+With ``CI`` set (the CI run and ``.ci/run``), every property test replays the same pseudo-random examples
+(``derandomize=True``, no example database): the result of a run depends on the code, not on the draw.  Without
+it (a developer's run) each run draws new examples, so the properties keep being explored; a failure prints the
+``@reproduce_failure`` blob that replays it.  No deadline: the tests never assert on wall-clock time.  A test's own
+``@settings`` (example counts, health checks) apply on top of either profile.
+"""
+
+import os
+
+from hypothesis import settings
+
+settings.register_profile("ci", derandomize=True, database=None, deadline=None, print_blob=True)
+settings.register_profile("explore", deadline=None, print_blob=True)
+settings.load_profile("ci" if os.environ.get("CI") else "explore")
