@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+import mpmath
 import sympy as sp
 
 from .._printing import SymPyPrintable
@@ -81,7 +82,14 @@ def _distinct_roots(delta: sp.Poly, floats: bool) -> list[tuple[sp.Expr, int]]:
     n = delta.degree()
     if floats:
         found = {}
-        for r in delta.nroots(n=17, maxsteps=200):
+        try:
+            roots = delta.nroots(n=17, maxsteps=200)
+        except mpmath.libmp.NoConvergence as exc:  # mpmath's polyroots need not converge on a multiple root
+            raise ModelError(
+                "the characteristic roots of the floating-point matrix did not converge (a multiple root): the modal "
+                "columns are ill-determined; give exact (Rational) entries or use spectral_decomposition"
+            ) from exc
+        for r in roots:
             found[r] = found.get(r, 0) + 1
     elif delta.free_symbols - set(delta.gens):
         found = sp.roots(delta, multiple=False)

@@ -489,6 +489,18 @@ def gcd(f: list, g: list, K) -> list:
     return dup_mul_ground(h, K.quo(K.one, dup_LC(h, K)), K)
 
 
+def squarefree_part(f: list, K) -> list:
+    """``f`` (over an algebraic or a tower field) without repeated factors: ``f / gcd(f, f')``, made monic, or ``f``
+    itself when the gcd is 1 (decided modulo a prime when it can be, by :func:`gcd`).  A degenerate minimum of
+    ``Re Z(iω)`` (a contact of order four or more) is a multiple root of the critical-point polynomial: its
+    numerical value is poor (a root of multiplicity ``m`` from ``d`` digits has about ``d/m``) and no norm of the
+    polynomial is squarefree, so the roots are located and extended on the squarefree part."""
+    g = gcd(f, dup_diff(f, 1, K), K)
+    if dup_degree(g) <= 0:
+        return f
+    return _tower.monic(exquo(f, g, K, "the squarefree part"), K)
+
+
 def max_field_degree() -> int:
     """Largest degree over QQ of a network's number field: the one given to :func:`field_degree_limit`, else
     :data:`MAX_FIELD_DEGREE`, or :data:`MAX_FIELD_DEGREE_FLINT` with python-flint (its characteristic polynomials,

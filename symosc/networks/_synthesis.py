@@ -142,6 +142,7 @@ def _minimum(N: list, D: list, K, allow_pole: bool = False, known: tuple = (), e
 def _interior_in_field(E: list, Q: list, crit: list, K, cands: list, known: tuple, extend: bool) -> None:
     """Over an algebraic field only critical points inside the field are exact; a lower interior minimum elsewhere
     is the limitation of one extension.  Numbers first: the field is factored only when the interior wins."""
+    crit = ex.squarefree_part(crit, K)
     interior = [(ex.eval_num(E, x, K) / ex.eval_num(Q, x, K), x) for x in _as_sympy(ex.numeric_positive_roots(crit, K))]
     if not interior:
         return
@@ -520,6 +521,7 @@ def _richards_k(P1: list, K):
         r = roots[0]
         K2 = ex.extension(r, "Richards' k with Z(k) = L k")
         return K2.from_sympy(r), K2
+    P1 = ex.squarefree_part(P1, K)
     positive = ex.numeric_positive_roots(P1, K)
     if not positive:  # pragma: no cover - guaranteed by Z(k)/k running from oo to 0
         raise ModelError("Bott–Duffin: Z(k) = L k has no positive root")

@@ -19,7 +19,7 @@ from .._printing import SymPyPrintable
 from .._validate import check_finite_array, check_int, check_positive
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
-from ._rational import check_expression, check_symbol
+from ._rational import check_expression, check_symbol, distinct_roots
 from .heaviside import heaviside_expand
 from .table import _Unsupported, carson_by_table
 
@@ -180,11 +180,13 @@ def _oscillation_rate(expr: sp.Expr, p: sp.Symbol) -> float:
                 continue
             try:
                 poly = sp.Poly(base, p)
-                if poly.degree() < 1 or poly.free_symbols - {p}:
-                    continue
-                roots = [complex(r) for r in poly.nroots(n=15, maxsteps=200)]
-            except (sp.PolynomialError, sp.polys.polyerrors.NoConvergence, TypeError, ValueError):
+            except sp.PolynomialError:
                 continue
+            if poly.degree() < 1 or poly.free_symbols - {p}:
+                continue
+            # squarefree and irreducible factors first: mpmath's polyroots (behind nroots) need not converge on a
+            # multiple root, and the rate of a resonant image such as 1/(p² + 4)³ (expanded) was lost
+            roots = [complex(r) for r, _ in distinct_roots(poly, numeric=True)]
             for r in roots:
                 if r.real > -1.0:
                     rate = max(rate, abs(r.imag))

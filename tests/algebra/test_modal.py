@@ -177,6 +177,9 @@ def test_modal_errors():
         pencil_modal_matrix(sp.Matrix([[1, 0], [0, 0]]), sp.Matrix([[1, 2], [3, 4]]))
     with pytest.raises(ModelError, match="closer than"):
         modal_matrix(sp.Matrix([[1.0, 1.0], [0.0, 1.0 + 1e-11]]))
+    # a triple root in floats: mpmath's polyroots does not converge on it (NoConvergence escaped before)
+    with pytest.raises(ModelError, match=r"did not converge .*give exact"):
+        modal_matrix(sp.Matrix([[1.5, 0.0, 0.0], [0.0, 1.5, 0.0], [0.0, 0.0, 1.5]]))
 
 
 # --- Luzin's triangular canonical form -------------------------------------------------------------------------------

@@ -320,3 +320,12 @@ def test_cascade_refuses_irreducible_cubics():
         correcting_cascade(1 / (p**3 + 2 * p**2 + 2 * p + 3), W=1)
     with pytest.raises(ParameterError, match="right half-plane"):
         correcting_cascade(1 / ((p - 1) * (p + 2) * (p + 3)), W=1)
+
+
+def test_multiple_poles_in_the_right_half_plane_are_named():
+    """A triple pole at p = 1 (mpmath's polyroots did not converge on it: NoConvergence instead of the refusal) and
+    a double pair on the imaginary axis: the refusal names the poles, with their multiplicity."""
+    with pytest.raises(ParameterError, match=r"right half-plane .*\[\(1\+0j\), \(1\+0j\), \(1\+0j\)\]"):
+        correcting_cascade(1 / (p - 1) ** 3, W=1)
+    with pytest.raises(ParameterError, match=r"right half-plane .*\[-1j, -1j, 1j, 1j\]"):
+        correcting_cascade((p + 1) / ((p**2 + 1) ** 2 * (p + 3)), W=1)

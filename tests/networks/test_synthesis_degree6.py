@@ -35,6 +35,7 @@ from symosc.networks import (
     cauer_second,
     foster_first,
     foster_second,
+    minimum_real_part,
 )
 
 p = sp.Symbol("p")
@@ -522,6 +523,36 @@ def test_conjugate_axis_poles_over_an_algebraic_field_are_realised():
     )
     for synth in (brune_synthesis, bott_duffin_synthesis):
         _check_exact_or_to_45_digits(synth(Z, p), Z)
+
+
+def _with_real_part(E, n: int):
+    """``Z = N/(p + 1)^n`` with ``Re Z(iω) = E(ω²)/(1 + ω²)^n``: ``N`` (degree ``n``) from the linear equations
+    ``N(p) D(-p) + N(-p) D(p) = 2 E(-p²)`` (the denominator is Hurwitz, so ``Z`` is positive real when ``E >= 0``)."""
+    x = sp.Symbol("x")
+    D = sp.expand((p + 1) ** n)
+    a = sp.symbols(f"a0:{n + 1}")
+    N = sum(a[i] * p**i for i in range(n + 1))
+    equations = sp.Poly(sp.expand(N * D.subs(p, -p) + N.subs(p, -p) * D - 2 * E(x).subs(x, -(p**2))), p).all_coeffs()
+    (solution,) = sp.linsolve(equations, a)
+    return sp.expand(N.subs(dict(zip(a, solution, strict=True)))) / D
+
+
+def test_degenerate_minimum_over_an_algebraic_field():
+    """``Re Z(iω) - m = (ω² - ω0²)⁴ / (1 + ω²)^n``: a minimum with contact of order four, a triple root of the
+    critical-point polynomial, with coefficients in QQ(√2).  No norm of that polynomial is squarefree (the field
+    extension failed: "no squarefree norm found") and its numerical triple root has a third of the digits; the roots
+    are now taken on its squarefree part.  The minimum is the constructed one, exact, with ``ω0²`` in the field
+    (√2) and outside it (a root of ``x² - x - √2``); both procedures realise the first target exactly."""
+    sq2 = sp.sqrt(2)
+    for m in (0, 1):
+        Z = _with_real_part(lambda x, m=m: m * (1 + x) ** 4 + (x - sq2) ** 4, 4)
+        assert minimum_real_part(Z, p) == (m, sq2)
+    for synth in (brune_synthesis, bott_duffin_synthesis):
+        _check_exact_or_to_45_digits(synth(Z, p), Z)
+    Z = _with_real_part(lambda x: (1 + x) ** 8 + (x**2 - x - sq2) ** 4, 8)
+    R, where = minimum_real_part(Z, p)
+    assert R == 1
+    assert abs(sp.N(where - (1 + sp.sqrt(1 + 4 * sq2)) / 2, 50)) < 1e-45
 
 
 def test_default_limit_refusal_names_the_degree_and_the_keyword():

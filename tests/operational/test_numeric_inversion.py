@@ -32,6 +32,17 @@ def test_image_without_closed_rational_form():
     assert np.allclose(r.values, [float(mpmath.besselj(0, v)) for v in (2.0, 5.0)], atol=1e-12)
 
 
+def test_expanded_resonant_image():
+    """``1/(p² + 4)³`` expanded: its singularities are triple roots, on which mpmath's polyroots need not converge;
+    the oscillation rate that sets the working precision is found on the squarefree factors (the lookup raised
+    AttributeError).  Values against SymPy's inverse Laplace transform of ``1/(p (p² + 4)³)``."""
+    t = sp.Symbol("t", positive=True)
+    ts = [5.0, 40.0]
+    r = invert_numeric(1 / sp.expand((p**2 + 4) ** 3), p, ts)
+    original = sp.inverse_laplace_transform(1 / (p * (p**2 + 4) ** 3), p, t)
+    assert np.allclose(r.values, [float(sp.re(sp.N(original.subs(t, v), 30))) for v in ts], rtol=1e-12, atol=1e-14)
+
+
 def test_parameters_and_errors():
     a = sp.Symbol("a", positive=True)
     r = invert_numeric(p / (p + a), p, 1.0, values={"a": 2})
