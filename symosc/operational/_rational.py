@@ -88,10 +88,16 @@ def distinct_roots(den: sp.Poly, numeric: bool = False) -> list[tuple[sp.Expr, i
 
 
 def _numeric_simple_roots(den: sp.Poly) -> list[tuple[sp.Expr, int]] | None:
-    """Roots of a float polynomial by mpmath at 30 digits if they are well separated (else None)."""
+    """Roots of a polynomial with numeric coefficients by mpmath at 30 digits if they are well separated (else
+    None)."""
     import mpmath
 
-    coeffs = [mpmath.mpf(sp.Rational(c).p) / sp.Rational(c).q for c in den.all_coeffs()]
+    with mpmath.workdps(_NUMERIC_DPS + 10):  # any numeric coefficient: rational, float, sqrt(2), pi, complex
+        coeffs = []
+        for c in den.all_coeffs():
+            v = sp.N(c, _NUMERIC_DPS + 10)
+            re_c, im_c = mpmath.mpf(str(sp.re(v))), mpmath.mpf(str(sp.im(v)))
+            coeffs.append(re_c if not im_c else mpmath.mpc(re_c, im_c))
     if len(coeffs) < 2:
         return []
     with mpmath.workdps(_NUMERIC_DPS):

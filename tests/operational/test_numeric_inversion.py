@@ -35,12 +35,21 @@ def test_image_without_closed_rational_form():
 def test_expanded_resonant_image():
     """``1/(p² + 4)³`` expanded: its singularities are triple roots, on which mpmath's polyroots need not converge;
     the oscillation rate that sets the working precision is found on the squarefree factors (the lookup raised
-    AttributeError).  Values against SymPy's inverse Laplace transform of ``1/(p (p² + 4)³)``."""
+    AttributeError).  Values against SymPy's inverse Laplace transform of ``1/(p (p² + 4)³)``, and, with algebraic
+    coefficients (whose numeric residues raised TypeError), against mpmath's de Hoog inversion."""
     t = sp.Symbol("t", positive=True)
     ts = [5.0, 40.0]
     r = invert_numeric(1 / sp.expand((p**2 + 4) ** 3), p, ts)
     original = sp.inverse_laplace_transform(1 / (p * (p**2 + 4) ** 3), p, t)
     assert np.allclose(r.values, [float(sp.re(sp.N(original.subs(t, v), 30))) for v in ts], rtol=1e-12, atol=1e-14)
+    # algebraic coefficients, lightly damped: against mpmath's de Hoog inversion at 60 digits of the factored image
+    import mpmath
+
+    r = invert_numeric(1 / sp.expand((p**2 + sp.sqrt(2) * p / 10 + 4) ** 3), p, ts)
+    with mpmath.workdps(60):
+        image = lambda s: 1 / (s * (s**2 + mpmath.sqrt(2) * s / 10 + 4) ** 3)  # noqa: E731
+        reference = [float(mpmath.invertlaplace(image, v, method="dehoog")) for v in ts]
+    assert np.allclose(r.values, reference, rtol=1e-10, atol=1e-14)
 
 
 def test_parameters_and_errors():
