@@ -542,7 +542,8 @@ def test_degenerate_minimum_over_an_algebraic_field():
     critical-point polynomial, with coefficients in QQ(√2).  No norm of that polynomial is squarefree (the field
     extension failed: "no squarefree norm found") and its numerical triple root has a third of the digits; the roots
     are now taken on its squarefree part.  The minimum is the constructed one, exact, with ``ω0²`` in the field
-    (√2) and outside it (a root of ``x² - x - √2``); both procedures realise the first target exactly."""
+    (√2) and outside it (a root of ``x² - x - √2``); both procedures realise the ``m = 1`` target (a resistance
+    removed, then a cycle at ``ω0``), positive values, impedance the target's."""
     sq2 = sp.sqrt(2)
     for m in (0, 1):
         Z = _with_real_part(lambda x, m=m: m * (1 + x) ** 4 + (x - sq2) ** 4, 4)
