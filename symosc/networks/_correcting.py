@@ -70,20 +70,21 @@ def max_gain_on_axis(N: sp.Poly, D: sp.Poly) -> float:
     crit = sp.Poly(sp.expand(A.diff(x).as_expr() * B.as_expr() - A.as_expr() * B.diff(x).as_expr()), x)
     xs = [sp.Integer(0)]
     if not crit.is_zero and crit.degree() > 0:
-        xs += _positive_real_roots(crit)
+        xs += [r for r in dict.fromkeys(roots_numeric(crit, real=True)) if r > 0]
     vals = [abs(A.eval(v) / B.eval(v)) for v in xs]
     if A.degree() == B.degree():
         vals.append(abs(A.LC() / B.LC()))
     return float(mpmath.sqrt(max(mpmath.mpf(sp.N(v, _DIGITS)) for v in vals)))
 
 
-def _positive_real_roots(f: sp.Poly) -> list:
-    """The positive real roots of ``f`` to ``_DIGITS`` digits: certified isolation (``real_roots``) when its
-    coefficients are rational, which also copes with multiple roots (mpmath's ``polyroots``, behind ``nroots``,
-    need not converge on them); ``nroots`` with more steps otherwise."""
+def roots_numeric(f: sp.Poly, real: bool = False) -> list[sp.Expr]:
+    """The roots of ``f`` (only the real ones with ``real=True``), repeated by multiplicity, to ``_DIGITS`` digits:
+    certified isolation (``real_roots``, ``all_roots``) when the coefficients are rational, which copes with
+    multiple roots (mpmath's ``polyroots``, behind ``nroots``, need not converge on them: a double critical point
+    and a triple pole raised ``NoConvergence``); ``nroots`` with more steps otherwise."""
     if f.get_domain().is_QQ or f.get_domain().is_ZZ:
-        return [sp.N(r, _DIGITS) for r in dict.fromkeys(f.real_roots()) if r.is_positive]
-    return [r for r in f.nroots(n=_DIGITS, maxsteps=500) if r.is_real and r > 0]
+        return [sp.N(r, _DIGITS) for r in (f.real_roots() if real else f.all_roots())]
+    return [r for r in f.nroots(n=_DIGITS, maxsteps=500) if r.is_real or not real]
 
 
 def dual(net: OnePort, W2: Any, scale: Callable[[Any, str], Any] | None = None) -> OnePort | None:

@@ -49,7 +49,7 @@ NESTED = (
     "of {what}); exact synthesis keeps every element of a network in one number field of degree <= {limit}; "
     "brune_synthesis, bott_duffin_synthesis and "
     "m_function_synthesis allow it with max_degree={degree} or more (fields of degree 32-40 take seconds, "
-    "degree 64 up to minutes, degree 128 a quarter to half an hour)"
+    "degree 64 up to minutes, degree 128 a quarter of an hour or more)"
 )
 
 

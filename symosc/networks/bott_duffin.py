@@ -48,7 +48,7 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
         :func:`brune_synthesis` (default 64 with python-flint, 8 without; fields of degree 32–40 take seconds,
-        degree 64 up to a few minutes, degree 128 a quarter to half an hour).
+        degree 64 up to a few minutes, degree 128 a quarter of an hour or more).
 
     Returns
     -------

@@ -34,6 +34,7 @@ from ._correcting import (
     nonnegative_on_half_line,
     positive,
     require_less,
+    roots_numeric,
 )
 from ._nodal import Netlist
 from ._synthesis import minimum_real_part
@@ -308,7 +309,7 @@ def _check_transfer(X: Any, p: sp.Symbol, max_degree: int | None = 2) -> tuple[s
             "multiplies the transfers: correcting_cascade does this), Bulgakov (1954), §9.37"
         )
     if not is_strictly_hurwitz(D):
-        poles = [z for z in _roots_numeric(D) if z.real >= -1e-12]
+        poles = [z for z in map(complex, roots_numeric(D)) if z.real >= -1e-12]
         raise ParameterError(
             f"X has poles in the closed right half-plane Re p >= 0 (at {poles}): not realisable by a passive "
             "lattice, Bulgakov (1954), §9.36, (9.518)"
@@ -539,13 +540,3 @@ def _min_conductance(Z: sp.Expr, p: sp.Symbol) -> sp.Expr:
     if sp.Poly(sp.fraction(Y)[0], p).degree() > sp.Poly(sp.fraction(Y)[1], p).degree() + 1:
         raise ModelError("1/Za is not positive real")  # pragma: no cover - excluded by construction
     return minimum_real_part(Y, p)[0]
-
-
-def _roots_numeric(D: sp.Poly) -> list[complex]:
-    """The roots of ``D`` to 15 digits, repeated by multiplicity: isolated exactly (``CRootOf``) when the
-    coefficients are rational, which copes with multiple roots (mpmath's ``polyroots``, behind ``nroots``, need
-    not converge on them: a triple pole raised ``NoConvergence`` instead of the error naming it); ``nroots`` with
-    more steps otherwise."""
-    if D.domain.is_ZZ or D.domain.is_QQ:
-        return [complex(r.evalf(15)) for r in D.all_roots()]
-    return [complex(r) for r in D.nroots(n=15, maxsteps=500)]

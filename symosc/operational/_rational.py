@@ -93,11 +93,7 @@ def _numeric_simple_roots(den: sp.Poly) -> list[tuple[sp.Expr, int]] | None:
     import mpmath
 
     with mpmath.workdps(_NUMERIC_DPS + 10):  # any numeric coefficient: rational, float, sqrt(2), pi, complex
-        coeffs = []
-        for c in den.all_coeffs():
-            v = sp.N(c, _NUMERIC_DPS + 10)
-            re_c, im_c = mpmath.mpf(str(sp.re(v))), mpmath.mpf(str(sp.im(v)))
-            coeffs.append(re_c if not im_c else mpmath.mpc(re_c, im_c))
+        coeffs = [mpmath.mpmathify(sp.N(c, _NUMERIC_DPS + 10)) for c in den.all_coeffs()]
     if len(coeffs) < 2:
         return []
     with mpmath.workdps(_NUMERIC_DPS):

@@ -184,12 +184,9 @@ def _oscillation_rate(expr: sp.Expr, p: sp.Symbol) -> float:
                 continue
             if poly.degree() < 1 or poly.free_symbols - {p}:
                 continue
-            # squarefree factors first: mpmath's polyroots (behind nroots) need not converge on a multiple root, and
+            # on squarefree factors: mpmath's polyroots (behind nroots) need not converge on a multiple root, and
             # the rate of a resonant image such as 1/(p² + 4)³ (expanded) was lost
-            if poly.domain.is_ZZ or poly.domain.is_QQ or poly.domain.is_RR:
-                roots = [complex(r) for r, _ in distinct_roots(poly, numeric=True)]
-            else:  # algebraic, complex or transcendental coefficients
-                roots = [complex(r) for r in poly.sqf_part().nroots(n=15, maxsteps=500)]
+            roots = [complex(r) for r, _ in distinct_roots(poly, numeric=True)]
             for r in roots:
                 if r.real > -1.0:
                     rate = max(rate, abs(r.imag))
