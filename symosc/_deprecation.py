@@ -6,6 +6,7 @@ Old names stay importable for one release so that code written against the earli
 from __future__ import annotations
 
 import functools
+import types
 import warnings
 from collections.abc import Callable, Mapping
 from typing import Any
@@ -82,3 +83,58 @@ def deprecated_attribute(new: str) -> Any:
             return getattr(obj, new)
 
     return _Alias()
+
+
+class _ModuleAliases:
+    """Import finder for moved modules: ``import old.path`` warns once and gives the module now at the new path.
+
+    The table is declared where the modules moved (:func:`moved_modules`); nothing is imported until an old path is.
+    """
+
+    def __init__(self) -> None:
+        self.table: dict[str, str] = {}
+
+    def find_spec(self, fullname: str, path: Any = None, target: Any = None) -> Any:
+        if fullname not in self.table:
+            return None
+        import importlib.util
+
+        return importlib.util.spec_from_loader(fullname, self)
+
+    def create_module(self, spec: Any) -> None:
+        return None  # a placeholder module; exec_module replaces it in sys.modules by the moved one
+
+    def exec_module(self, module: Any) -> None:
+        import importlib
+        import sys
+
+        new = self.table[module.__name__]
+        warn_deprecated(f"the module path {module.__name__}", new, stacklevel=3)
+        sys.modules[module.__name__] = importlib.import_module(new)
+
+
+_ALIASES = _ModuleAliases()
+
+
+class _PackageKeepingNames(types.ModuleType):
+    """A package whose old module paths share a name with a public function (``symosc.nonlinear.lindstedt``):
+    importing the old path does not replace the function on the package by the module."""
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if isinstance(value, types.ModuleType) and f"{self.__name__}.{name}" in _ALIASES.table:
+            return
+        super().__setattr__(name, value)
+
+
+def moved_modules(package: str, moves: Mapping[str, str]) -> None:
+    """Keep the old module paths ``package.old`` importable (deprecated) after the modules moved to ``package.new``.
+
+    ``moves`` maps old to new names relative to ``package`` (for example ``{"poincare": "series.poincare"}``).  An
+    old path named like a public function of the package leaves that function in place.
+    """
+    import sys
+
+    _ALIASES.table.update({f"{package}.{old}": f"{package}.{new}" for old, new in moves.items()})
+    if _ALIASES not in sys.meta_path:
+        sys.meta_path.append(_ALIASES)
+    sys.modules[package].__class__ = _PackageKeepingNames

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-__all__ = ["SymPyPrintable", "add_printing_hooks", "add_printing_hooks_to_public", "latex_value", "strip_math"]
+__all__ = ["SymPyPrintable", "latex_value", "strip_math"]
 
 _MAX_FIELDS = 6
 _MAX_ITEMS = 6
@@ -158,24 +158,3 @@ class SymPyPrintable:
                 if isinstance(attr, functools.cached_property):
                     state.pop(name, None)
         return state
-
-
-def add_printing_hooks(cls: type) -> type:
-    """Give ``cls`` the hooks of :class:`SymPyPrintable` that it lacks (for classes defined elsewhere)."""
-    for name in ("_summary_latex", "_latex", "_sympystr", "_pretty", "_repr_latex_"):
-        if not hasattr(cls, name):
-            setattr(cls, name, SymPyPrintable.__dict__[name])
-    if not any("__getstate__" in vars(c) for c in cls.__mro__ if c is not object):
-        cls.__getstate__ = SymPyPrintable.__getstate__
-    return cls
-
-
-def add_printing_hooks_to_public(package: str) -> None:
-    """:func:`add_printing_hooks` on every public class of ``package.__all__`` (models and results, not errors)."""
-    import sys
-
-    pkg = sys.modules[package]
-    for name in getattr(pkg, "__all__", ()):
-        obj = getattr(pkg, name, None)
-        if isinstance(obj, type) and not issubclass(obj, BaseException):
-            add_printing_hooks(obj)

@@ -208,6 +208,19 @@ def _suspicious(value: Any, annotation: str) -> str | None:
     return None
 
 
+def _suspicious_argument(fn: Any, p: inspect.Parameter, value: Any) -> str | None:
+    """:func:`_suspicious` for parameter ``p`` of ``fn``: a string that is the default or one of the choices the
+    docstring lists (``{"exact", "numeric"}``) is an ordinary option, not a suspect."""
+    if isinstance(value, str) and (value == p.default or repr(value) in _choices(fn, p.name)):
+        return None
+    return _suspicious(value, str(p.annotation))
+
+
+def _choices(fn: Any, pname: str) -> str:
+    kind = _docstring_parameters(inspect.getdoc(fn) or "").get(pname, ("", ""))[0].replace('"', "'")
+    return kind if kind.startswith("{") else ""
+
+
 def callable_expected(annotation: str) -> bool:
     return "Callable" in annotation and "Expr" not in annotation and "Any" not in annotation
 
@@ -436,21 +449,60 @@ def _conventional_parameters(params: Any) -> dict[str, Any]:
     return out
 
 
-def validates_own_arguments(fn):
-    """Mark ``fn`` as checking every argument itself, so :func:`guard_public_api` leaves it unwrapped.
+def _alternatives(text: str) -> list[str]:
+    """The top-level alternatives of an annotation: ``"str | Sequence[str] | None"`` -> three."""
+    text = text.strip()
+    for wrapper in ("Optional[", "Union["):
+        if text.startswith(wrapper) and text.endswith("]"):
+            text = (
+                text[len(wrapper) : -1].replace(",", "|") if wrapper == "Union[" else text[len(wrapper) : -1] + "|None"
+            )
+    out, depth, current = [], 0, ""
+    for ch in text:
+        depth += ch in "[("
+        depth -= ch in "])"
+        if ch == "|" and depth == 0:
+            out.append(current.strip())
+            current = ""
+        else:
+            current += ch
+    return [*out, current.strip()]
 
-    For hot scalar paths (a Mathieu value costs a few microseconds) where the wrapper's cost would show.
+
+def _admits_string(annotation: Any) -> bool:
+    """Whether a parameter annotated ``annotation`` may receive a string: one of its alternatives is ``str``,
+    a path or a ``Literal``, or there is no annotation to go by (a string default admits strings too)."""
+    if annotation is inspect.Parameter.empty:
+        return True
+    kinds = ("str", "Path", "os.PathLike", "PathLike")
+    return any(
+        a in kinds or a.startswith(("Literal", "PathLike", "os.PathLike"))
+        for a in _alternatives(_annotation_text(annotation))
+    )
+
+
+def _documented_string(kind: str) -> bool:
+    """Whether a docstring type admits a string: ``str``, a path, or a set of string choices ``{"a", "b"}``."""
+    return re.search(r"\bstr\b|\bpath\b|^\{", kind.strip(), re.IGNORECASE) is not None
+
+
+def validated(fn):
+    """Decorator written at the definition of a public function: the checks that follow from its signature.
+
+    Up front, on every call, with messages that name the argument and what it must be (the docstring's
+    "Parameters" entry):
+
+    * a string is refused where the annotation does not admit one (``hurwitz("abc")`` is not a polynomial in
+      the symbols a, b, c), and None where the annotation does not admit None;
+    * parameters whose name fixes their meaning across symosc: tolerances ``rtol``/``tol`` (> 0) and ``atol``
+      (>= 0), digit counts ``dps`` and limits ``max_*`` (integers >= 1), random ``seed``.
+
+    A generic exception (``TypeError``, ``ValueError``, ``ZeroDivisionError``, ...) raised from inside for a call
+    with a suspicious argument (None, nan/inf, zero, a negative number, an array where a matrix was meant) becomes
+    a :class:`~symosc.errors.ParameterError` naming those arguments, chained to the original; a
+    :class:`~symosc.errors.ModelError` or ``ParameterError`` whose message does not say which argument is at fault
+    gets that added.  Checks specific to one function stay in the function, at its top.
     """
-    fn.__symosc_guarded__ = True
-    return fn
-
-
-def guard(fn):
-    """Wrap a public function: None where the annotation forbids it is refused up front, and a generic exception
-    raised from inside for a call with a suspicious argument (None, nan/inf, a string, zero, negative, an array
-    of the wrong shape) becomes a :class:`ParameterError` naming those arguments (the original is chained)."""
-    if getattr(fn, "__symosc_guarded__", False):
-        return fn
     try:
         sig = inspect.signature(fn)
     except (TypeError, ValueError):  # pragma: no cover - builtins
@@ -459,6 +511,16 @@ def guard(fn):
     name = fn.__name__
     renames = getattr(fn, "__symosc_renamed_keywords__", {})  # deprecated keyword -> new (forwarded with a warning)
     conventional = _conventional_parameters(params)
+    maybe_refused = frozenset(
+        p for p, par in params.items() if not (_admits_string(par.annotation) or isinstance(par.default, str))
+    )
+
+    @functools.cache
+    def strings_refused() -> frozenset[str]:
+        """The parameters that take no string: neither the annotation, the default nor the docstring's type admits
+        one (computed on the first call with a string argument)."""
+        kinds = _docstring_parameters(inspect.getdoc(fn) or "")
+        return frozenset(p for p in maybe_refused if not _documented_string(kinds.get(p, ("", ""))[0]))
     conventional_names = frozenset(conventional)
     # positional index from which a conventional parameter can be given positionally (never, if none)
     first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)
@@ -478,13 +540,25 @@ def guard(fn):
                 if typed and not any(k in ann for k in ("None", "Any", "Optional")):
                     raise ParameterError(f"{name}(): {pname} must not be None; {describe_argument(fn, pname, 'None')}")
 
+    def refuse_strings(args, kwargs):
+        for pname, value in bind(args, kwargs).arguments.items():
+            p = params[pname]
+            if p.kind is p.VAR_KEYWORD or p.name not in strings_refused():
+                continue
+            values = value if p.kind is p.VAR_POSITIONAL else (value,)
+            for each in values:
+                if isinstance(each, str | bytes):
+                    if _annotation_text(p.annotation) == "bool":
+                        raise ParameterError(f"{name}(): {pname} must be True or False, got the string {_show(each)}")
+                    raise ParameterError(f"{name}(): {describe_argument(fn, pname, f'the string {_show(each)}')}")
+
     def translate(exc, args, kwargs):
         bad = []
         for pname, value in bind(args, kwargs).arguments.items():
             p = params[pname]
             if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
                 continue
-            why = _suspicious(value, str(p.annotation))
+            why = _suspicious_argument(fn, p, value)
             tname = type(value).__name__
             named = f"'{tname}' object" in str(exc) or f"type '{tname}'" in str(exc)
             if why is None and not isinstance(value, sp_Basic) and named:
@@ -518,7 +592,7 @@ def guard(fn):
         if isinstance(exc, ModelError) and not isinstance(exc, ParameterError):
             # a model error that merely mentions an argument ("f(A) is not defined") is about the model: completed
             # only for arguments whose value itself looks wrong (nan, a string, zero, an array where a matrix was meant)
-            suspicious = {k for k, v in ordinary.items() if _suspicious(v, str(params[k].annotation))}
+            suspicious = {k for k, v in ordinary.items() if _suspicious_argument(fn, params[k], v)}
             if not suspicious:
                 return exc
             named = [k for k in named if k in suspicious]
@@ -530,7 +604,7 @@ def guard(fn):
             extra = "; ".join(f"{k} must be: {expectation(fn, k)}" for k in named[:3])
             text = f"{message} ({extra})"
         else:
-            culprits = [(k, why) for k, v in ordinary.items() if (why := _suspicious(v, str(params[k].annotation)))]
+            culprits = [(k, why) for k, v in ordinary.items() if (why := _suspicious_argument(fn, params[k], v))]
             if not culprits:
                 culprits = [(k, _show(v)) for k, v in ordinary.items() if _shown_in(v, message)]
             if not culprits:
@@ -556,6 +630,11 @@ def guard(fn):
                 if value is None:
                     refuse_none(args, kwargs)
                     break
+        if maybe_refused:
+            for value in (*args, *kwargs.values()):
+                if isinstance(value, str | bytes):
+                    refuse_strings(args, kwargs)
+                    break
         if len(args) > first_position or (kwargs and not conventional_names.isdisjoint(kwargs)):
             for pname, value in bind(args, kwargs).arguments.items():
                 if pname in conventional:
@@ -573,21 +652,5 @@ def guard(fn):
             translate(exc, args, kwargs)
             raise  # pragma: no cover - translate always raises
 
-    wrapper.__symosc_guarded__ = True  # type: ignore[attr-defined]
+    wrapper.__symosc_validated__ = True  # type: ignore[attr-defined]
     return wrapper
-
-
-def guard_public_api(package: str) -> None:
-    """Wrap every function of ``package.__all__`` with :func:`guard`, in the package and its defining module."""
-    import sys
-
-    pkg = sys.modules[package]
-    for attr in getattr(pkg, "__all__", []):
-        obj = getattr(pkg, attr, None)
-        if not inspect.isfunction(obj) or getattr(obj, "__symosc_guarded__", False):
-            continue
-        wrapped = guard(obj)
-        setattr(pkg, attr, wrapped)
-        home = sys.modules.get(obj.__module__)
-        if home is not None and getattr(home, obj.__name__, None) is obj:
-            setattr(home, obj.__name__, wrapped)

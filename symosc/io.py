@@ -16,6 +16,7 @@ from typing import Any
 
 import sympy as sp
 
+from ._validate import validated
 from .errors import ParameterError
 
 __all__ = ["load", "load_summary", "save", "summary"]
@@ -88,6 +89,7 @@ def summary(obj: Any) -> dict[str, Any]:
     }
 
 
+@validated
 def save(obj: Any, path: str | Path) -> tuple[Path, Path]:
     """Write ``obj`` to ``<path>.pkl`` and its summary to ``<path>.json``; return both paths.
 
@@ -124,6 +126,7 @@ def save(obj: Any, path: str | Path) -> tuple[Path, Path]:
     return pkl, js
 
 
+@validated
 def load(path: str | Path) -> Any:
     """The object saved by :func:`save` (give the ``.pkl`` path or the name without extension).
 
@@ -139,6 +142,7 @@ def load(path: str | Path) -> Any:
     return pickle.loads(pkl.read_bytes())
 
 
+@validated
 def load_summary(path: str | Path) -> dict[str, Any]:
     """The JSON summary written by :func:`save`, with the ``srepr`` strings turned back into SymPy objects.
 
@@ -155,11 +159,3 @@ def load_summary(path: str | Path) -> dict[str, Any]:
         sym[k] = [sp.sympify(x) for x in v] if isinstance(v, list) else sp.sympify(v)
     data["symbolic"] = sym
     return data
-
-
-# public functions refuse invalid arguments (a missing path, ...) with ParameterError
-from ._validate import guard as _guard  # noqa: E402
-
-save = _guard(save)
-load = _guard(load)
-load_summary = _guard(load_summary)

@@ -21,22 +21,27 @@ from collections.abc import Iterable
 
 import sympy as sp
 
+from ._validate import validated
+
 __all__ = ["ddot", "dot", "natural_key", "sort_symbols", "t"]
 
 #: The time symbol.  Equal to ``sympy.physics.mechanics.dynamicsymbols._t``.
 t = sp.Symbol("t")
 
 
+@validated
 def dot(q: sp.Symbol) -> sp.Symbol:
     """Velocity symbol of the coordinate ``q`` (named ``<q>_dot``)."""
     return sp.Symbol(f"{q.name}_dot", **q.assumptions0)
 
 
+@validated
 def ddot(q: sp.Symbol) -> sp.Symbol:
     """Acceleration symbol of the coordinate ``q`` (named ``<q>_ddot``)."""
     return sp.Symbol(f"{q.name}_ddot", **q.assumptions0)
 
 
+@validated
 def natural_key(symbol: sp.Symbol) -> tuple:
     """Sort key that orders ``m2`` before ``m10``.
 
@@ -47,6 +52,7 @@ def natural_key(symbol: sp.Symbol) -> tuple:
     return tuple((0, int(p)) if p.isdigit() else (1, p) for p in parts)
 
 
+@validated
 def sort_symbols(symbols: Iterable[sp.Symbol]) -> tuple[sp.Symbol, ...]:
     """Symbols in natural name order (``l1, l2, ..., l10``), duplicates removed.
 
@@ -54,9 +60,3 @@ def sort_symbols(symbols: Iterable[sp.Symbol]) -> tuple[sp.Symbol, ...]:
     (g, m2, m10)
     """
     return tuple(sorted(set(symbols), key=natural_key))
-
-
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from ._validate import guard_public_api as _guard_public_api  # noqa: E402
-
-_guard_public_api(__name__)

@@ -69,38 +69,41 @@ def loaded_modules(statement: str) -> set[str]:
     return set(out.split())
 
 
-def test_nonlinear_loads_its_modules_on_first_use():
-    """``import symosc.nonlinear`` loads none of its modules; ``limit_cycle`` loads the series modules only."""
+def test_nonlinear_loads_its_families_on_first_use():
+    """``import symosc.nonlinear`` loads none of its modules; ``limit_cycle`` loads the series family only."""
     bare = {n for n in loaded_modules("import symosc.nonlinear") if n.startswith("symosc.nonlinear.")}
     assert bare == set()
     used = {n for n in loaded_modules("import symosc.nonlinear as nl; nl.limit_cycle") if n.startswith("symosc.")}
-    assert "symosc.nonlinear.poincare" in used
-    assert not used & {
-        "symosc.nonlinear.delay",
-        "symosc.nonlinear.averaging",
-        "symosc.nonlinear.harmonic_linearization",
-    }
+    assert "symosc.nonlinear.series.poincare" in used
+    assert not {n for n in used if n.split(".")[2:3] in (["delay"], ["averaging"], ["harmonic"], ["special"])}
 
 
-def test_nonlinear_public_names_are_the_functions_after_submodule_imports():
-    """Importing a module named like its function (``lindstedt``) does not replace the function on the package."""
+def test_nonlinear_public_names_are_the_functions_after_old_module_paths_are_imported():
+    """Importing an old module path named like its function (``lindstedt``) does not replace the function on the
+    package, and the old path gives the moved module (with a deprecation warning)."""
     code = (
-        "import symosc.nonlinear.lindstedt, symosc.nonlinear.harmonic_linearization, symosc.nonlinear as nl, "
-        "inspect; assert inspect.isfunction(nl.lindstedt) and inspect.isfunction(nl.harmonic_linearization); "
-        "assert nl.limit_cycle.__symosc_guarded__"
+        "import warnings; warnings.simplefilter('error', DeprecationWarning)\n"
+        "import symosc.nonlinear as nl, inspect\n"
+        "try:\n    import symosc.nonlinear.lindstedt\nexcept DeprecationWarning as w:\n    assert 'series' in str(w)\n"
+        "else:\n    raise SystemExit('no warning')\n"
+        "warnings.simplefilter('ignore', DeprecationWarning)\n"
+        "import symosc.nonlinear.lindstedt, symosc.nonlinear.harmonic_linearization\n"
+        "import sys; modules = sys.modules\n"
+        "assert modules['symosc.nonlinear.lindstedt'] is modules['symosc.nonlinear.series.lindstedt']\n"
+        "assert inspect.isfunction(nl.lindstedt) and inspect.isfunction(nl.harmonic_linearization)"
     )
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     subprocess.run([sys.executable, "-c", code], check=True, env=env)
 
 
-def test_lazy_table_matches_each_module():
-    """The hand-kept table of symosc.nonlinear (module -> public names) agrees with every module's ``__all__``."""
+def test_lazy_table_matches_each_family():
+    """The hand-kept table of symosc.nonlinear (family -> public names) agrees with every family's ``__all__``."""
     import importlib
 
     import symosc.nonlinear as nl
 
-    for module, names in nl._SUBMODULE_NAMES.items():
-        mod = importlib.import_module(f"symosc.nonlinear.{module}")
-        assert set(names) <= set(dir(mod)), module
+    for family, names in nl._FAMILY_NAMES.items():
+        mod = importlib.import_module(f"symosc.nonlinear.{family}")
+        assert set(names) <= set(dir(mod)), family
         if hasattr(mod, "__all__"):
-            assert set(names) == set(mod.__all__), module
+            assert set(names) == set(mod.__all__), family

@@ -21,39 +21,63 @@
   :func:`pencil_canonical_form` (Weierstrass/Jordan or Cayley real form).
 """
 
-from .adjugate import adjugate_derivative_at_root, adjugate_derivatives
-from .block import (
+from .._deprecation import moved_modules as _moved_modules
+from .canonical import (
     BorderingInverse,
+    ModalMatrix,
+    PencilCanonicalForm,
+    PencilDivisors,
+    PencilEquivalence,
+    SmithForm,
+    TriangularForm,
+    adjugate_derivative_at_root,
+    adjugate_derivatives,
+    adjugate_poly,
     block_determinant,
     block_inverse,
     bordering_inverse,
+    charpoly,
     cyclic_block_determinant,
-    triangular_adjugate_series,
-    triangular_inverse_series,
-)
-from .cayley import cayley_real_form, real_matrix_function
-from .charpoly import adjugate_poly, charpoly, danilevsky, krylov, leverrier
-from .continuation import AnalyticContinuation, analytic_continuation
-from .interpolation import function_elementary_divisors, interpolation_basis, interpolation_polynomial
-from .matrix_coefficient_series import matrix_coefficient_function
-from .matrix_functions import MatrixFunction, matrix_function, series_converges
-from .matrizant import Matrizant, matrizant, matrizant_numeric
-from .matrizant_product import MatrizantProduct, matrizant_product
-from .modal import ModalMatrix, TriangularForm, luzin_form, modal_matrix, pencil_modal_matrix
-from .pencils import PencilCanonicalForm, PencilEquivalence, pencil_canonical_form, pencil_equivalence
-from .polynomial_matrices import (
-    PencilDivisors,
-    SmithForm,
+    danilevsky,
     determinantal_divisors,
     elementary_divisors,
     invariant_factors,
+    krylov,
+    leverrier,
+    luzin_form,
     minimal_polynomial,
+    modal_matrix,
+    pencil_canonical_form,
     pencil_divisors,
+    pencil_equivalence,
+    pencil_modal_matrix,
     polymatrix_divmod,
     smith_form,
+    triangular_adjugate_series,
+    triangular_inverse_series,
 )
-from .power_series import matrix_power_series
-from .spectral import SpectralComponent, SpectralDecomposition, spectral_decomposition
+from .functions import (
+    AnalyticContinuation,
+    MatrixFunction,
+    Matrizant,
+    MatrizantProduct,
+    SpectralComponent,
+    SpectralDecomposition,
+    analytic_continuation,
+    cayley_real_form,
+    function_elementary_divisors,
+    interpolation_basis,
+    interpolation_polynomial,
+    matrix_coefficient_function,
+    matrix_function,
+    matrix_power_series,
+    matrizant,
+    matrizant_numeric,
+    matrizant_product,
+    real_matrix_function,
+    series_converges,
+    spectral_decomposition,
+)
 
 __all__ = [
     "AnalyticContinuation",
@@ -110,12 +134,27 @@ __all__ = [
     "triangular_inverse_series",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
-
-_guard_public_api(__name__)
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)
+#: module paths before the split into families (old -> new): deprecated, kept so that code and pickles written
+#: against them still load
+_moved_modules(
+    __name__,
+    {
+        "_schur_parlett": "functions._schur_parlett",
+        "_taylor": "functions._taylor",
+        "adjugate": "canonical.adjugate",
+        "block": "canonical.block",
+        "cayley": "functions.cayley",
+        "charpoly": "canonical.charpoly",
+        "continuation": "functions.continuation",
+        "interpolation": "functions.interpolation",
+        "matrix_coefficient_series": "functions.matrix_coefficient_series",
+        "matrix_functions": "functions.matrix_functions",
+        "matrizant": "functions.matrizant",
+        "matrizant_product": "functions.matrizant_product",
+        "modal": "canonical.modal",
+        "pencils": "canonical.pencils",
+        "polynomial_matrices": "canonical.polynomial_matrices",
+        "power_series": "functions.power_series",
+        "spectral": "functions.spectral",
+    },
+)

@@ -8,8 +8,3 @@ Fortran 95 or Octave/MATLAB file.  The expressions are CSE'd and printed by SymP
 from ._export import LANGUAGES, export
 
 __all__ = ["LANGUAGES", "export"]
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public
-
-_add_printing_hooks_to_public(__name__)

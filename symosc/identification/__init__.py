@@ -5,11 +5,9 @@ with ``signals`` of shape ``(samples,)`` or ``(channels, samples)``, and return 
 """
 
 from .._deprecation import module_getattr as _module_getattr
-from .._validate import guard_public_api as _guard_public_api
-from ._signals import ModalEstimate
+from .._deprecation import moved_modules as _moved_modules
 from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
 from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
-from .era import era, realize
 from .error_maps import ErrorMap, error_map
 from .min_time import (
     ExcitationBound,
@@ -23,20 +21,6 @@ from .min_time import (
     sine_forcing_time,
     switching_curves,
 )
-from .noise import (
-    ApplicabilityCheck,
-    CramerRaoBound,
-    ErrorVsNoise,
-    MonteCarloResult,
-    add_noise,
-    applicability,
-    cramer_rao_bound,
-    error_vs_noise,
-    monte_carlo,
-    noise_sigma,
-)
-from .pencil import esprit, matrix_pencil
-from .prony import SamplingAdvice, prony, sampling_advice
 from .reconstruction import (
     InertiaEstimate,
     InertiaTensor,
@@ -48,11 +32,32 @@ from .reconstruction import (
     inertia_known_center,
     real_modes,
 )
-from .refine import refine
 from .sensitivity import JacobianResult, jacobian, sensitivity
+from .signals import (
+    ApplicabilityCheck,
+    CramerRaoBound,
+    ErrorVsNoise,
+    ModalEstimate,
+    MonteCarloResult,
+    SamplingAdvice,
+    SecondOrderModel,
+    add_noise,
+    applicability,
+    cramer_rao_bound,
+    era,
+    error_vs_noise,
+    esprit,
+    matrix_pencil,
+    monte_carlo,
+    noise_sigma,
+    prony,
+    realize,
+    refine,
+    sampling_advice,
+    two_stage,
+)
 from .simulator import StandRecord, simulate_stand, stand_system
 from .spin_up import CentralGyration, central_gyration, motor_spin_up_brake
-from .two_stage import SecondOrderModel, two_stage
 
 __all__ = [
     "ApplicabilityCheck",
@@ -116,6 +121,21 @@ __all__ = [
     "two_stage",
 ]
 
+#: module paths before the split into families (old -> new): deprecated, kept so that code and pickles written
+#: against them still load
+_moved_modules(
+    __name__,
+    {
+        "_signals": "signals._signals",
+        "era": "signals.era",
+        "noise": "signals.noise",
+        "pencil": "signals.pencil",
+        "prony": "signals.prony",
+        "refine": "signals.refine",
+        "two_stage": "signals.two_stage",
+    },
+)
+
 
 _DEPRECATED_NAMES = {
     "algorithm1": "inertia_from_release",
@@ -123,11 +143,3 @@ _DEPRECATED_NAMES = {
     "algorithm22": "inertia_known_center",
 }
 __getattr__ = _module_getattr(__name__, _DEPRECATED_NAMES, globals())
-
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-_guard_public_api(__name__)
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)

@@ -20,6 +20,7 @@ from typing import Any
 import sympy as sp
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError
 from ..numeric import CompiledFunction
 from ..numeric import compile as _compile
@@ -64,6 +65,7 @@ def _solve(eqs: list[sp.Eq], unknowns: list[sp.Symbol], target: sp.Symbol) -> sp
     return sp.simplify(sol[0][target])
 
 
+@validated
 def flywheel() -> InertiaFormula:
     """Flywheel (drum radius ``R``) spun by a weight ``M`` falling height ``h`` from rest in time ``T``; friction
     moment ``Mf`` constant.  Two runs ``(M1, T1)``, ``(M2, T2)`` eliminate ``Mf``.
@@ -83,6 +85,7 @@ def flywheel() -> InertiaFormula:
     return InertiaFormula("flywheel", _solve(eqs, [I, Mf], I), tuple(eqs))
 
 
+@validated
 def physical_pendulum() -> InertiaFormula:
     """Physical pendulum: mass ``m``, center of mass at distance ``r`` from the pivot, small-oscillation angular
     frequency ``omega``; returns the moment of inertia about the center of mass.
@@ -99,6 +102,7 @@ def physical_pendulum() -> InertiaFormula:
     return InertiaFormula("physical_pendulum", _solve([eq], [I], I), (eq,))
 
 
+@validated
 def rocking_platform() -> InertiaFormula:
     """Platform (own inertia ``J`` about its hinge) rocking on a spring of stiffness ``c`` at lever ``l``; the
     body's center of mass is at distance ``d`` from the hinge axis, in its plane (no gravity moment).  Returns the

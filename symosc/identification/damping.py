@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 
 __all__ = ["DampingPerturbation", "QuadraticModes", "damping_perturbation", "quadratic_modes"]
@@ -65,6 +66,7 @@ class QuadraticModes(SymPyPrintable):
         return np.where(self.vectors.real < 0, -1.0, 1.0) * np.abs(self.vectors)
 
 
+@validated
 def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
     """Solve the quadratic eigenproblem of a damped linear system (oscillatory modes only).
 
@@ -131,6 +133,7 @@ class DampingPerturbation(SymPyPrintable):
         return self.modes + eps * self.u1
 
 
+@validated
 def damping_perturbation(mass: Any, damping: Any, stiffness: Any) -> DampingPerturbation:
     """First-order perturbation of the undamped modes by damping ``D`` (Vishik–Lyusternik; Belyakov eq. 100–106).
 

@@ -24,12 +24,13 @@ import numpy as np
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ParameterError, SymoscError
 from ..numeric import bind
 from ._sweeping import raise_first_failure
-from .era import era
-from .noise import add_noise
 from .reconstruction import inertia_equal_springs, inertia_from_release, inertia_known_center
+from .signals.era import era
+from .signals.noise import add_noise
 
 __all__ = ["ErrorMap", "error_map"]
 
@@ -186,6 +187,7 @@ def _error_map_run(level_index: int, a: int, b: int, run: int, *, ctx: _MapRuns)
     return out
 
 
+@validated
 def error_map(
     dx: Any,
     dz: Any,

@@ -25,6 +25,7 @@ import numpy as np
 
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = [
@@ -48,6 +49,7 @@ def _positive(name: str, value: Any) -> float:
     return v
 
 
+@validated
 def excitation_time(amplitude: float, omega: float, force_max: float, mass: float = 1.0) -> float:
     """Time ``pi a m omega / (2 u_bar_max)`` to pump a 1-DOF oscillator from rest to amplitude ``a`` (eq. 76).
 
@@ -62,6 +64,7 @@ def excitation_time(amplitude: float, omega: float, force_max: float, mass: floa
     return np.pi * a * m * w / (2 * u)
 
 
+@validated
 def sine_forcing_time(amplitude: float, omega: float, force_max: float, mass: float = 1.0) -> float:
     """Time ``2 a m omega / u_bar_max`` for resonant forcing ``u_bar_max sin(omega t)`` from rest (eq. 78).
 
@@ -127,6 +130,7 @@ class MinTimeResult(SymPyPrintable):
         return self.u_m * np.where(s >= 0, 1.0, -1.0)
 
 
+@validated
 def min_time_1dof(
     x0: Sequence[float], a: float, u_m: float, omega: float = 1.0, *, tol: float = 1e-10
 ) -> MinTimeResult:
@@ -190,6 +194,7 @@ def min_time_1dof(
     return MinTimeResult(float(T), alpha, inside, u_m, omega, sw)
 
 
+@validated
 def switching_curves(
     a: float,
     u_m: float,
@@ -242,6 +247,7 @@ def switching_curves(
 
 
 # ---------------------------------------------------------------------------------------------------- quasi-optimal
+@validated
 def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
     """Quasi-optimal feedback (eq. 75): ``+u_m sign(x2)`` inside the circle, ``0`` on it, ``-u_m sign(x2)`` outside.
 
@@ -283,6 +289,7 @@ class QuasiOptimalRun(SymPyPrintable):
         return ax
 
 
+@validated
 def simulate_quasi_optimal(
     x0: Sequence[float], a: float, u_m: float, omega: float = 1.0, *, max_arcs: int = 100000
 ) -> QuasiOptimalRun:
@@ -355,6 +362,7 @@ class ExcitationBound(SymPyPrintable):
         return f"ExcitationBound(bound={self.bound:.6g} s, times=[{ts}] s, exact_bound={self.exact_bound:.6g} s)"
 
 
+@validated
 def excitation_time_bound(
     M: Any,
     K: Any,

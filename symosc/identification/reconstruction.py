@@ -31,6 +31,7 @@ import sympy as sp
 
 from .._deprecation import module_getattr as _module_getattr
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import IdentificationError, ParameterError
 
 __all__ = [
@@ -74,6 +75,7 @@ def sensor_layout(positions: Any) -> np.ndarray:
     return p
 
 
+@validated
 def real_modes(values: Any, how: str = "modulus") -> np.ndarray:
     """Stage 3: make complex identified quantities real (real input is returned as float).
 
@@ -98,6 +100,7 @@ def real_modes(values: Any, how: str = "modulus") -> np.ndarray:
     return a.astype(float)
 
 
+@validated
 def check_distinct(omega: Sequence[float], rtol: float = 1e-3) -> np.ndarray:
     """Stage 4: raise :class:`IdentificationError` if two frequencies agree within relative tolerance ``rtol``.
 
@@ -143,6 +146,7 @@ def _prepare(omega: Any, modes: Any, rtol: float, how: str = "modulus") -> tuple
     return w, cp
 
 
+@validated
 def central_identity(C: Any, modes: Any, omega: Any, modal_stiffness: Any) -> Any:
     """Inertia matrix ``M = C^T (C'^+)^T K' A'^{-1} C'^+ C`` (eq. 32).
 
@@ -239,6 +243,7 @@ def _from_point_o(M0: np.ndarray, **kw: Any) -> InertiaEstimate:
 
 
 # ---------------------------------------------------------------------------------------------------- algorithms
+@validated
 def inertia_from_release(
     omega: Any,
     modes: Any,
@@ -313,6 +318,7 @@ def inertia_from_release(
     return _from_point_o(M0, modal_stiffness=kp, modal_mass=kp / w**2, algorithm="1", convention=product_of_inertia)
 
 
+@validated
 def inertia_equal_springs(
     omega: Any,
     modes: Any,
@@ -374,6 +380,7 @@ def inertia_equal_springs(
     )
 
 
+@validated
 def inertia_known_center(
     omega: Any,
     modes: Any,
@@ -528,6 +535,7 @@ class InertiaTensor(SymPyPrintable):
         return float(u @ J @ u)
 
 
+@validated
 def assemble_tensor(run1: InertiaEstimate, run2: InertiaEstimate, *, Iyz: float | None = None) -> InertiaTensor:
     """Combine two runs into ``Ixx, Iyy, Izz, Ixy, Ixz`` (Ch. I §2, p. 81).
 

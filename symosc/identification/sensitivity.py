@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ParameterError
 
 __all__ = ["JacobianResult", "jacobian", "sensitivity"]
@@ -107,6 +108,7 @@ def _flatten_output(out: Any) -> tuple[np.ndarray, tuple[str, ...] | None]:
     return np.atleast_1d(np.asarray(out)).ravel(), None
 
 
+@validated
 def jacobian(
     func: Callable[..., Any],
     x: Any,
@@ -227,6 +229,7 @@ def jacobian(
     )
 
 
+@validated
 def sensitivity(
     func: Callable[..., Any],
     frequencies: Any,

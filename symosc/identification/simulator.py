@@ -33,6 +33,7 @@ import sympy as sp
 
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import CompiledFunction, resolve
 from ..numeric import compile as _compile
@@ -228,6 +229,7 @@ class StandRecord(SymPyPrintable):
         return ax
 
 
+@validated
 def stand_system(
     model: Any,
     values: Mapping[Any, Any],
@@ -320,6 +322,7 @@ def _equilibrium(stand: _Stand, P: np.ndarray, guess: np.ndarray) -> np.ndarray:
     return p
 
 
+@validated
 def simulate_stand(
     model: Any,
     values: Mapping[Any, Any],

@@ -15,12 +15,15 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from .classical import InertiaFormula, _solve
 
 __all__ = ["CentralGyration", "central_gyration", "motor_spin_up_brake"]
 
 
+@validated
 def motor_spin_up_brake() -> InertiaFormula:
     """Moment of inertia from the motor's work in a spin-up and a brake run (Belyakov (2005), §3.12).
 
@@ -70,7 +73,7 @@ def motor_spin_up_brake() -> InertiaFormula:
 
 
 @dataclass(frozen=True)
-class CentralGyration:
+class CentralGyration(SymPyPrintable):
     """Radius of gyration about the parallel axis through the center of mass (Huygens–Steiner).
 
     Attributes
@@ -99,6 +102,7 @@ class CentralGyration:
         return f"$\\rho_m = {self.radius:.6g}\\ (\\pm {100 * self.relative_error:.3g}\\,\\%)$"
 
 
+@validated
 def central_gyration(rho: float, r: float, *, rel_error_rho: float = 0.0, rel_error_r: float = 0.0) -> CentralGyration:
     """Radius of gyration about the center of mass from the one about a parallel axis (Belyakov (2005), §3.12).
 

@@ -22,61 +22,96 @@
   :func:`discriminant_curve`, :func:`vyshnegradsky_diagram`.
 """
 
-from .bounds import (
-    FrequencyBounds,
-    PowerIteration,
-    constrained_eigenvalues,
-    dunkerley,
-    dunkerley_bounds,
-    power_iteration,
-    rayleigh_quotient,
-)
-from .conservative import ModalAnalysis, a_orthonormalize, conservative_modes
-from .criteria import StabilityVerdict, hurwitz, hurwitz_matrix, lienard_chipart
-from .degree import (
-    CubicOptimum,
-    StabilityDegree,
-    hurwitz_at_degree,
-    max_stability_degree_cubic,
-    shifted_coefficients,
-    stability_degree,
-)
-from .delay_lines import DelayStabilityLines, delay_equal_stability_lines
-from .delay_response import DelayResponseSeries, delay_response_series
-from .dpartition import DiscriminantCurve, DPartition, d_partition, discriminant_curve, vyshnegradsky_diagram
-from .fd_systems import (
+from .._deprecation import moved_modules as _moved_modules
+from .multi_dof import (
     Compatibility,
+    FrequencyBounds,
     FrequencyResponse,
     FundamentalSolutions,
     ImpulseResponse,
+    ModalAnalysis,
+    NormalForm,
+    PowerIteration,
+    TuningCurves,
+    TwoDOFBeats,
+    TwoDOFSystem,
+    a_orthonormalize,
+    chain_matrices,
     compatibility,
+    conservative_modes,
+    constrained_eigenvalues,
+    dunkerley,
+    dunkerley_bounds,
     frequency_response,
     fundamental_solutions,
     impulse_response,
+    influence_matrix,
     mean_power,
+    modal_normal_form,
+    power_iteration,
+    rayleigh_quotient,
     resonant_particular,
+    string_frequencies,
+    string_modes,
+    tuning_curves,
+    two_dof_beats,
+    two_dof_system,
     worst_case_gain,
 )
-from .loops import chain_transmittance, closed_loop_characteristic, return_difference
-from .normal_form import NormalForm, modal_normal_form
-from .nyquist import NyquistResult, StabilityMargins, nyquist, stability_margins
-from .one_dof import (
+from .second_order import (
+    DelayResponseSeries,
+    DelayStabilityLines,
+    EqualStabilityLines,
     LinearFilter,
+    PhasePortrait,
+    RegulatorOptimum,
     StabilityCoefficients,
     classify_equilibrium,
+    delay_equal_stability_lines,
+    delay_response_series,
+    equal_stability_lines,
     linear_filter,
+    optimize_regulator,
     periodic_forced_response,
+    phase_portrait,
     stability_coefficients,
     volterra_march,
 )
-from .phase_plane import PhasePortrait, phase_portrait
-from .quadratic_forms import QuadraticFormVerdict, routh_form_criteria
-from .regions import StabilityRegion, robust_boundary, stability_region
-from .regulator import EqualStabilityLines, RegulatorOptimum, equal_stability_lines, optimize_regulator
-from .routh import RouthArray, routh_array
-from .servo import ServoOptimum, ServoStabilityLines, servo_optimum, servo_stability_lines
-from .strings import chain_matrices, influence_matrix, string_frequencies, string_modes
-from .two_dof import TuningCurves, TwoDOFBeats, TwoDOFSystem, tuning_curves, two_dof_beats, two_dof_system
+from .stability import (
+    CubicOptimum,
+    DiscriminantCurve,
+    DPartition,
+    NyquistResult,
+    QuadraticFormVerdict,
+    RouthArray,
+    ServoOptimum,
+    ServoStabilityLines,
+    StabilityDegree,
+    StabilityMargins,
+    StabilityRegion,
+    StabilityVerdict,
+    chain_transmittance,
+    closed_loop_characteristic,
+    d_partition,
+    discriminant_curve,
+    hurwitz,
+    hurwitz_at_degree,
+    hurwitz_matrix,
+    lienard_chipart,
+    max_stability_degree_cubic,
+    nyquist,
+    return_difference,
+    robust_boundary,
+    routh_array,
+    routh_form_criteria,
+    servo_optimum,
+    servo_stability_lines,
+    shifted_coefficients,
+    stability_degree,
+    stability_margins,
+    stability_region,
+    vyshnegradsky_diagram,
+)
 
 __all__ = [
     "Compatibility",
@@ -164,12 +199,30 @@ __all__ = [
     "worst_case_gain",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
-
-_guard_public_api(__name__)
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)
+#: module paths before the split into families (old -> new): deprecated, kept so that code and pickles written
+#: against them still load
+_moved_modules(
+    __name__,
+    {
+        "bounds": "multi_dof.bounds",
+        "conservative": "multi_dof.conservative",
+        "criteria": "stability.criteria",
+        "degree": "stability.degree",
+        "delay_lines": "second_order.delay_lines",
+        "delay_response": "second_order.delay_response",
+        "dpartition": "stability.dpartition",
+        "fd_systems": "multi_dof.fd_systems",
+        "loops": "stability.loops",
+        "normal_form": "multi_dof.normal_form",
+        "nyquist": "stability.nyquist",
+        "one_dof": "second_order.one_dof",
+        "phase_plane": "second_order.phase_plane",
+        "quadratic_forms": "stability.quadratic_forms",
+        "regions": "stability.regions",
+        "regulator": "second_order.regulator",
+        "routh": "stability.routh",
+        "servo": "stability.servo",
+        "strings": "multi_dof.strings",
+        "two_dof": "multi_dof.two_dof",
+    },
+)

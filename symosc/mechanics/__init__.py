@@ -4,24 +4,30 @@ Hamilton-Jacobi, linearization about equilibria and motions, first-order form.
 >>> from symosc.mechanics import LagrangianSystem, LinearModel, FirstOrderSystem, HamiltonianSystem
 """
 
+from .._deprecation import moved_modules as _moved_modules
 from ._quadratic import ComplexModes, complex_modes
-from .canonical import CanonicalTransformation, canonical_transformation, is_canonical
+from .analytic import (
+    ActionVariable,
+    CanonicalTransformation,
+    HamiltonianSystem,
+    HamiltonJacobiSeparation,
+    RouthReduction,
+    SteadyMotion,
+    action_variable,
+    action_variable_numeric,
+    canonical_transformation,
+    is_canonical,
+    poisson_bracket,
+    routh_reduction,
+    separate_hamilton_jacobi,
+)
 from .circuits import LoopEquations, loop_equations
 from .constraints import ConstrainedForm, MinimalForm
 from .electromechanical import electromechanical_system
 from .first_order import FirstOrderSystem
 from .governor import GovernorStatics, governor_statics, stodola_time_constant, vyshnegradsky_cubic
-from .hamilton_jacobi import (
-    ActionVariable,
-    HamiltonJacobiSeparation,
-    action_variable,
-    action_variable_numeric,
-    separate_hamilton_jacobi,
-)
-from .hamiltonian import HamiltonianSystem, poisson_bracket
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
-from .routh import RouthReduction, SteadyMotion, routh_reduction
 from .variational import (
     FirstOrderReduction,
     ForceDecomposition,
@@ -67,13 +73,15 @@ __all__ = [
     "vyshnegradsky_cubic",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
-
-_guard_public_api(__name__)
-
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)
+#: module paths before the split into families (old -> new): deprecated, kept so that code and pickles written
+#: against them still load
+_moved_modules(
+    __name__,
+    {
+        "_separation": "analytic._separation",
+        "canonical": "analytic.canonical",
+        "hamilton_jacobi": "analytic.hamilton_jacobi",
+        "hamiltonian": "analytic.hamiltonian",
+        "routh": "analytic.routh",
+    },
+)

@@ -46,8 +46,6 @@ def _tidy(e: sp.Expr) -> sp.Expr:
 
 
 def reduce_coordinates(system: Any, parametrization: Mapping[Any, Any], coordinates: Sequence[Any]) -> Any:
-    from .lagrange import LagrangianSystem
-
     new = [_symbol(c) for c in (coordinates if isinstance(coordinates, (list, tuple)) else [coordinates])]
     by_name = {q.name: q for q in system.coordinates}
     mapping: dict[sp.Symbol, sp.Expr] = {}
@@ -89,4 +87,4 @@ def reduce_coordinates(system: Any, parametrization: Mapping[Any, Any], coordina
         e = g.xreplace(sub)
         if sp.simplify(e) != 0:
             non.append(e)
-    return LagrangianSystem(T, V, new, dissipation=R, forces=forces, constraints=hol, nonholonomic=non)
+    return type(system)(T, V, new, dissipation=R, forces=forces, constraints=hol, nonholonomic=non)

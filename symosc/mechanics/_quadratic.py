@@ -19,6 +19,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ..symbols import sort_symbols, t
 
@@ -30,7 +32,7 @@ __all__ = ["ComplexModes", "complex_modes", "periodic_monodromy"]
 
 
 @dataclass(frozen=True)
-class ComplexModes:
+class ComplexModes(SymPyPrintable):
     """Eigenvalues and mode shapes of the quadratic eigenproblem ``(M s**2 + D s + K) phi = 0``.
 
     Attributes
@@ -120,6 +122,7 @@ def _square(name: str, a: Any, n: int | None) -> np.ndarray:
     return arr
 
 
+@validated
 def complex_modes(M: Any, D: Any, K: Any) -> ComplexModes:
     """Roots and mode shapes of ``(M s**2 + D s + K) phi = 0`` with damping and gyroscopic terms.
 

@@ -14,13 +14,15 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError
 
 __all__ = ["LoopEquations", "loop_equations"]
 
 
 @dataclass(frozen=True)
-class LoopEquations:
+class LoopEquations(SymPyPrintable):
     """``Z i = e`` for the loop currents ``i``; branch currents are ``loop_matrix.T * i``.
 
     Attributes
@@ -53,6 +55,7 @@ class LoopEquations:
         return (self.impedance - self.impedance.T).applyfunc(sp.simplify) == sp.zeros(*self.impedance.shape)
 
 
+@validated
 def loop_equations(branches: Sequence[Sequence[Any]]) -> LoopEquations:
     """Loop equations of a network given as branches ``(from_node, to_node, impedance[, emf])``.
 

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..numeric import compile, resolve
 from ..symbols import t
@@ -187,7 +188,7 @@ def rank_on_constraint_set(
     return best
 
 
-class ConstrainedForm:
+class ConstrainedForm(SymPyPrintable):
     """Lagrange equations of the first kind of a constrained :class:`LagrangianSystem` (multiplier form).
 
     Not built directly: use :attr:`LagrangianSystem.constrained`.
@@ -388,7 +389,7 @@ class ConstrainedForm:
 
 
 @dataclass(frozen=True)
-class MinimalForm:
+class MinimalForm(SymPyPrintable):
     """Equations with the dependent velocities eliminated: ``q' = S u + s0``, ``M_r u' = F_r``.
 
     ``u`` are the independent velocities (the velocity symbols of the independent coordinates); every field

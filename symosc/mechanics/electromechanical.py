@@ -13,12 +13,14 @@ from typing import Any
 
 import sympy as sp
 
+from .._validate import validated
 from ..errors import ModelError
 from ..symbols import dot
 
 __all__ = ["electromechanical_system"]
 
 
+@validated
 def electromechanical_system(
     mechanical_T: Any,
     mechanical_V: Any,

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ..numeric import compile, resolve
 from ..numeric._checks import check_all
@@ -20,7 +21,7 @@ if TYPE_CHECKING:
 __all__ = ["FirstOrderSystem"]
 
 
-class FirstOrderSystem:
+class FirstOrderSystem(SymPyPrintable):
     """x' = f(t, x) with the state x = (q, q').
 
     Symbolically the system is kept in descriptor form ``E(x, t) x' = G(x, t)`` with

@@ -14,11 +14,14 @@ from typing import Any
 
 import sympy as sp
 
+from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError
 
 __all__ = ["GovernorStatics", "governor_statics", "stodola_time_constant", "vyshnegradsky_cubic"]
 
 
+@validated
 def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None = None) -> sp.Expr:
     """Stodola's time constant ``T = -J / K'(omega)`` at the steady speed (Bulgakov (1954), eq. (7.39)).
 
@@ -44,7 +47,7 @@ def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None =
 
 
 @dataclass(frozen=True)
-class GovernorStatics:
+class GovernorStatics(SymPyPrintable):
     """``omega^2(z) = E(z)/A(z)`` and the stability index ``E' - A' omega^2`` (positive: stable).
 
     See Also
@@ -59,6 +62,7 @@ class GovernorStatics:
         return f"GovernorStatics(omega^2 = {self.speed_squared})"
 
 
+@validated
 def governor_statics(E: Any, A: Any, z: sp.Symbol) -> GovernorStatics:
     """Static characteristic of a centrifugal governor with generalized force ``Q = -E(z) + A(z) omega^2``
     (Bulgakov (1954), §7.6, eqs. (7.40)-(7.45)).
@@ -82,6 +86,7 @@ def governor_statics(E: Any, A: Any, z: sp.Symbol) -> GovernorStatics:
     return GovernorStatics(speed_squared=w2, stability_index=sp.simplify(E.diff(z) - A.diff(z) * w2), coordinate=z)
 
 
+@validated
 def vyshnegradsky_cubic(U: Any, V2: Any, W: Any, delta: Any, N: Any = 0, symbol: sp.Symbol | None = None):
     """Vyshnegradsky's characteristic polynomial and its Hurwitz stability condition (Bulgakov (1954), §7.7).
 

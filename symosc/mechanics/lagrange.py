@@ -464,6 +464,6 @@ class LagrangianSystem(SymPyPrintable):
 
     def hamiltonian(self):
         """The Legendre transform: a :class:`~symosc.mechanics.HamiltonianSystem` (Bulgakov (1954), §3.11)."""
-        from .hamiltonian import HamiltonianSystem
+        from .analytic.hamiltonian import HamiltonianSystem
 
         return HamiltonianSystem.from_lagrangian(self)

@@ -17,7 +17,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .._validate import check_sympy_matrix
+from .._printing import SymPyPrintable
+from .._validate import check_sympy_matrix, validated
 from ..errors import ModelError
 from ..numeric import bind
 from ..symbols import ddot, dot, t
@@ -36,7 +37,7 @@ LAMBDA = sp.Symbol("lambda")
 
 
 @dataclass(frozen=True)
-class VariationalEquations:
+class VariationalEquations(SymPyPrintable):
     """``a0 y'' + a1 y' + a2 y = w(t)`` about a known motion (Bulgakov (1954), eq. (7.12)).
 
     Attributes
@@ -168,7 +169,7 @@ class VariationalEquations:
 
 
 @dataclass(frozen=True)
-class FirstOrderReduction:
+class FirstOrderReduction(SymPyPrintable):
     """``A Y' + H Y = W`` from ``f(D) y = w`` (Bulgakov (1954), §7.2, eqs. (7.25)-(7.26)); unpacks as
     ``A, H, W``.
 
@@ -206,6 +207,7 @@ class FirstOrderReduction:
         return sp.factor((self.A * symbol + self.H).det(method="berkowitz"))
 
 
+@validated
 def variational_equations(
     equations: Any, coordinates: Sequence[sp.Symbol] | None = None, reference: Mapping[Any, Any] | None = None
 ) -> VariationalEquations:
@@ -270,7 +272,7 @@ def variational_equations(
 
 
 @dataclass(frozen=True)
-class StabilityVerdict:
+class StabilityVerdict(SymPyPrintable):
     (
         """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``."""
         """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``.
@@ -291,7 +293,7 @@ class StabilityVerdict:
 
 
 @dataclass(frozen=True)
-class ForceDecomposition:
+class ForceDecomposition(SymPyPrintable):
     """``A`` inertia, ``N`` dissipative, ``G`` gyroscopic, ``H`` potential, ``J`` non-conservative positional
     (circulatory) matrices: ``N, H`` symmetric, ``G, J`` skew (Bulgakov (1954), eqs. (7.75), (7.81)).
 
@@ -355,6 +357,7 @@ class ForceDecomposition:
         return StabilityVerdict(None, False, "H indefinite with partial dissipation")
 
 
+@validated
 def decompose_forces(M: Any, C: Any, K: Any) -> ForceDecomposition:
     """Split ``M y'' + C y' + K y = 0`` into ``A = M``, ``N = (C + C^T)/2``, ``G = (C - C^T)/2``,
     ``H = (K + K^T)/2``, ``J = (K - K^T)/2`` (Bulgakov (1954), §7.9).

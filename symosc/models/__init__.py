@@ -14,13 +14,3 @@ __all__ = [
     "n_link_pendulum_linearization",
     "pendulum_symbols",
 ]
-
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
-
-_guard_public_api(__name__)
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)

@@ -39,6 +39,7 @@ import sympy as sp
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ..numeric import bind, resolve
 from ..numeric import compile as _compile
@@ -393,6 +394,7 @@ class BodyOnSprings(SymPyPrintable):
         return ModalData(omega, phi, obs, lam * z0**2, z0**2, q0, C @ q0, M, K, C)
 
 
+@validated
 def body_on_springs(
     n_springs: int = 4, *, layout: str | None = None, product_of_inertia: str = "tensor"
 ) -> BodyOnSprings:

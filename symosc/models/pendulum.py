@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from .._validate import check_bool, check_choice
+from .._validate import check_bool, check_choice, validated
 from ..errors import ModelError, ParameterError
 from ..mechanics import LagrangianSystem, LinearModel
 from ..symbols import dot, t
@@ -48,6 +48,7 @@ class _CatalogueError(ParameterError, ModelError):
     """A bad argument of a catalogue model: a ParameterError, and a ModelError for callers that catch those."""
 
 
+@validated
 def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
     """The parameter symbols of the catalogue's n-link pendulum (names ``m1, l1, lc1, J1, ...``).
 
@@ -68,6 +69,7 @@ def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
     }
 
 
+@validated
 def n_link_pendulum(
     n: int,
     *,
@@ -144,6 +146,7 @@ def n_link_pendulum(
     return LagrangianSystem(T, V, list(phi))
 
 
+@validated
 def n_link_pendulum_linearization(
     n: int, *, links: str = "point", inverted: bool = False, pivot: str = "fixed"
 ) -> LinearModel:
@@ -215,6 +218,7 @@ def n_link_pendulum_linearization(
     )
 
 
+@validated
 def gribkov_khokhlov_table1() -> dict[str, float]:
     """Parameters of the double physical pendulum of Gribkov & Khokhlov (2015), Table 1, in SI units.
 

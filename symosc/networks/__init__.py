@@ -1,97 +1,121 @@
 """Networks and passive systems: one-ports, four-poles, synthesis, filters, vibration absorbers.
 
-After Bulgakov (1954), §8.31–8.49 and ch. 9 B–D.
+After Bulgakov (1954), §8.31–8.49 and ch. 9 B–D.  The methods are grouped in three subpackages; every public name is
+available here (``symosc.networks.brune_synthesis``):
+
+=====================  ===================================================================================
+:mod:`.ports`          port algebra: one-ports, four-poles, parameter sets, connections, sections, image
+                       parameters, junctions, mechanical analogues, energy functions
+:mod:`.synthesis`      the positive-real test, Foster, Cauer, Brune, Bott–Duffin and M-function syntheses,
+                       constant-resistance correcting links and cascades
+:mod:`.filters`        image-parameter filters, matching pads, dynamic vibration absorbers
+=====================  ===================================================================================
+
+Exact arithmetic over nested number fields, shared by the synthesis procedures and the one-ports, is the private
+core ``symosc.networks._exact``.
 """
 
-from .absorber import (
+from .._deprecation import moved_modules as _moved_modules
+from .filters import (
     Absorber,
+    FilterSection,
     HInfinityOptimum,
+    MatchingPad,
     absorber_fixed_points,
     absorber_hinf_optimum,
     absorber_optimum,
     amplification_squared,
-)
-from .analogues import (
-    Damper,
-    Mass,
-    MechanicalElement,
-    MechanicalParallel,
-    MechanicalSeries,
-    Spring,
-    chain_driving_point,
-    to_electrical,
-    to_mechanical,
-)
-from .bott_duffin import bott_duffin_synthesis
-from .brune import brune_synthesis, minimum_real_part
-from .connections import brune_test, cascade, chain_power, parallel, parallel_series, series, series_parallel
-from .conversions import PARAMETER_KINDS, convert_parameters
-from .correcting import (
-    CORRECTING_LINKS,
-    BridgedTLink,
-    CorrectingLink,
-    constant_resistance_bridged_t,
-    correcting_link,
-    link_transfer,
-)
-from .correcting_cascade import CorrectingCascade, correcting_cascade
-from .energy import EnergyFunctions, EnergyValues, ReactanceCheck, check_reactance_theorem, energy_functions
-from .filters import (
-    FilterSection,
     bandpass_attenuation_poles,
     constant_k_section,
     frequency_map,
     image_operating_loss,
     lattice_from_transmission,
     m_derived_section,
+    matching_l_pad,
 )
-from .foster_cauer import cauer_first, cauer_second, foster_first, foster_second, is_reactance_function
-from .fourpoles import FourPole
-from .image import (
+from .ports import (
+    PARAMETER_KINDS,
+    BruneSection,
+    Capacitor,
+    CascadeJunctions,
+    Damper,
+    EnergyFunctions,
+    EnergyValues,
+    FourPole,
     ImageParameters,
+    Impedance,
+    Inductor,
     IterativeParameters,
+    Mass,
+    MechanicalElement,
+    MechanicalParallel,
+    MechanicalSeries,
+    OnePort,
+    Parallel,
+    ReactanceCheck,
+    Resistor,
+    Series,
+    Spring,
     TerminatedResponse,
+    bridged_t_section,
+    brune_test,
+    cascade,
+    cascade_junctions,
+    chain_driving_point,
+    chain_power,
+    check_reactance_theorem,
+    convert_parameters,
+    energy_functions,
+    equivalent_two_pole,
+    ideal_transformer,
     image_parameters,
     insertion_loss,
     iterative_parameters,
-    terminated_response,
-    working_loss,
-)
-from .junctions import CascadeJunctions, cascade_junctions
-from .m_functions import m_abscissa, m_function_synthesis, richards_function
-from .oneports import (
-    BruneSection,
-    Capacitor,
-    Impedance,
-    Inductor,
-    OnePort,
-    Parallel,
-    Resistor,
-    Series,
-    equivalent_two_pole,
-)
-from .pads import MatchingPad, matching_l_pad
-from .positive_real import (
-    PositiveRealReport,
-    biquadratic_is_positive_real,
-    is_m_function,
-    is_positive_real,
-    positive_real_report,
-    real_part_on_axis,
-)
-from .sections import (
-    bridged_t_section,
-    ideal_transformer,
     l_section,
     lattice,
     lattice_phase_network,
+    parallel,
+    parallel_series,
     pi_section,
+    series,
     series_element,
+    series_parallel,
     shunt_element,
     t_section,
+    terminated_response,
+    to_electrical,
+    to_mechanical,
     transformer,
     twin_t_notch,
     twin_t_section,
+    working_loss,
+)
+from .synthesis import (
+    CORRECTING_LINKS,
+    BridgedTLink,
+    CorrectingCascade,
+    CorrectingLink,
+    PositiveRealReport,
+    biquadratic_is_positive_real,
+    bott_duffin_synthesis,
+    brune_synthesis,
+    cauer_first,
+    cauer_second,
+    constant_resistance_bridged_t,
+    correcting_cascade,
+    correcting_link,
+    foster_first,
+    foster_second,
+    is_m_function,
+    is_positive_real,
+    is_reactance_function,
+    link_transfer,
+    m_abscissa,
+    m_function_synthesis,
+    minimum_real_part,
+    positive_real_report,
+    real_part_on_axis,
+    richards_function,
 )
 
 __all__ = [
@@ -192,12 +216,32 @@ __all__ = [
     "working_loss",
 ]
 
-# public functions refuse invalid arguments with ParameterError (symosc/_validate.py)
-from .._validate import guard_public_api as _guard_public_api
-
-_guard_public_api(__name__)
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public  # noqa: E402
-
-_add_printing_hooks_to_public(__name__)
+#: module paths before the split into port algebra, synthesis and filters (old -> new); deprecated
+_moved_modules(
+    __name__,
+    {
+        "_correcting": "synthesis._correcting",
+        "_loops": "ports._loops",
+        "_nodal": "ports._nodal",
+        "_synthesis": "synthesis._synthesis",
+        "_tower": "_exact.tower",
+        "absorber": "filters.absorber",
+        "analogues": "ports.analogues",
+        "bott_duffin": "synthesis.bott_duffin",
+        "brune": "synthesis.brune",
+        "connections": "ports.connections",
+        "conversions": "ports.conversions",
+        "correcting": "synthesis.correcting",
+        "correcting_cascade": "synthesis.correcting_cascade",
+        "energy": "ports.energy",
+        "foster_cauer": "synthesis.foster_cauer",
+        "fourpoles": "ports.fourpoles",
+        "image": "ports.image",
+        "junctions": "ports.junctions",
+        "m_functions": "synthesis.m_functions",
+        "oneports": "ports.oneports",
+        "pads": "filters.pads",
+        "positive_real": "synthesis.positive_real",
+        "sections": "ports.sections",
+    },
+)

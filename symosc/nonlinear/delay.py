@@ -28,7 +28,7 @@ import sympy as sp
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
-from .._validate import check_positive
+from .._validate import check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
 
@@ -109,6 +109,7 @@ class QuasiPolynomial(SymPyPrintable):
         return max(len(c) - 1 for _, c in self.terms)
 
 
+@validated
 def quasi_polynomial(f: Any, variable: sp.Symbol | None = None) -> QuasiPolynomial:
     """Parse ``f`` as ``sum_k P_k(p) exp(-tau_k p)`` with numeric coefficients and delays ``tau_k >= 0``.
 
@@ -205,6 +206,7 @@ def _winding(q: QuasiPolynomial, vertices: list[complex], max_segments: int = 2_
     return int(n), n_eval
 
 
+@validated
 def count_roots(f: Any, region: tuple[float, float, float, float], variable: sp.Symbol | None = None) -> int:
     """Certified number of roots (with multiplicity) of a quasi-polynomial inside the open rectangle.
 
@@ -278,6 +280,7 @@ class DelayRoots(SymPyPrintable):
         return ax
 
 
+@validated
 def quasi_polynomial_roots(
     f: Any,
     region: tuple[float, float, float, float],
@@ -400,6 +403,7 @@ def _polish(q: QuasiPolynomial, derivs: list, box: tuple, m: int, dps: int, tol:
         return z
 
 
+@validated
 def characteristic_quasipolynomial(
     l01: Any, l11: Any, l21: Any, l02: Any, l12: Any, l22: Any, variable: sp.Symbol = p
 ) -> sp.Expr:
@@ -412,6 +416,7 @@ def characteristic_quasipolynomial(
     return l01 * s**2 + l11 * s + l21 + sp.exp(-s) * (l02 * s**2 + l12 * s + l22)
 
 
+@validated
 def callender_hartree_porter_optimum() -> dict[str, sp.Expr]:
     """Optimal degree of stability of ``gamma^2 + (rho gamma + sigma) exp(-gamma) = 0`` (Bulgakov §4.16).
 
@@ -446,6 +451,7 @@ def callender_hartree_porter_optimum() -> dict[str, sp.Expr]:
     }
 
 
+@validated
 def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
     """Best degree of stability of ``gamma^2 + rho gamma + sigma exp(-gamma) = 0`` for a given ``rho`` (§4.17).
 

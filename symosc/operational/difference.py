@@ -26,6 +26,7 @@ from functools import cached_property
 import sympy as sp
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots
 
@@ -42,6 +43,7 @@ _n = sp.Symbol("n", integer=True, nonnegative=True)
 _gamma = sp.Symbol("gamma")
 
 
+@validated
 def step_image(h, n: sp.Symbol = _n, gamma: sp.Symbol = _gamma) -> sp.Expr:
     """Carson image, as a function of ``gamma = exp(p tau)``, of the step function with values ``x_n = h(n)``.
 
@@ -66,6 +68,7 @@ def step_image(h, n: sp.Symbol = _n, gamma: sp.Symbol = _gamma) -> sp.Expr:
     return sp.factor(sp.simplify((1 - 1 / gamma) * total))
 
 
+@validated
 def inverse_step_image(image, gamma: sp.Symbol = _gamma, n: sp.Symbol = _n) -> sp.Expr:
     """Sequence ``x_n`` of the step function whose Carson image is the rational function ``image`` of ``gamma``.
 
@@ -157,6 +160,7 @@ class DifferenceSolution(SymPyPrintable):
         return [self.response.subs(self.n, k).doit().applyfunc(sp.simplify) for k in range(count)]
 
 
+@validated
 def solve_difference(f, e, inputs=None, initial=None, *, T: sp.Symbol | None = None, n: sp.Symbol = _n):
     """Solve ``f(T) y = e(T) x`` with the advance operator ``T y_n = y_{n+1}`` (Bulgakov 2.119–2.130).
 
@@ -342,6 +346,7 @@ def _p_integral(a, t: sp.Symbol, p: sp.Symbol, tau) -> sp.Expr:
     return sp.simplify(p * sp.integrate(sp.sympify(a) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p))
 
 
+@validated
 def indefinite_sum(x, t: sp.Symbol, tau, piece=None, *, p: sp.Symbol | None = None, image=None) -> IndefiniteSum:
     """Indefinite sum: every ``y`` with first difference ``Delta y = y(t + tau) - y(t) = x(t)`` (Bulgakov 2.67–2.68).
 

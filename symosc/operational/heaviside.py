@@ -9,6 +9,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
+from .._validate import validated
 from ..errors import ConvergenceError, ModelError
 from ..symbols import t as _t
 from ._rational import as_rational, distinct_roots, has_floats, real_form, residue_terms
@@ -16,6 +17,7 @@ from ._rational import as_rational, distinct_roots, has_floats, real_form, resid
 __all__ = ["first_expansion", "heaviside_expand", "residue_inverse"]
 
 
+@validated
 def heaviside_expand(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True, roots: str = "exact"):
     """Original of a rational Carson image by the second expansion theorem (Bulgakov 2.74).
 
@@ -168,6 +170,7 @@ def _cancel_polys(num: sp.Poly, den: sp.Poly) -> tuple[sp.Poly, sp.Poly]:
     return num, den
 
 
+@validated
 def residue_inverse(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True):
     """Original as the sum of residues of ``X(p) exp(p t)/p`` (Bulgakov 2.141), for images ``A(p)/B(p)``.
 
@@ -208,6 +211,7 @@ def residue_inverse(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True
     return real_form(total, t) if real else total
 
 
+@validated
 def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, tol=None):
     """Original from the expansion ``X(p) = a0 + a1/p + a2/p**2 + ...`` (first expansion theorem, Bulgakov 2.72).
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots, exactify, has_floats
 
@@ -27,24 +28,30 @@ _METHODS = ("auto", "hurwitz", "closed", "residues")
 
 
 def _hurwitz_rows(polynomial: sp.Poly) -> sp.Matrix:
-    """``Hw_s[i, j] = k_(2j-i)``: the transpose of :func:`symosc.linear.hurwitz_matrix` (Bulgakov (8.117))."""
-    from ..linear import hurwitz_matrix
-
-    return sp.Matrix(hurwitz_matrix(polynomial)).T
+    """``Hw_s[i, j] = k_(2j-i)`` (0-based ``k_m``, zero outside ``0..s``): the transpose of the Hurwitz matrix of
+    Bulgakov (1954), eq. (8.117) (the criterion with its verdicts and margins is :func:`symosc.linear.hurwitz`)."""
+    k = polynomial.all_coeffs()
+    s = len(k) - 1
+    return sp.Matrix(s, s, lambda i, j: k[2 * j - i + 1] if 0 <= 2 * j - i + 1 <= s else 0)
 
 
 def _hurwitz_verdict(polynomial: sp.Poly) -> bool | None:
-    """True / False when the Hurwitz conditions are decided, None when they stay symbolic."""
-    from ..linear import hurwitz
-
-    stable = hurwitz(polynomial).stable  # floats are taken exactly
-    if stable in (True, sp.true):
-        return True
-    if stable in (False, sp.false):
+    """True / False when the Hurwitz conditions (Bulgakov (1954), §8.18: ``k0 > 0``, the leading minors
+    ``Δ1 .. Δ_(s-1)`` and ``ks`` positive, after making ``k0`` positive) are decided, None when they stay symbolic.
+    Floats are taken exactly."""
+    k = [sp.nsimplify(c, rational=True) if isinstance(c, sp.Float) else c for c in polynomial.all_coeffs()]
+    if k[0].is_negative:
+        k = [-c for c in k]
+    H = _hurwitz_rows(sp.Poly(k, polynomial.gens[0])).T
+    s = len(k) - 1
+    conditions = [k[0], *(H[:i, :i].det(method="bareiss") for i in range(1, s)), k[-1]]
+    signs = [sp.simplify(c).is_positive for c in conditions]
+    if any(sign is False for sign in signs):
         return False
-    return None
+    return True if all(signs) else None
 
 
+@validated
 def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
     """``prod_(i<j) (z_i + z_j)`` over the roots of ``A0 p**s + … + As`` by Orlando's formula (Bulgakov 2.165–2.167).
 
@@ -155,6 +162,7 @@ def _finish(value, floats: bool, method: str):
     return sp.factor(sp.cancel(value)) if value.free_symbols else sp.simplify(value)
 
 
+@validated
 def integral_square(numerator, denominator, p: sp.Symbol, *, image: str = "laplace", method: str = "auto"):
     """``Integral(x(t)**2, (t, 0, oo))`` for the original ``x`` of a rational image (Bulgakov 2.151–2.167).
 
@@ -222,6 +230,7 @@ def _integral(g, den, p, method, floats):
     return _finish(value, floats, method)
 
 
+@validated
 def cross_integral(
     numerator_x, denominator_x, numerator_y, denominator_y, p: sp.Symbol, *, image: str = "laplace",
     method: str = "auto",

@@ -24,6 +24,7 @@ import sympy as sp
 
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ..symbols import t as _t
 from .heaviside import heaviside_expand
@@ -164,6 +165,7 @@ def _apply_poly(poly_expr, p, x, t):
     return sp.Add(*[c * sp.diff(x, t, r) for r, c in enumerate(_coeffs(poly_expr, p))])
 
 
+@validated
 def solve_operational(
     f,
     e,

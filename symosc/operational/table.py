@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..symbols import t as _t
 
 __all__ = ["CARSON_TABLE", "TableEntry", "carson_by_table", "carson_matrix_exp", "table_entry"]
@@ -164,6 +165,7 @@ CARSON_TABLE: tuple[TableEntry, ...] = (
 )
 
 
+@validated
 def table_entry(name: str) -> TableEntry:
     """The entry of :data:`CARSON_TABLE` called ``name`` (or with equation number ``name``, e.g. ``"(2.52)"``).
 
@@ -181,6 +183,7 @@ class _Unsupported(Exception):
     """The rewrite engine cannot transform this term (the caller falls back to SymPy)."""
 
 
+@validated
 def carson_by_table(x, t: sp.Symbol = _t, p: sp.Symbol = _p):
     """Carson image of a quasi-polynomial with delayed steps, by the rules (2.52), (2.26a) and linearity.
 
@@ -271,6 +274,7 @@ def _clear_imaginary_unit(result, p):
     return sp.factor(num, p) / sp.factor(den, p)
 
 
+@validated
 def carson_matrix_exp(a, p: sp.Symbol = _p):
     """Carson image of the matrix exponential, ``exp(a t) <-> p (E p - a)**-1`` (Bulgakov 2.53).
 

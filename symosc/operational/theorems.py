@@ -12,6 +12,7 @@ from collections.abc import Sequence
 import sympy as sp
 
 from .._deprecation import renamed_keyword
+from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ._rational import as_rational, distinct_roots
 
@@ -38,6 +39,7 @@ __all__ = [
 ]
 
 
+@validated
 def shift(image, p: sp.Symbol, lam) -> sp.Expr:
     """Damping theorem (2.38): ``p/(p + lam) X(p + lam) <-> exp(-lam t) x(t)``.
 
@@ -49,6 +51,7 @@ def shift(image, p: sp.Symbol, lam) -> sp.Expr:
     return sp.cancel(p / (p + lam) * sp.sympify(image).subs(p, p + lam))
 
 
+@validated
 def delay(image, p: sp.Symbol, tau) -> sp.Expr:
     """Delay theorem (2.26a): ``exp(-p tau) X(p) <-> x(t - tau) 1(t - tau)`` for ``tau >= 0``.
 
@@ -63,6 +66,7 @@ def delay(image, p: sp.Symbol, tau) -> sp.Expr:
     return sp.exp(-p * tau) * sp.sympify(image)
 
 
+@validated
 def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     """Advance theorem (2.27–2.28): ``exp(p tau) [X(p) - alpha(p)] <-> x(t + tau)``.
 
@@ -82,6 +86,7 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     return sp.exp(p * tau) * (sp.sympify(image) - head)
 
 
+@validated
 def finite_sum(image, p: sp.Symbol, tau) -> sp.Expr:
     """Image of ``sum_{j=1}^{floor(t/tau)} x(t - j tau)`` (2.31): ``X(p)/(exp(p tau) - 1)``.
 
@@ -96,6 +101,7 @@ def finite_sum(image, p: sp.Symbol, tau) -> sp.Expr:
     return sp.sympify(image) / (sp.exp(p * tau) - 1)
 
 
+@validated
 def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
     """Image of ``Delta x(t) = x(t + tau) - x(t)`` (2.34): ``(exp(p tau) - 1) X(p) - exp(p tau) alpha(p)``.
 
@@ -145,6 +151,7 @@ def _check_order(m, what: str) -> int:
     return int(m)
 
 
+@validated
 def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = None, *, original=None) -> sp.Expr:
     """m-fold advance theorem (2.29–2.30): image of ``T**m x(t) = x(t + m tau)``,
 
@@ -181,6 +188,7 @@ def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = 
     return sp.exp(p * m * tau) * sp.sympify(image) - sp.Add(*[sp.exp(p * (m - j) * tau) * alphas[j] for j in range(m)])
 
 
+@validated
 def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = None, *, original=None) -> sp.Expr:
     """Image of the m-th finite difference ``Delta**m x(t)``, ``Delta = T - 1`` (2.35–2.37):
 
@@ -219,6 +227,7 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
     return (g - 1) ** m * sp.sympify(image) - g * sp.Add(*[(g - 1) ** (m - j - 1) * betas[j] for j in range(m)])
 
 
+@validated
 @renamed_keyword({"order": "n"})
 def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
     """Differentiation with respect to a parameter (2.42): ``d^k X(p, s)/ds^k <-> d^k x(t, s)/ds^k``.
@@ -239,6 +248,7 @@ def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
     return sp.diff(sp.sympify(image), s, int(n))
 
 
+@validated
 def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
     """Integration with respect to a parameter (2.41): ``Integral(X(p, s), (s, s0, s1)) <-> Integral(x(t, s), (s, s0,
     s1))``; ``s1`` defaults to ``s`` itself (the book's variable upper limit).
@@ -257,6 +267,7 @@ def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
     return sp.integrate(sp.sympify(image), (s, s0, upper))
 
 
+@validated
 def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     """Similarity theorem (2.46): ``X(p/a) <-> x(a t)``, ``a > 0``.
 
@@ -271,6 +282,7 @@ def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     return sp.sympify(image).subs(p, p / a)
 
 
+@validated
 @renamed_keyword({"order": "n"})
 def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int | None = None) -> sp.Expr:
     """Image of the ``m``-th derivative (2.18): ``p**m X - p**m x(0) - p**(m-1) x'(0) - … - p x^(m-1)(0)``.
@@ -292,6 +304,7 @@ def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int |
     return p**m * sp.sympify(image) - sp.Add(*[p ** (m - k) * init[k] for k in range(m)])
 
 
+@validated
 def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Expr:
     """Image of the ``m``-fold integral from 0 (2.11–2.12): ``X(p)/p**m``; with ``constant`` = value at 0 of an
     indefinite (single) integral, ``X/p + constant`` (2.14).
@@ -308,6 +321,7 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
     return sp.sympify(image) / p**times + constant
 
 
+@validated
 @renamed_keyword({"order": "n"})
 def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     """Image of ``t**m x(t)`` (2.23): ``(-1)**m p d^m/dp^m [X(p)/p]``.
@@ -322,6 +336,7 @@ def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     return sp.cancel((-1) ** n * p * sp.diff(sp.sympify(image) / p, p, n))
 
 
+@validated
 def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     """Image of ``Integral(x(u) y(t - u), (u, 0, t))`` (2.43): ``X(p) Y(p)/p``.
 
@@ -333,6 +348,7 @@ def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     return sp.sympify(image_x) * sp.sympify(image_y) / p
 
 
+@validated
 def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     """Image of ``d/dt Integral(x(u) y(t - u), (u, 0, t))`` (2.45, Duhamel): ``X(p) Y(p)``.
 
@@ -351,6 +367,7 @@ def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     return sp.sympify(image_x) * sp.sympify(image_y)
 
 
+@validated
 def initial_value(image, p: sp.Symbol) -> sp.Expr:
     """``x(0+) = lim_{p -> oo} X(p)`` (2.47).
 
@@ -372,6 +389,7 @@ def _poles_checked(expr, p, what: str) -> list[tuple[sp.Expr, int]]:
     return distinct_roots(den)
 
 
+@validated
 def final_value(image, p: sp.Symbol) -> sp.Expr:
     """``x(oo) = X(0)`` (2.49), *only* when the limit exists.
 
@@ -411,6 +429,7 @@ def final_value(image, p: sp.Symbol) -> sp.Expr:
     return sp.cancel(image).subs(p, 0)
 
 
+@validated
 def integral_to_infinity(image, p: sp.Symbol) -> sp.Expr:
     """``Integral(x, (t, 0, oo)) = [X(p)/p]_{p=0}`` (2.48), when every pole of ``X/p`` is in ``Re p < 0``.
 
@@ -430,6 +449,7 @@ def integral_to_infinity(image, p: sp.Symbol) -> sp.Expr:
     return sp.cancel(image / p).subs(p, 0)
 
 
+@validated
 def product_of_originals(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     """Image of the product ``x(t) y(t)`` (Bulgakov 2.143–2.144) for a rational ``Y``:
 

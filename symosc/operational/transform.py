@@ -16,7 +16,7 @@ import sympy as sp
 from .. import numeric
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
-from .._validate import check_finite_array, check_int, check_positive
+from .._validate import check_finite_array, check_int, check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..symbols import t as _t
 from ._rational import check_expression, check_symbol, distinct_roots
@@ -29,6 +29,7 @@ _METHODS = ("auto", "table", "sympy")
 _INV_METHODS = ("auto", "heaviside", "sympy")
 
 
+@validated
 def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "auto"):
     """Carson image ``p * Laplace[x](p)`` of an original ``x(t)`` (scalar or Matrix).
 
@@ -83,6 +84,7 @@ def carson(x, t: sp.Symbol = _t, p: sp.Symbol | None = None, *, method: str = "a
     return sp.simplify(p * lap)
 
 
+@validated
 def inverse_carson(
     image, p: sp.Symbol, t: sp.Symbol = _t, *, method: str = "auto", real: bool = True, roots: str = "exact"
 ):
@@ -276,6 +278,7 @@ class NumericInversion(SymPyPrintable):
         return ax
 
 
+@validated
 def invert_numeric(
     image,
     p: sp.Symbol,
@@ -388,6 +391,7 @@ def invert_numeric(
     return NumericInversion(t=ts, values=arr, error_estimate=err, method=method, converged=True)
 
 
+@validated
 def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *, backend: str = "auto") -> Any:
     """A rational transfer function W(p), such as a ratio Y(p)/U(p) of Carson images, as a control object.
 

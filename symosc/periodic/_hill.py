@@ -280,3 +280,15 @@ def log_gap_estimates(n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         )
     above = np.where(h >= h_peak, np.minimum(large, math.log(2 * n + 1)), math.log(2 * n + 1))
     return below, above
+
+
+def refined_value(fam: str, k: int, qf: float, tol: float) -> tuple[float, float]:
+    """``(value, error estimate)`` of the characteristic value ``k`` of family ``fam`` at ``q = qf``: the float64
+    eigenpair refined by the Rayleigh quotient in extended precision (:func:`solve_refined`), and the mpmath solver
+    when that misses ``tol`` relative (absolute below 1)."""
+    s, _vec = solve_refined(fam, k, qf)
+    if s.error_estimate <= tol * max(1.0, abs(s.value)):
+        return s.value, s.error_estimate
+    dps = max(20, int(-math.log10(tol)) + 6)
+    s = solve_mp(fam, k, mpmath.mpf(qf), dps)
+    return float(s.value), abs(float(s.value) - s.value) + s.error_estimate

@@ -42,9 +42,7 @@ def _scipy(kind: str):
 
 
 def _fallback(kind: str, n: int, q: float, tol) -> tuple[float, float]:
-    from .mathieu import _Solver
-
-    return _Solver("auto", None, tol)._compute(kind, n, q, None)
+    return _hill.refined_value(*_hill.family_index(kind, n), q, tol or DEFAULT_TOL)
 
 
 # ----------------------------------------------------------------------------------------------------------- scalar

@@ -33,225 +33,16 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
-from ..errors import ConvergenceError, ParameterError
-from .floquet import monodromy
-from .ince_strutt import series_boundary
-from .stability import StabilityRegion, _ParametricModel, stability_region
+from .._validate import validated
+from .stability import ACHESON_BETA, stability_region
 
 __all__ = ["ACHESON_BETA", "MethodComparison", "compare_methods"]
-
-#: Acheson's bound on beta_N = q_N / 2 (his Mathieu scaling) for the highest mode.
-ACHESON_BETA = 0.450
-
-
-# ---------------------------------------------------------------------------------------- Floquet
-class _CoupledFloquet:
-    """Monodromy of the full coupled system in first-tone coordinates."""
-
-    def __init__(self, model: _ParametricModel, rtol: float):
-        p1 = model.natural_frequencies[0]
-        B = np.linalg.solve(model.M, model.S / p1**2)
-        n = B.shape[0]
-        self.n = n
-        self.rtol = rtol
-        self.base = np.zeros((2 * n, 2 * n))
-        self.base[:n, n:] = np.eye(n)
-        self.negB = np.zeros((2 * n, 2 * n))
-        self.negB[n:, :n] = -B
-        self.R = np.diag([1.0] * n + [-1.0] * n)
-        self.rN = float(model.ratios[-1])
-        self.evaluations = 0
-
-    def result(self, a1: float, q1: float) -> Any:
-        base, negB = self.base, self.negB
-
-        def A(tau: float) -> np.ndarray:
-            return base + (a1 - 2.0 * q1 * np.cos(2.0 * tau)) * negB
-
-        self.evaluations += 1
-        return monodromy(A, np.pi, reversor=self.R, rtol=self.rtol, atol=1e-14, check_periodic=False)
-
-    def indicator(self, a1: float, q1: float) -> float:
-        return self.result(float(a1), float(q1)).hamiltonian_indicator
-
-    def classify(self, a1: np.ndarray, q1: np.ndarray) -> np.ndarray:
-        out = np.array([self.indicator(x, y) < 0 for x, y in zip(a1.ravel(), q1.ravel(), strict=True)])
-        return out.reshape(a1.shape)
-
-    def _stable_point(self, q: float) -> float | None:
-        lo_g, hi_g = -q * q / 2, self.rN - q  # Otterbein's approximations, used only as search hints
-        a, b = min(lo_g, hi_g) - 0.1 * q - 1e-3, max(lo_g, hi_g) + 0.1 * q + 1e-3
-        cands = np.linspace(a, b, 25)
-        mid = 0.5 * (lo_g + hi_g)
-        for x in cands[np.argsort(np.abs(cands - mid))]:
-            if self.indicator(x, q) < 0:
-                return float(x)
-        return None
-
-    @lru_cache(maxsize=4096)  # noqa: B019 - one engine per region, kept alive by it
-    def boundaries(self, q: float) -> tuple[float, float]:
-        from scipy.optimize import brentq
-
-        if not q > 0:
-            return (np.nan, np.nan)
-        xs = self._stable_point(q)
-        if xs is None:
-            return (np.nan, np.nan)
-
-        def g(x: float) -> float:
-            return self.indicator(x, q)
-
-        h = max(0.25 * q * q, 1e-4)
-        x_prev, x = xs, xs - h
-        while g(x) < 0:
-            x_prev, h = x, 2 * h
-            x = x_prev - h
-            if h > 1e6:
-                raise ConvergenceError(f"floquet: no lower boundary found at q = {q}")
-        lower = brentq(g, x, x_prev, xtol=1e-14, rtol=1e-13)
-        h = 0.25 * q
-        x_prev, x = xs, xs + h
-        steps = 0
-        while g(x) < 0:
-            x_prev, x = x, x + h
-            steps += 1
-            if steps > 400:
-                return (float(lower), np.nan)
-        upper = brentq(g, x_prev, x, xtol=1e-14, rtol=1e-13)
-        return (float(lower), float(upper))
-
-    def lower(self, q: np.ndarray) -> np.ndarray:
-        return np.array([self.boundaries(float(x))[0] for x in np.ravel(q)]).reshape(np.shape(q))
-
-    def upper(self, q: np.ndarray) -> np.ndarray:
-        return np.array([self.boundaries(float(x))[1] for x in np.ravel(q)]).reshape(np.shape(q))
-
-    def q_bounds(self, a1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Principal interval ``q_lo < q < q_hi`` at fixed ``a^1 < 0`` by root finding along q."""
-        from scipy.optimize import brentq
-
-        lo_out, hi_out = [], []
-        for a in np.ravel(a1):
-            a = float(a)
-
-            def g(q: float, a: float = a) -> float:
-                return self.indicator(a, q)
-
-            ql_g, qh_g = np.sqrt(max(-2 * a, 0.0)), self.rN - a
-            cands = np.linspace(min(ql_g, qh_g) * 0.8, max(ql_g, qh_g) * 1.2, 25)
-            mid = 0.5 * (ql_g + qh_g)
-            qs = next((float(c) for c in cands[np.argsort(np.abs(cands - mid))] if c > 0 and g(c) < 0), None)
-            if qs is None:
-                lo_out.append(np.nan)
-                hi_out.append(np.nan)
-                continue
-            tiny = 1e-9 * qs
-            lo_out.append(brentq(g, tiny, qs, xtol=1e-15, rtol=1e-13) if g(tiny) > 0 else 0.0)
-            h = 0.1 * qs
-            x_prev, x = qs, qs + h
-            while g(x) < 0:
-                x_prev, x = x, x + h
-                if x > 1e3 * qs:
-                    break
-            hi_out.append(brentq(g, x_prev, x, xtol=1e-15, rtol=1e-13) if g(x) > 0 else np.inf)
-        shape = np.shape(a1)
-        return np.array(lo_out).reshape(shape), np.array(hi_out).reshape(shape)
-
-
-# ---------------------------------------------------------------------------------------- builders
-def _envelope_lower(ratios: Sequence[float], f: Any) -> Any:
-    def lower(q: np.ndarray) -> np.ndarray:
-        return np.max([r * f(q / r) for r in ratios], axis=0)
-
-    return lower
-
-
-def _build(method: str, model: _ParametricModel, ratios: tuple, *, order: int = 1, rtol: float = 1e-12) -> Any:
-    rN = ratios[-1]
-    kap = series_boundary("a", 0, 1)  # -q**2/2
-    common = {"natural_frequencies": model.natural_frequencies, "ratios": ratios, "_model": model}
-
-    def approximate(notes: str, lower: Any, upper: Any, q_bounds: Any) -> StabilityRegion:
-        """A region given by closed-form boundary curves a1 = lower(q1), upper(q1)."""
-        return StabilityRegion(
-            method=method,
-            diagram=None,
-            notes=notes,
-            _lower=lower,
-            _upper=upper,
-            _classify=lambda a1, q1: (a1 > lower(q1)) & (a1 < upper(q1)),
-            _q_bounds=q_bounds,
-            **common,
-        )
-
-    if method == "floquet":
-        eng = _CoupledFloquet(model, rtol)
-        return StabilityRegion(
-            method=method,
-            diagram=None,
-            notes="Floquet multipliers of the full coupled 2N-dim. system (DOP853, half period by reversibility)",
-            _lower=eng.lower,
-            _upper=eng.upper,
-            _classify=eng.classify,
-            _q_bounds=eng.q_bounds,
-            **common,
-        )
-    if method == "otterbein":
-        lower = _envelope_lower(ratios, kap)
-        b1 = series_boundary("b", 1, 2)  # 1 - q
-
-        def upper(q: np.ndarray) -> np.ndarray:
-            return np.min([r * b1(q / r) for r in ratios], axis=0)
-
-        def qb(a1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-            return np.sqrt(-2 * a1), rN - a1
-
-        notes = "Otterbein (1982), reconstructed: a0 ~ -q^2/2 (mode 1), b1 ~ 1 - q (mode N)"
-        return approximate(notes, lower, upper, qb)
-    if method == "acheson":
-        lower = _envelope_lower(ratios, kap)
-        q_cap = 2 * ACHESON_BETA * rN
-
-        def upper(q: np.ndarray) -> np.ndarray:
-            return np.where(q < q_cap, np.inf, -np.inf)
-
-        def qb(a1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-            return np.sqrt(-2 * a1), np.full(np.shape(a1), q_cap)
-
-        notes = "Acheson (1993) pendulum theorem, reconstructed: q1 > sqrt(-2 a1) and q_N < 2*0.450"
-        return approximate(notes, lower, upper, qb)
-    if method == "chelomei":
-        if order not in (1, 2):
-            raise ParameterError(f"chelomei: order must be 1 or 2, got {order!r}")
-        f = series_boundary("a", 0, order)
-        lower = _envelope_lower(ratios, f)
-
-        def upper(q: np.ndarray) -> np.ndarray:
-            return np.full(np.shape(q), np.inf)
-
-        c = f.expr.as_coefficients_dict()
-
-        def qb(a1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-            if order == 1:
-                return np.sqrt(-2 * a1), np.full(np.shape(a1), np.inf)
-            # smallest positive root of c2 x + c4 x^2 = a1, x = q^2
-            qs = next(iter(f.expr.free_symbols))
-            c2, c4 = float(c[qs**2]), float(c[qs**4])
-            disc = c2 * c2 + 4 * c4 * a1
-            with np.errstate(invalid="ignore"):
-                x = (-c2 - np.sqrt(disc)) / (2 * c4)
-            return np.sqrt(x), np.full(np.shape(a1), np.inf)
-
-        notes = f"Chelomei (1999) Kapitza averaging, approximation {order}, reconstructed (lower boundary only)"
-        return approximate(notes, lower, upper, qb)
-    raise ParameterError(f"unknown method {method!r}")
 
 
 # ---------------------------------------------------------------------------------------- comparison
@@ -331,6 +122,7 @@ class MethodComparison(SymPyPrintable):
         return ax
 
 
+@validated
 def compare_methods(
     system: Any,
     values: Any,

@@ -31,7 +31,7 @@ import sympy as sp
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
-from .._validate import check_positive
+from .._validate import check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
 from ..symbols import sort_symbols, t
@@ -260,6 +260,7 @@ def _auto_reversor(A_sym: Any, n: int) -> np.ndarray | None:
     return None
 
 
+@validated
 def monodromy(
     A: Any,
     period: float,
@@ -401,6 +402,7 @@ def monodromy(
     )
 
 
+@validated
 def floquet_multipliers(A: Any, period: float, **kwargs: Any) -> np.ndarray:
     """Floquet multipliers of ``x' = A(t) x`` (shortcut for ``monodromy(...).floquet_multipliers``).
 

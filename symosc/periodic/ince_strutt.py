@@ -27,6 +27,7 @@ from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -59,6 +60,7 @@ def _as_float_array(x: Any, name: str) -> np.ndarray:
     return arr
 
 
+@validated
 def mathieu_stable(a: Any, q: Any) -> np.ndarray:
     """True where the Mathieu equation ``y'' + (a - 2q cos 2x) y = 0`` has only bounded solutions.
 
@@ -207,6 +209,7 @@ class InceStruttDiagram(SymPyPrintable):
         return ax
 
 
+@validated
 @renamed_keyword({"orders": "n_max"})
 def ince_strutt_diagram(n_max: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
     """Characteristic curves ``a_0..a_n_max``, ``b_1..b_n_max`` on ``q in [0, q_max]``.
@@ -379,6 +382,7 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         return ax
 
 
+@validated
 def modified_ince_strutt(
     ratios: float | Sequence[float], *, lower_terms: int | None = None, upper_terms: int | None = None
 ) -> ModifiedInceStruttDiagram:

@@ -52,7 +52,7 @@ import mpmath
 import numpy as np
 
 from .._printing import SymPyPrintable
-from .._validate import validates_own_arguments
+from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
 from . import _hill, _mathieu_auto
 from .mathieu_series import _check_n, mathieu_series_value
@@ -159,13 +159,7 @@ class _Solver:
         if self.method == "series":
             r = mathieu_series_value(kind, n, qm if self.dps else qf, tol=self.tol or _DEFAULT_TOL, dps=self.dps)
             return r.value, r.error_estimate
-        s, _vec = _hill.solve_refined(fam, k, qf)
-        target = (self.tol or _DEFAULT_TOL) * max(1.0, abs(s.value))
-        if s.error_estimate <= target:
-            return s.value, s.error_estimate
-        dps = max(20, int(-math.log10(self.tol or _DEFAULT_TOL)) + 6)
-        s = _hill.solve_mp(fam, k, mpmath.mpf(qf), dps)
-        return float(s.value), abs(float(s.value) - s.value) + s.error_estimate
+        return _hill.refined_value(fam, k, qf, self.tol or _DEFAULT_TOL)
 
     def accuracy(self, value) -> float:
         if self.method == "mp":
@@ -202,6 +196,7 @@ def _value_at(kind: str, n: int, q: float, qm, gaps: tuple[float, float], solver
     return value, err
 
 
+@validated
 def mathieu_characteristic(
     kind: str, n, q, *, method: str = "auto", dps: int | None = None, tol: float | None = None
 ) -> MathieuValues:
@@ -342,6 +337,7 @@ def _check_tol(kind: str, n: int, values, errors, tol) -> None:
             raise ConvergenceError(f"{kind}_{n}: error estimate {worst:.3g} above tol={tol:g}", achieved=worst)
 
 
+@validated
 def mathieu_kernel() -> str:
     """Which kernel method ``"auto"`` runs: ``"c"`` (compiled) or ``"numpy"`` (fallback).
 
@@ -367,7 +363,6 @@ def mathieu_kernel() -> str:
     return _mathieu_auto.mathieu_kernel()
 
 
-@validates_own_arguments
 def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float | None = None):
     """Characteristic value a_n(q) of the Mathieu equation y'' + (a - 2q cos 2x) y = 0.
 
@@ -405,7 +400,6 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     return mathieu_characteristic("a", n, q, method=method, dps=dps, tol=tol).values
 
 
-@validates_own_arguments
 def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float | None = None):
     """Characteristic value b_n(q), n >= 1, of the Mathieu equation y'' + (a - 2q cos 2x) y = 0.
 

@@ -28,6 +28,7 @@ import mpmath
 import sympy
 
 from .._printing import SymPyPrintable
+from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
 from ._hill import family_index
 
@@ -130,6 +131,7 @@ def _series(kind: str, n, order, symbol) -> sympy.Expr:
     )
 
 
+@validated
 def mathieu_series_a(n: int, order: int, *, symbol: sympy.Symbol | None = None) -> sympy.Expr:
     """Power series of the characteristic value a_n(q) up to and including q**order, exact.
 
@@ -160,6 +162,7 @@ def mathieu_series_a(n: int, order: int, *, symbol: sympy.Symbol | None = None) 
     return _series("a", n, order, symbol)
 
 
+@validated
 def mathieu_series_b(n: int, order: int, *, symbol: sympy.Symbol | None = None) -> sympy.Expr:
     """Power series of the characteristic value b_n(q) (n >= 1) up to and including q**order, exact.
 
@@ -239,6 +242,7 @@ def _growth(coeffs: tuple[Fraction, ...]) -> float:
     return math.exp((l2 - l1 + 1.5 * math.log(j2 / j1)) / (j2 - j1))
 
 
+@validated
 def mathieu_series_value(
     kind: str, n: int, q, *, order: int | None = None, tol: float = 1e-13, max_order: int = 100, dps=None
 ) -> SeriesValue:
@@ -325,6 +329,7 @@ def mathieu_series_value(
     )
 
 
+@validated
 def mathieu_series_radius(kind: str, n: int, order: int = 60) -> float:
     """Estimate the radius of convergence of the series of a_n or b_n from its coefficients.
 

@@ -32,8 +32,3 @@ __all__ = [
     "load",
     "loads",
 ]
-
-# SymPy printer hooks (sympy.latex, sstr, pretty) and pickling support on every public model and result
-from .._printing import add_printing_hooks_to_public as _add_printing_hooks_to_public
-
-_add_printing_hooks_to_public(__name__)

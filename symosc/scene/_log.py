@@ -7,11 +7,13 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from .._printing import SymPyPrintable
+
 __all__ = ["DerivationLog", "LogEntry"]
 
 
 @dataclass(frozen=True)
-class LogEntry:
+class LogEntry(SymPyPrintable):
     """One derivation or evaluation step: its name, wall time in seconds and a short detail.
 
     >>> LogEntry("linearize at q = 0", 0.0123)
@@ -26,7 +28,7 @@ class LogEntry:
         return f"LogEntry({self.step!r}, {self.seconds * 1e3:.1f} ms)"
 
 
-class DerivationLog:
+class DerivationLog(SymPyPrintable):
     """An append-only list of :class:`LogEntry` filled while a scene runs.
 
     Examples

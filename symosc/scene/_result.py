@@ -10,13 +10,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .._printing import SymPyPrintable
 from ._log import LogEntry
 
 __all__ = ["Figure", "QuestionResult", "SceneResult", "Table"]
 
 
 @dataclass(frozen=True)
-class Table:
+class Table(SymPyPrintable):
     """A small table: column headers, rows of formatted cells and an optional caption.
 
     Examples
@@ -74,7 +75,7 @@ def _numeric(cell: str) -> bool:
 
 
 @dataclass(frozen=True)
-class Figure:
+class Figure(SymPyPrintable):
     """A figure to draw on demand: ``drawer`` names a function of :mod:`symosc.scene._figures`, ``data`` its input.
 
     Figures are drawn only by :meth:`SceneResult.write` (matplotlib is imported there), so a result stays
@@ -97,7 +98,7 @@ class Figure:
 
 
 @dataclass(frozen=True)
-class QuestionResult:
+class QuestionResult(SymPyPrintable):
     """The answer to one question: text lines, tables, figures and JSON-ready ``data``.
 
     Examples
@@ -125,13 +126,12 @@ class QuestionResult:
         latex = self.data.get("latex")
         if isinstance(latex, str):
             return f"$${latex}$$"
-        from .._printing import SymPyPrintable
 
         return f"${SymPyPrintable._summary_latex(self)}$"
 
 
 @dataclass(frozen=True)
-class SceneResult:
+class SceneResult(SymPyPrintable):
     """Results of :meth:`Scene.run`: one :class:`QuestionResult` per question and the derivation log.
 
     ``report()`` is the plain-text report, ``markdown()``/``html()`` the written ones, ``to_json()`` the data;

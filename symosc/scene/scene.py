@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .._printing import SymPyPrintable
 from . import _questions as mq
 from . import _questions_other as oq
 from ._errors import SceneError, closest
@@ -217,7 +218,7 @@ _REQUIRED = {
 
 
 @dataclass
-class Scene:
+class Scene(SymPyPrintable):
     """A validated scene: run it with :meth:`run`.
 
     Attributes

@@ -58,7 +58,7 @@ def test_guard_names_the_argument():
 
 def test_guard_keeps_genuine_bugs_visible():
     """A generic exception from a call with only ordinary arguments is not relabelled as bad input."""
-    from symosc._validate import guard
+    from symosc._validate import validated as guard
 
     def f(x: float) -> float:
         return [1.0][int(x)]
@@ -73,7 +73,7 @@ def test_guard_keeps_genuine_bugs_visible():
 
 def test_message_states_the_expectation_from_the_docstring():
     """The guard's message quotes the numpydoc "Parameters" entry (type and first sentence) of the argument."""
-    from symosc._validate import guard
+    from symosc._validate import validated as guard
 
     def links(n: int, *, kind: str = "point") -> int:
         """Toy.
@@ -106,7 +106,7 @@ def test_message_states_the_expectation_from_the_docstring():
 
 
 def test_message_falls_back_to_the_type_hint():
-    from symosc._validate import guard
+    from symosc._validate import validated as guard
 
     def f(count: int) -> float:
         return 1.0 / count
@@ -118,7 +118,7 @@ def test_message_falls_back_to_the_type_hint():
 def test_vague_error_from_inside_is_completed():
     """A symosc error raised deep inside that names no argument gets the argument and its expectation added (from
     the docstring, else from a documented example); the class is kept."""
-    from symosc._validate import guard
+    from symosc._validate import validated as guard
     from symosc.errors import ModelError
 
     def resonance(stiffness, mass):

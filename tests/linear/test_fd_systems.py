@@ -12,7 +12,7 @@ import sympy as sp
 
 from symosc.errors import ModelError, ParameterError
 from symosc.linear import compatibility, frequency_response, fundamental_solutions, worst_case_gain
-from symosc.linear.fd_systems import NEPERS_PER_DECIBEL
+from symosc.linear.multi_dof.fd_systems import NEPERS_PER_DECIBEL
 
 D, t, b = sp.symbols("D t b")
 

@@ -41,7 +41,7 @@ from symosc.networks import (
     twin_t_notch,
     working_loss,
 )
-from symosc.networks._nodal import chain_from_netlist
+from symosc.networks.ports._nodal import chain_from_netlist
 
 p = sp.Symbol("p")
 ZA, ZB, ZC, ZD = sp.symbols("Z_A Z_B Z_C Z_D")

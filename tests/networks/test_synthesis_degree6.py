@@ -324,7 +324,7 @@ def _check_printed(net):
 def test_nested_extension_without_flint_uses_sympy(monkeypatch):
     """The same degree-4 field is reached through SymPy alone (resultant, factorisation, real roots, linear
     solve) when python-flint is missing."""
-    from symosc.networks import _exact
+    from symosc.networks._exact import fields as _exact
 
     monkeypatch.setattr(_exact, "flint_module", lambda: None)
     net = (
@@ -413,7 +413,7 @@ def _tower_converter(K):
     """Map an element value, as printed (a polynomial in each level's ``CRootOf`` and the base field's generator),
     into the tower field ``K`` by evaluating its expression tree in ``K``: each ``CRootOf(φ)`` of a level is that
     level's primitive element ``γ`` (``φ(γ) = 0``), the base field's generator its own generator."""
-    from symosc.networks._tower import TowerField, levels
+    from symosc.networks._exact.tower import TowerField, levels
 
     images = {}
     for F in levels(K):
@@ -450,7 +450,7 @@ def test_degree_32_field_under_the_default_limit(monkeypatch):
     digits.  All values lie in one tower (written level by level above degree 24: one ``CRootOf`` per level, of distinct
     degrees, each dividing the next, 32 at the top): the second remainder of each Bott–Duffin cycle is the dual
     of the first, built in its field (synthesised separately, the branches used five fields, two of degree 32)."""
-    from symosc.networks import _tower
+    from symosc.networks._exact import tower as _tower
 
     with pytest.raises(ModelError, match=r"degree 32 > 24"):
         bott_duffin_synthesis(_NEEDS_32, p, max_degree=24)

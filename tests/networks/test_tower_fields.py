@@ -13,9 +13,10 @@ from sympy import QQ
 from sympy.polys.densearith import dup_add, dup_mul, dup_sub
 from sympy.polys.densebasic import dup_strip
 
-from symosc.networks import _exact as ex
-from symosc.networks import _tower, bott_duffin_synthesis
-from symosc.networks._tower import TowerElement, TowerField
+from symosc.networks import bott_duffin_synthesis
+from symosc.networks._exact import fields as ex
+from symosc.networks._exact import tower as _tower
+from symosc.networks._exact.tower import TowerElement, TowerField
 
 from .test_synthesis_degree6 import _check_exact, _values
 

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 from symosc.errors import ModelError, ParameterError
-from symosc.nonlinear.averaging import a, averaged_equations, describing_function
+from symosc.nonlinear.averaging.shortened import a, averaged_equations, describing_function
 from symosc.symbols import t
 
 x, v = sp.symbols("x v", real=True)
@@ -309,7 +309,7 @@ def test_two_mode_competition_vs_direct_integration():
     """§12.11–12.12 (multi-frequency averaging, non-resonant w = 1, sqrt2): two van der Pol modes with cross
     saturation beta.  Averaging: a_i' = (eps/2) a_i (1 - a_i^2/4 - beta a_j^2/2); both modes coexist for
     beta < 1/2 (a^2 = 4/(1 + 2 beta)), one suppresses the other for beta > 1/2.  Checked by direct integration."""
-    from symosc.nonlinear.averaging_ndof import averaged_equations_ndof
+    from symosc.nonlinear.averaging.multi_frequency import averaged_equations_ndof
 
     x1, x2, v1, v2 = sp.symbols("x1 x2 v1 v2", real=True)
     beta = sp.Symbol("beta", positive=True)
@@ -344,7 +344,7 @@ def test_two_mode_competition_vs_direct_integration():
 
 
 def test_ndof_resonance_refused():
-    from symosc.nonlinear.averaging_ndof import averaged_equations_ndof
+    from symosc.nonlinear.averaging.multi_frequency import averaged_equations_ndof
 
     x1, x2, v1, v2 = sp.symbols("x1 x2 v1 v2", real=True)
     with pytest.raises(ModelError, match="resonance"):
@@ -431,7 +431,7 @@ def test_quadratic_spring_center_shift():
 def test_dry_friction_torus_average_table15():
     """Seed 004 §12.14 (seed-bulgakov-part3b.md T18): G(x, y) closed forms vs a direct 2-D midpoint average of
     sign(x sin u1 + y sin u2) sin u1 (independent), and Table 15 (B, R for y/x = 0.1 ... 1, 2, 5, oo)."""
-    from symosc.nonlinear.averaging_ndof import _B, dry_friction_ratio, dry_friction_torus_average
+    from symosc.nonlinear.averaging.multi_frequency import _B, dry_friction_ratio, dry_friction_torus_average
 
     n = 1200
     u = (np.arange(n) + 0.5) * 2 * np.pi / n

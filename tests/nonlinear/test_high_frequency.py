@@ -14,7 +14,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from symosc.errors import ModelError, ParameterError
-from symosc.nonlinear.high_frequency import fast_averaged_system, vibrational_averaging
+from symosc.nonlinear.averaging.high_frequency import fast_averaged_system, vibrational_averaging
 from symosc.symbols import dot, t
 
 th = sp.Symbol("theta")
@@ -170,7 +170,7 @@ def test_vibrational_averaging_of_model_single_link():
     """The lead's n_link_pendulum(1, inverted=True, pivot="vertical") through vibrational_averaging_of: the same
     Kapitza condition (angle from the upward vertical, so the inverted position is phi1 = 0)."""
     from symosc.models import n_link_pendulum
-    from symosc.nonlinear.high_frequency import vibrational_averaging_of
+    from symosc.nonlinear.averaging.high_frequency import vibrational_averaging_of
 
     res = vibrational_averaging_of(n_link_pendulum(1, inverted=True, pivot="vertical"))
     (phi1,) = res.coordinates
@@ -200,7 +200,7 @@ def test_two_link_inverted_pendulum_vs_floquet():
     definite exactly where the Floquet multipliers of the linearized system stay on the unit circle (a/l = 0.01,
     p at 0.85 and 1.2 times the averaged threshold)."""
     from symosc.models import n_link_pendulum
-    from symosc.nonlinear.high_frequency import vibrational_stiffness
+    from symosc.nonlinear.averaging.high_frequency import vibrational_stiffness
 
     lin = n_link_pendulum(2, inverted=True, pivot="vertical").linearize()
     K = vibrational_stiffness(lin)

@@ -15,14 +15,14 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from symosc.errors import ConvergenceError, ModelError, ParameterError
-from symosc.nonlinear.piecewise import (
+from symosc.nonlinear.special.piecewise import (
     coulomb_oscillator,
     half_swing_map,
     quadratic_drag_eta,
     quadratic_drag_eta_series,
     quadratic_drag_half_swing_times,
 )
-from symosc.nonlinear.special_systems import (
+from symosc.nonlinear.special.special_systems import (
     backlash_critical_gap,
     clock_escapement,
     radinger_flywheel,

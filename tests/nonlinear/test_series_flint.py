@@ -12,7 +12,8 @@ from fractions import Fraction as R
 import pytest
 import sympy as sp
 
-from symosc.nonlinear import _fourier, limit_cycle
+from symosc.nonlinear import limit_cycle
+from symosc.nonlinear.series import _fourier
 
 x, v = sp.symbols("x v")
 
