@@ -1,0 +1,1 @@
+"""Mathieu functions: ce, se, modified functions, Floquet exponent and solutions."""
