@@ -108,10 +108,10 @@ def function(kind: str, n: int, q: float, x, derivative: bool = False, coef=None
             xm = mpmath.mpf(float(xv))
             if not derivative:
                 f = mpmath.cos if kind == "ce" else mpmath.sin
-                s = mpmath.fsum(c * f(k * xm) for k, c in zip(idx, v))
+                s = mpmath.fsum(c * f(k * xm) for k, c in zip(idx, v, strict=True))
             elif kind == "ce":
-                s = -mpmath.fsum(k * c * mpmath.sin(k * xm) for k, c in zip(idx, v))
+                s = -mpmath.fsum(k * c * mpmath.sin(k * xm) for k, c in zip(idx, v, strict=True))
             else:
-                s = mpmath.fsum(k * c * mpmath.cos(k * xm) for k, c in zip(idx, v))
+                s = mpmath.fsum(k * c * mpmath.cos(k * xm) for k, c in zip(idx, v, strict=True))
             out.append(float(s))
     return np.array(out)

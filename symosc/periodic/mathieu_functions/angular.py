@@ -189,7 +189,8 @@ class MathieuFunctionValues(SymPyPrintable):
     def __repr__(self) -> str:
         name = f"{self.kind}_{self.n}" + ("'" if self.derivative else "")
         worst = float(np.max(self.error_estimate)) if np.size(self.error_estimate) else 0.0
-        return f"MathieuFunctionValues({name}, {np.size(self.values)} value(s), terms={self.terms}, max error={worst:.2g})"
+        size = np.size(self.values)
+        return f"MathieuFunctionValues({name}, {size} value(s), terms={self.terms}, max error={worst:.2g})"
 
     def _repr_latex_(self) -> str:
         prime = "'" if self.derivative else ""
@@ -289,7 +290,7 @@ def mathieu_function(
     --------
     >>> r = mathieu_function("ce", 0, 1.0, 0.0)
     >>> round(r.values, 12), r.error_estimate < 1e-13
-    (0.53107057662, True)
+    (0.384827829301, True)
     """
     kind, n = _check_kind_n(kind, n)
     tol = _check_tol(tol)
@@ -322,10 +323,10 @@ def mathieu_ce(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
 
     Examples
     --------
-    >>> round(mathieu_ce(0, 0.0, 1.0), 15) == round(2**-0.5, 15)
+    >>> abs(mathieu_ce(0, 0.0, 1.0) - 2**-0.5) < 1e-15    # ce_0 -> 1/sqrt(2) as q -> 0
     True
-    >>> mathieu_ce(2, 1.0, [0.0, 0.5]).round(10)
-    array([0.9588493495, 0.5225082089])
+    >>> mathieu_ce(2, 1.0, [0.0, 0.5]).round(8)
+    array([1.08596194, 0.76076844])
     """
     n = check_int("n", n, minimum=0)
     return _values("ce", n, q, x, _check_tol(tol), False).values
@@ -355,10 +356,11 @@ def mathieu_se(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
 
     Examples
     --------
-    >>> round(mathieu_se(1, 0.0, 0.5), 15) == round(float(__import__("math").sin(0.5)), 15)
+    >>> import math
+    >>> abs(mathieu_se(1, 0.0, 0.5) - math.sin(0.5)) < 1e-15   # se_n -> sin nx as q -> 0
     True
     >>> round(mathieu_se(1, 1.0, 1.0), 10)
-    0.7536306637
+    0.8166845062
     """
     n = check_int("n", n, minimum=1)
     return _values("se", n, q, x, _check_tol(tol), False).values
@@ -391,7 +393,7 @@ def mathieu_ce_prime(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> An
     >>> round(mathieu_ce_prime(1, 0.0, 0.0), 15)
     -0.0
     >>> round(mathieu_ce_prime(0, 1.0, 0.5), 10)
-    0.311592137
+    0.4481542814
     """
     n = check_int("n", n, minimum=0)
     return _values("ce", n, q, x, _check_tol(tol), True).values
@@ -509,7 +511,7 @@ def mathieu_fourier_coefficients(kind: str, n: int, q: float, *, tol: float = _D
     --------
     >>> c = mathieu_fourier_coefficients("ce", 0, 1.0)
     >>> c.index[:3].tolist(), c.values[:2].round(10).tolist()
-    ([0, 2, 4], [0.6729896721, -0.3063035803])
+    ([0, 2, 4], [0.6729896723, -0.30630358])
     """
     kind, n = _check_kind_n(kind, n)
     qf = np.array([_fourier_q(q)])
@@ -567,8 +569,8 @@ def mathieu_coefficient_series(kind: str, n: int, order: int, *, symbol: sympy.S
     Returns
     -------
     dict
-        Fourier index k -> SymPy polynomial in q (Rational coefficients, times 1/sqrt(2) for ce_0's family ce_{2m}
-        only through the normalisation of A_0 ... all exact).
+        Fourier index k -> SymPy polynomial in q (exact: Rational coefficients, times 1/sqrt(2) for ce_{2m},
+        whose normalisation is 2 A_0^2 + sum A_k^2 = 1).
 
     See Also
     --------
@@ -578,7 +580,7 @@ def mathieu_coefficient_series(kind: str, n: int, order: int, *, symbol: sympy.S
     --------
     >>> c = mathieu_coefficient_series("ce", 0, 2)
     >>> c[0], c[2]
-    (sqrt(2)/2 - sqrt(2)*q**2/16, -sqrt(2)*q/4)
+    (-sqrt(2)*q**2/32 + sqrt(2)/2, -sqrt(2)*q/4)
     """
     kind, n = _check_kind_n(kind, n)
     order = check_int("order", order, minimum=0, maximum=60)
@@ -628,7 +630,7 @@ def mathieu_function_series(
     Examples
     --------
     >>> mathieu_function_series("ce", 0, 1)
-    sqrt(2)/2 - sqrt(2)*q*cos(2*x)/4
+    -sqrt(2)*q*cos(2*x)/4 + sqrt(2)/2
     """
     xs = sympy.Symbol("x") if x is None else x
     if not isinstance(xs, sympy.Symbol):
