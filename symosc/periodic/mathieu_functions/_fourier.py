@@ -112,9 +112,15 @@ def eigenvectors(kind: str, n: int, q: np.ndarray, lam: np.ndarray, size: int) -
         cond_u[:-1] = (absd[:-1] + np.abs(b[:-1] / np.where(u[1:] == 0.0, tiny, u[1:]))) / np.abs(
             np.where(u[:-1] == 0.0, tiny, u[:-1])
         )
+        # a tiny pivot (a node of the coefficient sequence) has a huge condition, but the product of its ratio with
+        # the next one, t_j t_{j+1} = t_j (d_{j+1} - lambda) - b_j, is well conditioned: cap the single-ratio value
+        cond_t = np.minimum(cond_t, 1e3)
+        cond_u = np.minimum(cond_u, 1e3)
         c_up = np.where(rows < m, 3.0 + cond_t, 0.0)
         c_down = np.where(rows > m, 3.0 + cond_u, 0.0)
-        rel = (np.cumsum(c_up[::-1], axis=0)[::-1] + np.cumsum(c_down, axis=0)) * _EPS
+        # rounding errors of the ratios are independent: root-sum-square along the path (a linear sum overstates
+        # the measured errors by two orders of magnitude at q = 1e4)
+        rel = np.sqrt(np.cumsum((c_up * c_up)[::-1], axis=0)[::-1] + np.cumsum(c_down * c_down, axis=0)) * _EPS
         norm = np.sqrt(np.sum(z * z, axis=0))
         z /= np.where(z[0] < 0, -norm, norm)
     eigenvectors.last_rel = rel  # type: ignore[attr-defined]
@@ -161,9 +167,8 @@ def error_bounds(kind: str, n: int, q: np.ndarray, lam: np.ndarray, lam_err: np.
     coef, idx = co["coef"], co["index"]
     size = coef.shape[0]
     h = np.sqrt(np.abs(q))
-    # spacing to the neighbours of the same family: 4(n + 1) at q = 0, 8h - 2(n + 2) at large q (DLMF 28.8.1);
-    # three quarters of it as the estimate
-    gap = 0.75 * np.maximum(4.0 * (n + 1.0), 8.0 * h - 2.0 * (n + 2.0))
+    # spacing to the neighbours of the same family: 4(n + 1) at q = 0, 8h - 2(n + 2) at large q (DLMF 28.8.1)
+    gap = np.maximum(4.0 * (n + 1.0), 8.0 * h - 2.0 * (n + 2.0))
     dz = (lam_err + co["resid"]) / gap  # 2-norm of the eigenvector change (Davis-Kahan)
     absc = np.abs(coef)
     ik = idx[:, None].astype(float)
