@@ -2,7 +2,8 @@
 
 Reference: 40-digit Fourier coefficients from Sturm bisection and a Thomas solve in mpmath
 (tests/periodic/mathieu_reference.py -- no symosc code), summed at 40 digits.  Grid: n in {0, 1, 5, 10, 20, 35, 50},
-q in {0, 1, 10, 100, 1000, 5000, 1e4}, 16 x over a period.  SciPy takes x in degrees (its derivative is returned per radian).
+q in {0, 1, 10, 100, 1000, 5000, 1e4}, 16 x over a period.  SciPy takes x in degrees
+(its derivative is returned per radian).
 An error of order one for SciPy means a wrong function (wrong branch or lost normalisation).
 
     python benchmarks/mathieu_functions_vs_scipy.py
@@ -19,8 +20,8 @@ import numpy as np
 import scipy.special as sp
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from symosc.periodic import mathieu_function  # noqa: E402
-from tests.periodic import mathieu_reference as ref  # noqa: E402
+from symosc.periodic import mathieu_function
+from tests.periodic import mathieu_reference as ref
 
 NS = (0, 1, 5, 10, 20, 35, 50)
 QS = (0.0, 1.0, 10.0, 100.0, 1000.0, 5000.0, 1e4)
