@@ -1,4 +1,4 @@
-"""Periodic systems: Mathieu characteristic values, Floquet theory, Ince–Strutt stability diagrams."""
+"""Periodic systems: Mathieu characteristic values and functions, Floquet theory, Ince–Strutt stability diagrams."""
 
 from .comparison import MethodComparison, compare_methods
 from .floquet import FloquetResult, floquet_multipliers, monodromy
@@ -11,6 +11,8 @@ from .ince_strutt import (
     series_boundary,
 )
 from .mathieu import MathieuValues, mathieu_a, mathieu_b, mathieu_characteristic, mathieu_kernel
+from .mathieu_functions import *  # noqa: F403  (ce/se, modified functions, Floquet exponent and solutions)
+from .mathieu_functions import __all__ as _mathieu_functions_all
 from .mathieu_series import (
     SeriesValue,
     mathieu_series_a,
@@ -44,4 +46,5 @@ __all__ = [
     "monodromy",
     "series_boundary",
     "stability_region",
+    *_mathieu_functions_all,
 ]
