@@ -28,7 +28,7 @@ import sympy
 
 from ..._plotting import new_axes, plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import check_choice, check_finite_array, check_int, check_positive
+from ..._validate import check_choice, check_finite_array, check_int, check_positive, validated
 from ...errors import ConvergenceError, ParameterError
 from . import _fourier
 
@@ -250,6 +250,7 @@ def _values(kind: str, n: int, q: Any, x: Any, tol: float, derivative: bool) -> 
     )  # fmt: skip
 
 
+@validated
 def mathieu_function(
     kind: str, n: int, q: Any, x: Any, *, derivative: bool = False, tol: float = _DEFAULT_TOL
 ) -> MathieuFunctionValues:
@@ -299,6 +300,7 @@ def mathieu_function(
     return _values(kind, n, q, x, tol, bool(derivative))
 
 
+@validated
 def mathieu_ce(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     """Even periodic Mathieu function ce_n(x, q), normalised as DLMF 28.2.30 (x in radians).
 
@@ -332,6 +334,7 @@ def mathieu_ce(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     return _values("ce", n, q, x, _check_tol(tol), False).values
 
 
+@validated
 def mathieu_se(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     """Odd periodic Mathieu function se_n(x, q), n >= 1, normalised as DLMF 28.2.30 (x in radians).
 
@@ -366,6 +369,7 @@ def mathieu_se(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     return _values("se", n, q, x, _check_tol(tol), False).values
 
 
+@validated
 def mathieu_ce_prime(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     """x-derivative of ce_n(x, q) (x in radians).
 
@@ -399,6 +403,7 @@ def mathieu_ce_prime(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> An
     return _values("ce", n, q, x, _check_tol(tol), True).values
 
 
+@validated
 def mathieu_se_prime(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> Any:
     """x-derivative of se_n(x, q), n >= 1 (x in radians).
 
@@ -485,6 +490,7 @@ class MathieuCoefficients(SymPyPrintable):
         return ax
 
 
+@validated
 def mathieu_fourier_coefficients(kind: str, n: int, q: float, *, tol: float = _DEFAULT_TOL) -> MathieuCoefficients:
     """Normalised Fourier coefficients A_k^n(q) or B_k^n(q) of ce_n or se_n (DLMF 28.4).
 
@@ -552,6 +558,7 @@ def _inverse_sqrt_series(norm: list[Fraction], order: int) -> list[Fraction]:
     return out
 
 
+@validated
 def mathieu_coefficient_series(kind: str, n: int, order: int, *, symbol: sympy.Symbol | None = None) -> dict:
     """Exact power series in q of the normalised Fourier coefficients of ce_n or se_n (DLMF 28.6).
 
@@ -601,6 +608,7 @@ def mathieu_coefficient_series(kind: str, n: int, order: int, *, symbol: sympy.S
     return out
 
 
+@validated
 def mathieu_function_series(
     kind: str, n: int, order: int, *, x: sympy.Symbol | None = None, symbol: sympy.Symbol | None = None
 ) -> sympy.Expr:

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..._plotting import new_axes, plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import check_finite, check_finite_array
+from ..._validate import check_finite, check_finite_array, validated
 from ...errors import ConvergenceError, ParameterError
 from . import _fourier
 
@@ -128,6 +128,7 @@ def _broadcast_aq(a: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
         raise ParameterError(f"a (shape {aa.shape}) and q (shape {qa.shape}) cannot be broadcast together") from None
 
 
+@validated
 def mathieu_floquet_exponent(a: Any, q: Any) -> MathieuExponent:
     """Characteristic exponent nu(a, q) with cos(pi nu), the zone, stability and an error estimate.
 
@@ -169,6 +170,7 @@ def mathieu_floquet_exponent(a: Any, q: Any) -> MathieuExponent:
                            stable.reshape(shape), err.reshape(shape))  # fmt: skip
 
 
+@validated
 def mathieu_exponent(a: Any, q: Any) -> Any:
     """Characteristic exponent nu(a, q) of the Mathieu equation (DLMF 28.2(iv), 28.12-28.13).
 
@@ -235,6 +237,7 @@ def _check_nu(nu: Any) -> float:
     return nu
 
 
+@validated
 def mathieu_lambda(nu: float, q: Any) -> Any:
     """Eigenvalue lambda_nu(q) for real non-integer order nu (DLMF 28.12.1): the a with exponent nu.
 
@@ -267,6 +270,7 @@ def mathieu_lambda(nu: float, q: Any) -> Any:
     return float(out[0]) if qa.ndim == 0 else out.reshape(qa.shape)
 
 
+@validated
 def mathieu_me(nu: float, q: float, x: Any, *, derivative: bool = False) -> Any:
     """Floquet solution me_nu(x, q) = sum c_{2m} e^{i (nu + 2m) x} for real non-integer nu (DLMF 28.12).
 
@@ -425,6 +429,7 @@ def _ode(a: float, q: float, xs: np.ndarray, rtol: float) -> np.ndarray:
     return out
 
 
+@validated
 def mathieu_fundamental(a: float, q: float, x: Any, *, tol: float = 1e-10) -> FundamentalSolutions:
     """Fundamental solutions w_I, w_II (and derivatives) of y'' + (a - 2q cos 2x) y = 0 at any (a, q).
 

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..._plotting import new_axes, plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import check_choice, check_finite_array, check_int, check_positive
+from ..._validate import check_choice, check_finite_array, check_int, check_positive, validated
 from ...errors import ConvergenceError, ParameterError
 from .._hill import family_index
 from .angular import _coefficient_table
@@ -157,6 +157,7 @@ class ModifiedMathieuValues(SymPyPrintable):
         return ax
 
 
+@validated
 def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float = 1e-8) -> ModifiedMathieuValues:
     """Modified Mathieu function Mc_n^(j)(z, h) or Ms_n^(j)(z, h), h = sqrt(q), with its z-derivative.
 
@@ -243,6 +244,7 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
                                  err.reshape(shape), derr.reshape(shape))  # fmt: skip
 
 
+@validated
 def mathieu_mc(kind: int, n: int, q: Any, z: Any) -> Any:
     """Modified Mathieu function Mc_n^(j)(z, h), h = sqrt(q) > 0, of kind j = 1..4 (DLMF 28.20, 28.24.2-3).
 
@@ -276,6 +278,7 @@ def mathieu_mc(kind: int, n: int, q: Any, z: Any) -> Any:
     return mathieu_modified("Mc", kind, n, q, z).values
 
 
+@validated
 def mathieu_ms(kind: int, n: int, q: Any, z: Any) -> Any:
     """Modified Mathieu function Ms_n^(j)(z, h), h = sqrt(q) > 0, n >= 1, of kind j = 1..4 (DLMF 28.24.4-5).
 
@@ -306,6 +309,7 @@ def mathieu_ms(kind: int, n: int, q: Any, z: Any) -> Any:
     return mathieu_modified("Ms", kind, n, q, z).values
 
 
+@validated
 def mathieu_mc_prime(kind: int, n: int, q: Any, z: Any) -> Any:
     """z-derivative of Mc_n^(j)(z, h).
 
@@ -336,6 +340,7 @@ def mathieu_mc_prime(kind: int, n: int, q: Any, z: Any) -> Any:
     return mathieu_modified("Mc", kind, n, q, z).derivatives
 
 
+@validated
 def mathieu_ms_prime(kind: int, n: int, q: Any, z: Any) -> Any:
     """z-derivative of Ms_n^(j)(z, h).
 
