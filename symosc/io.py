@@ -2,8 +2,10 @@
 
 :func:`save` writes ``<name>.pkl`` (the object, reloadable with :func:`load`) and ``<name>.json``: the class, the
 symosc version, the parameters and the equations or matrices as ``sympy.srepr`` strings, so the derivation can be
-inspected (or rebuilt with ``sympy.sympify``) without unpickling anything.  Load pickles only from sources you
-trust (a pickle can run code); :func:`load_summary` reads the JSON side, which is always safe.
+inspected without unpickling anything.  Load pickles only from sources you trust (a pickle can run code).
+:func:`load_summary` reads the JSON side without running anything from it: the ``srepr`` strings are parsed against
+an explicit grammar (calls of a listed set of SymPy classes and functions, symbol names, assumption flags), never
+evaluated, and bounded in size.
 """
 
 from __future__ import annotations
@@ -62,8 +64,9 @@ def summary(obj: Any) -> dict[str, Any]:
     >>> s = summary(n_link_pendulum(1))
     >>> s["class"], s["parameters"]
     ('symosc.mechanics.lagrange.LagrangianSystem', ['g', 'l1', 'm1'])
-    >>> sp.sympify(s["symbolic"]["mass_matrix"])
-    Matrix([[l1**2*m1*sin(phi1)**2 + l1**2*m1*cos(phi1)**2]])
+    >>> s["symbolic"]["mass_matrix"][:40]
+    'MutableDenseMatrix([[Add(Mul(Pow(Symbol('
+
     """
     from . import __version__
 
@@ -142,20 +145,57 @@ def load(path: str | Path) -> Any:
     return pickle.loads(pkl.read_bytes())
 
 
+#: the largest summary file read (bytes): a summary of a 40-link pendulum is about 3 MB
+MAX_SUMMARY_BYTES = 64 * 2**20
+
+
 @validated
 def load_summary(path: str | Path) -> dict[str, Any]:
     """The JSON summary written by :func:`save`, with the ``srepr`` strings turned back into SymPy objects.
+
+    Nothing in the file is executed: each ``srepr`` string is parsed by :func:`symosc._parsing.parse_srepr`
+    (calls of listed SymPy classes and functions only, sizes bounded), so a summary from anyone can be read.
+
+    Parameters
+    ----------
+    path : str or Path
+        The ``.json`` file written by :func:`save` (or the name without extension).
+
+    Returns
+    -------
+    dict
+        ``class``, ``symosc_version``, ``repr``, ``parameters`` and ``symbolic`` (name -> SymPy object or list).
+
+    Raises
+    ------
+    ParameterError
+        No such file, a file that is not a summary, or an entry outside the ``srepr`` grammar (the message names the
+        entry).
 
     See Also
     --------
     save, load
     """
+    from ._parsing import ExpressionError, parse_srepr
+
     _, js = _paths(path)
-    if not js.exists():
+    if not js.is_file():
         raise ParameterError(f"no summary at {js}; pass the path given to save()")
-    data = json.loads(js.read_text())
+    if js.stat().st_size > MAX_SUMMARY_BYTES:
+        raise ParameterError(
+            f"{js} is {js.stat().st_size:,} bytes, more than a summary ({MAX_SUMMARY_BYTES:,} at most)"
+        )
+    try:
+        data = json.loads(js.read_text(encoding="utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ParameterError(f"{js} is not a summary written by save(): {exc}") from None
+    if not isinstance(data, dict) or not isinstance(data.get("symbolic", {}), dict):
+        raise ParameterError(f"{js} is not a summary written by save(): expected a JSON object with 'symbolic'")
     sym = {}
     for k, v in data.get("symbolic", {}).items():
-        sym[k] = [sp.sympify(x) for x in v] if isinstance(v, list) else sp.sympify(v)
+        try:
+            sym[k] = [parse_srepr(x) for x in v] if isinstance(v, list) else parse_srepr(v)
+        except ExpressionError as exc:
+            raise ParameterError(f"{js}: entry {k!r} of 'symbolic': {exc}") from None
     data["symbolic"] = sym
     return data

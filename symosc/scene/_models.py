@@ -123,10 +123,10 @@ def _lagrangian(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> Mechan
     for q in qs:
         names[q.name] = q
         names[f"{q.name}_dot"] = dot(q)
-    names["dot"] = lambda q: dot(q)
-    T = parse_sympy(ctx, ctx.require(opts, "T", "system", '"m*x_dot**2/2"'), "system.T", names)
-    V = parse_sympy(ctx, ctx.require(opts, "V", "system", '"k*x**2/2"'), "system.V", names)
-    R = parse_sympy(ctx, opts.get("R", 0), "system.R", names)
+    functions = {"dot": dot}
+    T = parse_sympy(ctx, ctx.require(opts, "T", "system", '"m*x_dot**2/2"'), "system.T", names, functions)
+    V = parse_sympy(ctx, ctx.require(opts, "V", "system", '"k*x**2/2"'), "system.V", names, functions)
+    R = parse_sympy(ctx, opts.get("R", 0), "system.R", names, functions)
     forces = opts.get("forces")
     Q = None
     if forces is not None:
@@ -136,7 +136,7 @@ def _lagrangian(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> Mechan
                 f"expected a list of {len(qs)} generalised forces (one per coordinate), got {forces!r}",
                 f"write forces = {['0'] * len(qs)}",
             )
-        Q = [parse_sympy(ctx, f, "system.forces", names) for f in forces]
+        Q = [parse_sympy(ctx, f, "system.forces", names, functions) for f in forces]
     from ..errors import ModelError
     from ..mechanics import LagrangianSystem
 
@@ -382,7 +382,7 @@ def build_model(ctx: Ctx, system: Mapping[str, Any], log: DerivationLog):
     name = system.get("model")
     if name is None:
         raise ctx.error("system", "missing required key 'model'", f"add model = one of {', '.join(MODELS)}")
-    if name not in MODELS:
+    if not isinstance(name, str) or name not in MODELS:
         raise ctx.error(
             "system.model",
             f"unknown model {name!r}.{closest(str(name), MODELS)} Known models: {', '.join(MODELS)}",

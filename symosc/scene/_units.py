@@ -78,6 +78,9 @@ def _article(noun: str) -> str:
     return ("an " if noun[0] in "aeiou" else "a ") + noun
 
 
+#: the largest power of a unit atom (m^4 for second moments of area; anything far beyond is a typo or an attack)
+_MAX_UNIT_EXPONENT = 12
+
 _TOKEN = re.compile(r"\s*([*/])?\s*([A-Za-zµ0-9]+)(?:\s*(?:\^|\*\*)\s*(-?\d+))?")
 
 
@@ -90,6 +93,11 @@ def _parse_unit(text: str) -> tuple[float, tuple[int, int, int]]:
         if not m or m.end() == pos or (first and m.group(1)) or (not first and not m.group(1)):
             raise UnitError(f"cannot read the unit {text!r} (write e.g. 'kg*m^2', 'N/m', 'm/s^2')")
         op, atom, exp = m.group(1), m.group(2), int(m.group(3) or 1)
+        if abs(exp) > _MAX_UNIT_EXPONENT:
+            raise UnitError(
+                f"the power {exp} of {atom!r} in {text!r} is not a unit of mechanics "
+                f"(powers up to {_MAX_UNIT_EXPONENT})"
+            )
         if atom not in UNITS:
             from ._errors import closest
 
@@ -124,6 +132,8 @@ def parse_quantity(value: object, dimension: str | None) -> float:
     if isinstance(value, bool):
         raise UnitError(f"expected a number or a 'VALUE UNIT' string, got the boolean {value}")
     if isinstance(value, int | float):
+        if not math.isfinite(value):
+            raise UnitError(f"expected a finite number, got {value}")
         return float(value)
     if not isinstance(value, str):
         raise UnitError(f"expected a number or a 'VALUE UNIT' string, got {type(value).__name__} {value!r}")
@@ -131,6 +141,8 @@ def parse_quantity(value: object, dimension: str | None) -> float:
     if not m:
         raise UnitError(f"cannot read {value!r} as 'VALUE UNIT' (e.g. '45 mm', '1.032 g', '50 Hz')")
     number, unit = float(m.group(1)), m.group(2)
+    if not math.isfinite(number):
+        raise UnitError(f"{value!r}: the number is beyond the range of floating point")
     if not unit:
         return number
     factor, dim = _parse_unit(unit)
@@ -139,4 +151,7 @@ def parse_quantity(value: object, dimension: str | None) -> float:
             f"{value!r} is {_article(_dim_name(dim))}, expected {_article(dimension)} "
             f"(units such as {_EXAMPLES[dimension]})"
         )
-    return number * factor
+    out = number * factor
+    if not math.isfinite(out) or (out == 0 and number != 0):
+        raise UnitError(f"{value!r} is beyond the range of floating point in SI units")
+    return out

@@ -285,6 +285,10 @@ class Scene(SymPyPrintable):
         )
 
 
+#: the largest scene file read (a scene is a page of TOML; a CSV record is referenced, not embedded)
+MAX_SCENE_BYTES = 1_000_000
+
+
 def load(path: str | os.PathLike) -> Scene:
     """Read and validate a scene file (TOML).
 
@@ -328,10 +332,26 @@ def load(path: str | os.PathLike) -> Scene:
     """
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        if p.stat().st_size > MAX_SCENE_BYTES:
+            raise SceneError(
+                str(p),
+                "",
+                f"the file has {p.stat().st_size:,} bytes; a scene file has at most {MAX_SCENE_BYTES:,}",
+                fix="check that this is a scene file",
+            )
+        data = p.read_bytes()
     except OSError as exc:
         raise SceneError(
             str(p), "", f"cannot read the scene file ({exc.strerror or exc})", fix="check the path"
+        ) from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(
+            str(p),
+            "",
+            f"the file is not UTF-8 text (byte {exc.start}: {exc.reason})",
+            fix="save the scene file as UTF-8 (TOML files are UTF-8)",
         ) from None
     return loads(text, name=str(p))
 
@@ -362,9 +382,13 @@ def loads(text: str, *, name: str = "<string>", overrides: Mapping[str, Any] | N
     load : the same from a file.
     """
     ctx = Ctx(name, text)
+    if not isinstance(text, str):
+        raise SceneError(name, "", f"expected the scene as text (str), got {type(text).__name__}", fix="pass a str")
+    if len(text) > MAX_SCENE_BYTES:
+        raise SceneError(name, "", f"the text has {len(text):,} characters; a scene has at most {MAX_SCENE_BYTES:,}")
     try:
         data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+    except (tomllib.TOMLDecodeError, RecursionError) as exc:
         raise SceneError(name, "", f"not valid TOML: {exc}", fix="see https://toml.io for the syntax") from None
     ctx.check_keys(data, TOP_KEYS, "")
     log = DerivationLog()
