@@ -19,8 +19,43 @@ from typing import Any
 NONFINITE = "non-finite result"
 
 
-class PointTimeout(Exception):
-    """Raised inside a point that ran longer than ``timeout`` seconds."""
+class PointTimeout(BaseException):
+    """Raised inside a point that ran longer than ``timeout`` seconds.
+
+    A ``BaseException`` (like ``KeyboardInterrupt``), so that a function's own ``except Exception:`` does not swallow
+    it; a point that swallows it anyway (bare ``except:``) and returns late is still reported as timed out."""
+
+
+#: failures of one sweep (or one worker's chunk) that keep their traceback; later ones keep only the error text
+MAX_TRACES = 20
+
+
+class LazyTrace:
+    """The traceback of an exception, formatted when first asked for (formatting reads source files: a sweep in
+    which thousands of points fail would spend most of its time there).  Pickled (to come back from a worker
+    process) as its text."""
+
+    __slots__ = ("_exc", "_text")
+
+    def __init__(self, exc: BaseException) -> None:
+        self._exc: BaseException | None = exc
+        self._text: str | None = None
+
+    def __str__(self) -> str:
+        if self._text is None:
+            exc, self._exc = self._exc, None
+            self._text = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)) if exc else ""
+        return self._text
+
+    def __reduce__(self) -> tuple:
+        return (str, (str(self),))
+
+
+def trace(exc: BaseException, failures_so_far: int) -> LazyTrace | str:
+    """A :class:`LazyTrace` of ``exc`` for the first :data:`MAX_TRACES` failures, then a note."""
+    if failures_so_far < MAX_TRACES:
+        return LazyTrace(exc)
+    return f"(traceback not kept: only the first {MAX_TRACES} failures of a sweep keep theirs)\n"
 
 
 @dataclass(frozen=True)
@@ -46,16 +81,38 @@ def point_values(axes: tuple[list, ...], i: int) -> tuple:
     return tuple(reversed(out))
 
 
-def _nonfinite(value: Any) -> bool:
+def _nonfinite(value: Any, depth: int = 0) -> bool:
+    """Whether ``value`` holds a NaN or infinity anywhere: floats and complex numbers, NumPy arrays and scalars,
+    SymPy numbers (``nan``, ``zoo``, ``oo``), and the items of lists, tuples, dicts and object arrays."""
+    if isinstance(value, bool | int | str | bytes) or value is None:
+        return False
     if isinstance(value, float):
         return not math.isfinite(value)
-    try:
-        import numpy as np
+    if isinstance(value, complex):
+        return not (math.isfinite(value.real) and math.isfinite(value.imag))
+    if depth > 20:
+        return False
+    import numpy as np
 
-        if isinstance(value, np.ndarray | np.number) and value.dtype.kind in "fc":
+    if isinstance(value, np.ndarray | np.generic):
+        if value.dtype.kind in "fc":
             return not bool(np.isfinite(value).all())
-    except Exception:  # pragma: no cover - numpy is a dependency
-        pass
+        if value.dtype.kind == "O":
+            return any(_nonfinite(v, depth + 1) for v in value.flat)
+        return False
+    if isinstance(value, list | tuple | set | frozenset):
+        return any(_nonfinite(v, depth + 1) for v in value)
+    if isinstance(value, dict):
+        return any(_nonfinite(v, depth + 1) for v in value.values())
+    if type(value).__module__.startswith("sympy"):
+        import sympy as sp
+
+        if isinstance(value, sp.Basic):
+            return bool(value.has(sp.nan, sp.zoo, sp.oo, -sp.oo)) or any(
+                isinstance(a, sp.Float) and not math.isfinite(float(a)) for a in value.atoms(sp.Float)
+            )
+        if isinstance(value, sp.MatrixBase):
+            return any(_nonfinite(v, depth + 1) for v in value)
     return False
 
 
@@ -66,30 +123,43 @@ def _alarm(signum, frame):  # pragma: no cover - signal handler
 def run_task(task: Task) -> list:
     """Evaluate every point of a task: ``[(True, value) | (False, (error, traceback)), ...]`` in order.
 
-    Exceptions (and ``SystemExit``) of a point are recorded, not raised; ``KeyboardInterrupt`` propagates.
+    Exceptions (and ``SystemExit``) of a point are recorded, not raised; ``KeyboardInterrupt`` propagates.  With a
+    ``timeout`` each point runs under ``SIGALRM``; the handler and any timer the caller had set are restored
+    afterwards (the caller's timer less the time the task took).
     """
+    import time
+
     func, names, consts = task.func, task.names, task.constants
     use_timer = task.timeout is not None
     if use_timer:
         old = signal.signal(signal.SIGALRM, _alarm)
+        caller_timer = signal.getitimer(signal.ITIMER_REAL)
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        began = time.monotonic()
     out: list = []
+    late = f"TimeoutError: point ran longer than timeout={task.timeout} s"
     try:
         for i in range(task.start, task.stop):
             kwargs = dict(zip(names, point_values(task.axes, i), strict=True))
             try:
                 if use_timer:
+                    start = time.monotonic()
                     signal.setitimer(signal.ITIMER_REAL, task.timeout)
                     try:
                         value = func(**kwargs, **consts)
                     finally:
                         signal.setitimer(signal.ITIMER_REAL, 0)
+                    if time.monotonic() - start > task.timeout:  # the function swallowed the alarm
+                        out.append((False, (late, "")))
+                        continue
                 else:
                     value = func(**kwargs, **consts)
             except PointTimeout:
-                out.append((False, (f"TimeoutError: point ran longer than timeout={task.timeout} s", "")))
+                out.append((False, (late, "")))
                 continue
             except (Exception, SystemExit) as exc:  # a failing point must not kill the sweep
-                out.append((False, (f"{type(exc).__name__}: {exc}", traceback.format_exc())))
+                kept = sum(1 for ok, _ in out if not ok)
+                out.append((False, (f"{type(exc).__name__}: {exc}", trace(exc, kept))))
                 continue
             if task.nan == "error" and _nonfinite(value):
                 out.append((False, (f"{NONFINITE}: {value!r}", "")))
@@ -98,6 +168,9 @@ def run_task(task: Task) -> list:
     finally:
         if use_timer:
             signal.signal(signal.SIGALRM, old)
+            remaining, interval = caller_timer
+            if remaining > 0:
+                signal.setitimer(signal.ITIMER_REAL, max(remaining - (time.monotonic() - began), 1e-6), interval)
     return out
 
 

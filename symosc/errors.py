@@ -13,6 +13,7 @@ __all__ = [
     "ModelError",
     "ParameterError",
     "SeriesWarning",
+    "SweepWarning",
     "SymoscError",
     "SymoscWarning",
 ]
@@ -58,3 +59,7 @@ class SeriesWarning(SymoscWarning):
 
 class AccuracyWarning(SymoscWarning):
     """A result is returned, but the problem's conditioning limits its accuracy (the message gives the estimate)."""
+
+
+class SweepWarning(SymoscWarning):
+    """A sweep returned, but every point of it failed (the result's ``failures`` say why)."""

@@ -24,7 +24,6 @@ import os
 import pickle
 import sys
 import time
-import traceback
 import warnings
 from collections.abc import Callable, Mapping
 from concurrent.futures import Executor
@@ -47,12 +46,30 @@ _EXECUTOR_NAMES = ("auto", "serial", "processes")
 
 @dataclass(frozen=True)
 class SweepFailure:
-    """A grid point whose call raised: its index in the grid, its parameters, the error and the traceback."""
+    """A grid point whose call raised: its index in the grid, its parameters, the error and the traceback.
+
+    Attributes
+    ----------
+    index : tuple of int
+        The point's index in the grid.
+    params : dict
+        The point's arguments.
+    error : str
+        ``"ExceptionType: message"`` (or the timeout / non-finite result that failed it).
+    trace : str or object
+        The traceback, formatted when :attr:`traceback` is first read (kept for the first 20 failures of a
+        sweep; later ones keep only ``error``).
+    """
 
     index: tuple[int, ...]
     params: dict[str, Any]
     error: str
-    traceback: str = field(repr=False)
+    trace: Any = field(default="", repr=False, compare=False)
+
+    @property
+    def traceback(self) -> str:
+        """The formatted traceback ("" for a timeout or a non-finite result)."""
+        return str(self.trace)
 
 
 @dataclass(frozen=True, repr=False, eq=False)
@@ -110,13 +127,38 @@ class SweepResult:
             f"failures={len(self.failures)}, executor={self.executor!r}{extra})"
         )
 
-    def _value_dims(self) -> list[str]:
-        return [f"value_dim_{i}" for i in range(self.values.ndim - len(self.grid))]
+    def _value_dims(self, dims: Any = None) -> list[str]:
+        extra = self.values.ndim - len(self.grid)
+        if dims is not None:
+            names = [dims] if isinstance(dims, str) else list(dims)
+            if len(names) != extra or not all(isinstance(d, str) for d in names):
+                raise ParameterError(f"dims must name the {extra} axes of each point's value, got {dims!r}")
+            return names
+        return {0: [], 1: ["component"], 2: ["row", "column"]}.get(extra, [f"axis_{i}" for i in range(extra)])
 
-    def to_xarray(self, name: str = "value"):
+    def _dict_results(self) -> list[str] | None:
+        """The common keys when every successful point returned a dict with the same keys (else None)."""
+        if self.values.dtype != object:
+            return None
+        ok = [v for v in self.values.reshape(-1) if v is not None]
+        if not ok or not all(isinstance(v, dict) for v in ok):
+            return None
+        keys = list(ok[0])
+        return keys if all(list(v) == keys for v in ok) else None
+
+    def to_xarray(self, name: str = "value", *, dims: Any = None):
         """The values as an ``xarray.DataArray`` with one coordinate per grid axis (named after it).
 
-        Array-valued results add trailing dimensions ``value_dim_0, ...``.  Needs xarray (``pip install xarray``).
+        Array-valued results add trailing dimensions, named by ``dims`` (default ``"component"`` for vectors,
+        ``"row", "column"`` for matrices).  When every point returns a dict with the same keys, the result is an
+        ``xarray.Dataset`` with one variable per key.  Needs xarray (``pip install xarray``).
+
+        Parameters
+        ----------
+        name : str
+            Name of the DataArray (ignored for a Dataset, whose variables are named by the keys).
+        dims : str or sequence of str, optional
+            Names of the trailing dimensions of array-valued results.
 
         Examples
         --------
@@ -124,6 +166,9 @@ class SweepResult:
         >>> da = res.to_xarray()
         >>> float(da.sel(x=2.0, y=30.0))
         60.0
+        >>> ds = sweep(lambda x: {"a": x, "b": [x, -x]}, {"x": [1.0, 2.0]}, executor="serial").to_xarray()
+        >>> float(ds["a"].sel(x=2.0)), ds["b"].dims
+        (2.0, ('x', 'component'))
 
         See Also
         --------
@@ -133,8 +178,20 @@ class SweepResult:
             import xarray as xr
         except ImportError:
             raise ImportError("SweepResult.to_xarray needs xarray: pip install xarray") from None
-        dims = [*self.grid, *self._value_dims()]
-        return xr.DataArray(self.values, coords=dict(self.grid), dims=dims, name=name)
+        keys = self._dict_results()
+        if keys is not None:
+            flat = self.values.reshape(-1)
+            failed = {i for i, v in enumerate(flat) if v is None}
+            variables = {}
+            for key in keys:
+                entries = [None if v is None else v[key] for v in flat]
+                entries = [np.asarray(e) if isinstance(e, list | tuple) else e for e in entries]
+                column = _pack(entries, self.shape, failed)
+                part = SweepResult(column, self.grid, self.failures, self.executor)
+                variables[key] = part.to_xarray(name=key, dims=dims if column.ndim > len(self.grid) else None)
+            return xr.Dataset(variables)
+        dims_all = [*self.grid, *self._value_dims(dims)]
+        return xr.DataArray(self.values, coords=dict(self.grid), dims=dims_all, name=name)
 
     def to_pandas(self, name: str = "value"):
         """The values as a ``pandas.Series`` indexed by a MultiIndex named after the grid axes.
@@ -250,7 +307,7 @@ def _serial_plain(func, names, points, consts, results, start, stop, nan_error, 
                 out.extend(call(it))  # a C loop; on an exception the points before it are already in ``out``
                 break
             except (Exception, SystemExit) as exc:  # the failing point was consumed: record it and go on
-                bad.append((start + len(out), f"{type(exc).__name__}: {exc}", traceback.format_exc()))
+                bad.append((start + len(out), f"{type(exc).__name__}: {exc}", _tasks.trace(exc, len(bad))))
                 out.append(None)
     except KeyboardInterrupt:
         results[start : start + len(out)] = out
@@ -331,8 +388,8 @@ def sweep(
     >>> res = sweep(lambda x: math.log(x), {"x": [1.0, -1.0]}, executor="serial")
     >>> res.values.tolist(), res.failures[0].params, res.failures[0].error
     ([0.0, nan], {'x': -1.0}, 'ValueError: math domain error')
-    >>> sweep(lambda x: x / 0.0 if x else math.inf, {"x": [0.0]}, nan="error").failures[0].error
-    'non-finite result: inf'
+    >>> sweep(lambda x: [x, math.inf] if x else [x, 1.0], {"x": [0.0, 2.0]}, nan="error").failures[0].error
+    'non-finite result: [2.0, inf]'
     """
     if not callable(func):
         raise ParameterError(f"func must be callable, got {func!r}")
@@ -483,8 +540,7 @@ class _State:
 
     def chunk_failed(self, task, exc: BaseException) -> None:
         msg = f"chunk failed: {type(exc).__name__}: {exc}"
-        tb = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__))
-        self.collect(task.start, [(False, (msg, tb))] * (task.stop - task.start))
+        self.collect(task.start, [(False, (msg, _tasks.trace(exc, len(self.bad))))] * (task.stop - task.start))
 
     def run_parallel(self, kind, client, tasks, workers) -> None:
         if kind == "dask":
@@ -534,11 +590,22 @@ class _State:
                 failed.add(i)
         self.bad.sort(key=lambda b: b[0])
         failures = []
-        for i, err, tb in self.bad:
-            idx = tuple(int(v) for v in np.unravel_index(i, self.shape))
-            params = dict(zip(self.names, _tasks.point_values(self.axes_lists, i), strict=True))
-            failures.append(SweepFailure(index=idx, params=params, error=err, traceback=tb))
+        if self.bad:
+            flat = np.array([b[0] for b in self.bad])
+            indices = np.array(np.unravel_index(flat, self.shape)).T.tolist() if self.shape else [[]] * len(flat)
+            for (_, err, tb), idx in zip(self.bad, indices, strict=True):
+                params = {n: self.axes_lists[k][j] for k, (n, j) in enumerate(zip(self.names, idx, strict=True))}
+                failures.append(SweepFailure(index=tuple(idx), params=params, error=err, trace=tb))
         values = _pack(self.results, self.shape, failed)
+        if failures and len(failures) == self.total and not self.interrupted:
+            from .errors import SweepWarning
+
+            warnings.warn(
+                f"every one of the {self.total} points of the sweep failed; the first with {failures[0].error} "
+                f"(at {failures[0].params}); see result.failures[0].traceback",
+                SweepWarning,
+                stacklevel=3,
+            )
         return SweepResult(values, axes, failures, label, note, self.interrupted)
 
 
