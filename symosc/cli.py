@@ -78,13 +78,16 @@ def _print_result(result, fmt: str) -> None:
 # ------------------------------------------------------------------------------------------------ run
 def _run(args: argparse.Namespace) -> int:
     from .scene import load
+    from .scene._output import check_output_folder
 
     t0 = time.perf_counter()
+    outdir = Path(args.output) if args.output else Path("symosc-out") / Path(args.scene).stem
+    if not args.no_files:
+        check_output_folder(outdir)  # before any work: an unwritable or foreign folder is refused at once
     scene = load(args.scene)
     result = scene.run()
     _print_result(result, args.format)
     if not args.no_files:
-        outdir = Path(args.output) if args.output else Path("symosc-out") / Path(args.scene).stem
         paths = result.write(outdir, args.format)
         out = sys.stderr if args.format == "json" else sys.stdout
         print(f"\nwrote {', '.join(str(p) for p in paths)}  ({time.perf_counter() - t0:.2f} s)", file=out)
@@ -186,7 +189,7 @@ def _write_figures(result, target: Path) -> None:
     import tempfile
 
     with tempfile.TemporaryDirectory() as tmp:
-        written = result.write(tmp, "json")
+        written = result.write(Path(tmp) / "out", "json")
         for p in written:
             if p.suffix == ".png":
                 target.parent.mkdir(parents=True, exist_ok=True)

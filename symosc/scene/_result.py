@@ -5,7 +5,6 @@ from __future__ import annotations
 import html
 import json
 import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -228,28 +227,48 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def to_json(self) -> dict[str, Any]:
-        """JSON-ready dict: parameters, each question's data and the derivation log."""
+        """JSON-ready dict: parameters, each question's data and the derivation log (steps, without timings: two
+        runs of the same scene give the same data; :meth:`timings` has the seconds)."""
         return {
             "title": self.title,
             "source": self.source,
             "system": self.system,
             "parameters": dict(self.parameters),
             "questions": [{"kind": r.kind, "title": r.title, **r.data} for r in self.results],
-            "derivation_log": [{"step": e.step, "seconds": e.seconds, "detail": e.detail} for e in self.log],
+            "derivation_log": [{"step": e.step, "detail": e.detail} for e in self.log],
         }
 
-    def write(self, outdir: str | os.PathLike, fmt: str = "md") -> list[Path]:
-        """Write ``report.<fmt>``, ``results.json`` and the figures (PNG) into ``outdir``; returns the paths.
+    def timings(self) -> dict[str, Any]:
+        """The derivation log with the seconds each step took (written to ``timings.json``)."""
+        return {"derivation_log": [{"step": e.step, "seconds": e.seconds} for e in self.log]}
 
-        Everything is written to a temporary folder first and moved in at the end: a failure leaves nothing
-        half-written.  Figures need matplotlib; without it the scene report says so and the rest is written.
+    def write(self, outdir: str | os.PathLike, fmt: str = "md") -> list[Path]:
+        """Write ``report.<fmt>``, ``results.json``, ``timings.json`` and the figures (PNG) as the folder ``outdir``.
+
+        The folder is written whole or not at all: everything goes into a fresh hidden sibling folder that then
+        replaces ``outdir`` (no figures of an earlier run stay behind; a failure or a kill leaves ``outdir`` as it
+        was).  ``outdir`` must be new, empty, or an earlier run's output.  ``results.json`` holds no timings, so two
+        runs of a scene give byte-identical files.  Figures need matplotlib; without it the report says so and the
+        rest is written.
+
+        Parameters
+        ----------
+        outdir : str or PathLike
+            The output folder.
+        fmt : {"md", "html", "json"}
+            Format of the report (``"json"``: no report file, only ``results.json``).
+
+        Returns
+        -------
+        list of Path
+            The files written, as paths inside ``outdir``.
         """
+        from ._output import replacing_folder
+
         outdir = Path(outdir)
-        outdir.mkdir(parents=True, exist_ok=True)
         figs: dict[str, str] = {}
         notes: list[str] = []
-        with tempfile.TemporaryDirectory(dir=outdir, prefix=".symosc-") as tmp:
-            tmpdir = Path(tmp)
+        with replacing_folder(outdir) as tmpdir:
             todo = [f for r in self.results for f in r.figures]
             if todo:
                 try:
@@ -267,26 +286,22 @@ class SceneResult(SymPyPrintable):
                         fig, ax = plt.subplots(figsize=(6.5, 4.5))
                         getattr(_figures, f.drawer)(ax, **f.data)
                         fig.tight_layout()
-                        fig.savefig(tmpdir / f.filename, dpi=110)
+                        fig.savefig(tmpdir / f.filename, dpi=110, metadata={"Software": None})
                         plt.close(fig)
                         figs[f.filename] = f.filename
-            if fmt == "json":
-                main = None
-            else:
-                main = tmpdir / f"report.{fmt}"
+            if fmt != "json":
                 text = self.markdown(figs) if fmt == "md" else self.html(figs)
-                main.write_text(text + ("\n" + "\n".join(notes) if notes else ""), encoding="utf-8")
+                (tmpdir / f"report.{fmt}").write_text(
+                    text + ("\n" + "\n".join(notes) if notes else ""), encoding="utf-8"
+                )
             (tmpdir / "results.json").write_text(
-                json.dumps(self.to_json(), indent=2, default=_json_default), encoding="utf-8"
+                json.dumps(self.to_json(), indent=2, default=_json_default) + "\n", encoding="utf-8"
             )
-            written = []
-            for p in sorted(tmpdir.iterdir()):
-                target = outdir / p.name
-                os.replace(p, target)
-                written.append(target)
+            (tmpdir / "timings.json").write_text(json.dumps(self.timings(), indent=2) + "\n", encoding="utf-8")
+            names = sorted(p.name for p in tmpdir.iterdir())
         for n in notes:
             print(n)
-        return written
+        return [outdir / name for name in names]
 
 
 def _json_default(obj: Any) -> Any:
