@@ -358,7 +358,9 @@ def quasi_polynomial_roots(
 
     Parameters
     ----------
-    f : SymPy expression, e.g. ``p**2 + rho*p + sigma*exp(-p)`` with numbers for the parameters
+    f : Expr or QuasiPolynomial
+        The quasi-polynomial, an expression in one variable such as ``p**2 + rho*p + sigma*exp(-p)`` with numbers
+        for the parameters (see :func:`quasi_polynomial`), or an already parsed one.
     region : (re_min, re_max, im_min, im_max)
         The boundary must not pass through a root (a ConvergenceError says so; shift it slightly).
     variable : Symbol, optional
