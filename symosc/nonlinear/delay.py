@@ -50,7 +50,17 @@ _EPS = np.finfo(float).eps
 
 @dataclass(frozen=True)
 class QuasiPolynomial(SymPyPrintable):
-    """``f(p) = sum_k P_k(p) exp(-tau_k p)``: ``terms`` is a tuple of ``(tau_k, coefficients of P_k ascending)``."""
+    """``f(p) = sum_k P_k(p) exp(-tau_k p)`` with numeric coefficients; call it to evaluate ``f`` (vectorised).
+
+    Attributes
+    ----------
+    expr : Expr
+        The quasi-polynomial as a SymPy expression.
+    variable : Symbol
+        Its variable ``p``.
+    terms : tuple of (float, tuple of complex)
+        ``(tau_k, coefficients of P_k in ascending powers)`` for each delay ``tau_k >= 0``, ascending in ``tau_k``.
+    """
 
     expr: sp.Expr
     variable: sp.Symbol
@@ -77,7 +87,15 @@ class QuasiPolynomial(SymPyPrintable):
             yield tau, parts
 
     def derivative(self, k: int, z: Any) -> Any:
-        """``f^(k)(z)`` (vectorised)."""
+        """``f^(k)(z)`` (vectorised).
+
+        Parameters
+        ----------
+        k : int
+            Order of the derivative, an integer >= 0.
+        z : complex or array_like of complex
+            Point(s) at which to evaluate.
+        """
         z = np.asarray(z, dtype=complex)
         out = np.zeros(z.shape, dtype=complex)
         for tau, parts in self._pieces(k):
@@ -95,7 +113,17 @@ class QuasiPolynomial(SymPyPrintable):
         return out
 
     def derivative_bound(self, z0: np.ndarray, z1: np.ndarray, k: int = 1) -> np.ndarray:
-        """Upper bound of ``|f^(k)|`` on each segment ``[z0, z1]`` (vectorised)."""
+        """Upper bound of ``|f^(k)|`` on each segment ``[z0, z1]`` (vectorised).
+
+        Parameters
+        ----------
+        z0 : ndarray of complex
+            Start points of the segments.
+        z1 : ndarray of complex
+            End points of the segments, the same shape as ``z0``.
+        k : int, optional
+            Order of the derivative bounded, an integer >= 0 (default 1).
+        """
         R = np.maximum(np.abs(z0), np.abs(z1))
         re_min = np.minimum(z0.real, z1.real)
         out = np.zeros(R.shape)
@@ -112,6 +140,18 @@ class QuasiPolynomial(SymPyPrintable):
 @validated
 def quasi_polynomial(f: Any, variable: sp.Symbol | None = None) -> QuasiPolynomial:
     """Parse ``f`` as ``sum_k P_k(p) exp(-tau_k p)`` with numeric coefficients and delays ``tau_k >= 0``.
+
+    Parameters
+    ----------
+    f : Expr
+        The quasi-polynomial, e.g. ``p**2 + rho*p + sigma*exp(-p)`` with numbers for the parameters: polynomials in
+        the variable times ``exp(-tau*p)`` with numeric ``tau >= 0``.
+    variable : Symbol, optional
+        The variable of ``f`` (default: its only free symbol).
+
+    Returns
+    -------
+    QuasiPolynomial
 
     Examples
     --------
@@ -212,6 +252,22 @@ def count_roots(f: Any, region: tuple[float, float, float, float], variable: sp.
 
     ``region = (re_min, re_max, im_min, im_max)``.  Raises ConvergenceError if a root lies on the boundary.
 
+    Parameters
+    ----------
+    f : Expr or QuasiPolynomial
+        The quasi-polynomial, an expression in one variable with numbers for the parameters (see
+        :func:`quasi_polynomial`), or an already parsed one.
+    region : tuple of float
+        ``(re_min, re_max, im_min, im_max)``: finite bounds with ``re_min < re_max`` and ``im_min < im_max``; the
+        boundary must not pass through a root.
+    variable : Symbol, optional
+        The variable of ``f`` (default: its only free symbol).
+
+    Returns
+    -------
+    int
+        The number of roots inside, counted with multiplicity.
+
     Examples
     --------
     >>> import sympy as sp
@@ -231,9 +287,11 @@ class DelayRoots(SymPyPrintable):
     roots : tuple of mpmath.mpc
         Distinct roots, ordered by decreasing real part, then imaginary part.
     multiplicities : tuple of int
+        Multiplicity of each root (a cluster smaller than ``cluster`` counts as one multiple root).
     count : int
         The certified number of roots in the region (with multiplicity); equals ``sum(multiplicities)``.
     region : tuple
+        The rectangle ``(re_min, re_max, im_min, im_max)`` searched.
     dps : int
         Working precision of the Newton polish.
     evaluations : int
@@ -265,7 +323,13 @@ class DelayRoots(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Scatter plot of the roots in the complex plane with the region outlined."""
+        """Scatter plot of the roots in the complex plane with the region outlined.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -294,7 +358,9 @@ def quasi_polynomial_roots(
 
     Parameters
     ----------
-    f : SymPy expression, e.g. ``p**2 + rho*p + sigma*exp(-p)`` with numbers for the parameters
+    f : Expr or QuasiPolynomial
+        The quasi-polynomial, an expression in one variable such as ``p**2 + rho*p + sigma*exp(-p)`` with numbers
+        for the parameters (see :func:`quasi_polynomial`), or an already parsed one.
     region : (re_min, re_max, im_min, im_max)
         The boundary must not pass through a root (a ConvergenceError says so; shift it slightly).
     variable : Symbol, optional
@@ -409,6 +475,29 @@ def characteristic_quasipolynomial(
 ) -> sp.Expr:
     """Bulgakov (4.108): ``l01 p^2 + l11 p + l21 + exp(-p) (l02 p^2 + l12 p + l22)`` (time in units of the delay).
 
+    The coefficients are those of (4.101) in the time ``u = t/tau``: ``l0j = k0j``, ``l1j = k1j tau``,
+    ``l2j = k2j tau^2`` (4.105), where ``j = 1`` multiplies ``y``, ``y'``, ``y''`` at ``t`` and ``j = 2`` at
+    ``t - tau``.
+
+    Parameters
+    ----------
+    l01 : Expr or float
+        Coefficient of ``p^2`` (the undelayed acceleration term).
+    l11 : Expr or float
+        Coefficient of ``p`` (the undelayed velocity term).
+    l21 : Expr or float
+        Constant term (the undelayed position term).
+    l02 : Expr or float
+        Coefficient of ``p^2 exp(-p)`` (the delayed acceleration term).
+    l12 : Expr or float
+        Coefficient of ``p exp(-p)`` (the delayed velocity term).
+    l22 : Expr or float
+        Coefficient of ``exp(-p)`` (the delayed position term).
+    variable : Symbol, optional
+        The variable of the result (default ``p``).
+
+    Examples
+    --------
     >>> characteristic_quasipolynomial(1, 0, 0, 0, sp.Symbol("rho"), sp.Symbol("sigma"))
     p**2 + (p*rho + sigma)*exp(-p)
     """
@@ -458,6 +547,18 @@ def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
     ``-s`` is then a double real root: ``s* = 1 + rho/2 - sqrt(1 + rho^2/4)`` (4.149), ``sigma* = e^{-s}(rho s - s^2)``
     (4.146).  Derived here from ``f(-s) = f'(-s) = 0``.
 
+    Parameters
+    ----------
+    rho : float or Rational
+        The damping ratio ``rho = l1/l0`` (time in units of the delay, (4.141)); a positive number (not a symbol).
+
+    Returns
+    -------
+    dict
+        ``{"s": s*, "sigma": sigma*}``: the optimal degree of stability and the gain that achieves it.
+
+    Examples
+    --------
     >>> opt = andronov_maier_optimum(sp.Rational(1, 5))
     >>> opt["s"], round(float(opt["sigma"]), 7)
     (11/10 - sqrt(101)/10, 0.009071)

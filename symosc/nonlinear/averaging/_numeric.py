@@ -118,8 +118,19 @@ def integrate_shortened(avg: AveragedEquations, a0: float, t_eval: Any, values: 
 class SteadyState(SymPyPrintable):
     """A steady forced response ``x = a cos(nu t - theta)`` (first approximation).
 
-    ``kind`` is ``"stable"`` (M1 > 0, M2 > 0), ``"center"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable),
-    ``"saddle"`` (M2 < 0) or ``"unstable"`` (M2 > 0, M1 < 0).
+    Attributes
+    ----------
+    nu : float
+        Forcing frequency.
+    amplitude : float
+        Steady amplitude ``a`` (a root of ``W(nu, a) = 0``, Bulgakov (6.21)).
+    theta : float
+        Phase lag ``theta`` of the response behind the forcing, in radians in ``(-pi, pi]``.
+    M1, M2 : float
+        The Routh quantities of the variational equations (6.24): minus the trace and the determinant.
+    kind : {"stable", "center", "saddle", "unstable"}
+        ``"stable"`` (M1 > 0, M2 > 0), ``"center"`` (undamped, M1 = 0, M2 > 0: Lyapunov-stable), ``"saddle"``
+        (M2 < 0) or ``"unstable"`` (M2 > 0, M1 < 0).
     """
 
     nu: float
@@ -136,7 +147,17 @@ class SteadyState(SymPyPrintable):
 
 @dataclass(frozen=True)
 class Fold(SymPyPrintable):
-    """A fold (vertical tangent) of the resonance curve: a jump frequency.  ``refined``: Newton converged."""
+    """A fold (vertical tangent) of the resonance curve: a jump frequency.
+
+    Attributes
+    ----------
+    nu : float
+        Forcing frequency of the fold (the jump frequency).
+    amplitude : float
+        Amplitude at the fold.
+    refined : bool
+        Whether Newton's method on ``W = dW/da = 0`` converged (otherwise the values are the sampled estimate).
+    """
 
     nu: float
     amplitude: float
@@ -147,8 +168,16 @@ class Fold(SymPyPrintable):
 class FrequencyResponse(SymPyPrintable):
     """Resonance curve ``W(nu, a) = 0`` sampled over ``nu``.
 
-    ``amplitudes[i]`` holds every steady amplitude at ``nu[i]`` ascending (NaN-padded); ``stable`` marks the
-    stable ones; ``folds`` are the jump points; ``backbone`` the skeleton curve ``(a, nu)`` if computed.
+    Attributes
+    ----------
+    nu : ndarray, shape (n,)
+        The sampled forcing frequencies, ascending.
+    amplitudes : ndarray, shape (n, branches)
+        ``amplitudes[i]`` holds every steady amplitude at ``nu[i]``, ascending (NaN-padded).
+    stable : ndarray of bool, shape (n, branches)
+        Marks the stable steady states.
+    folds : tuple of Fold
+        The fold (jump) points, ascending in ``nu``.
     """
 
     nu: np.ndarray
@@ -174,7 +203,13 @@ class FrequencyResponse(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Draw the resonance curve: stable states as dots, unstable as crosses, folds as circles."""
+        """Draw the resonance curve: stable states as dots, unstable as crosses, folds as circles.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -400,8 +435,16 @@ def backbone(avg: AveragedEquations, values: dict, amplitudes: Any) -> np.ndarra
 class StationaryRegime(SymPyPrintable):
     """A stationary amplitude of the autonomous shortened equations (``a = 0``: the equilibrium).
 
-    ``exponent`` is ``-d(a Phi)/da`` at the amplitude: small deviations grow like ``exp(exponent * t)``.
-    ``stable`` is ``True``/``False``, or ``None`` when the sign could not be decided symbolically.
+    Attributes
+    ----------
+    amplitude : Expr or Float
+        The stationary amplitude (a root of ``a Phi(a) = 0``; 0 for the equilibrium).
+    frequency : Expr or Float
+        The frequency ``Psi(a)`` of the oscillation at that amplitude.
+    exponent : Expr or Float
+        ``-d(a Phi)/da`` at the amplitude: small deviations grow like ``exp(exponent * t)``.
+    stable : bool or None
+        ``True``/``False``, or ``None`` when the sign could not be decided symbolically.
     """
 
     amplitude: Any

@@ -64,6 +64,7 @@ class FastAveragedSystem(SymPyPrintable):
     Attributes
     ----------
     state : tuple of Symbol
+        The state variables ``x``, in the order of the right-hand sides.
     nu : Expr
         Fast frequency; ``mu = 1/nu`` is the small parameter of the appendix.
     mean : Matrix
@@ -73,6 +74,7 @@ class FastAveragedSystem(SymPyPrintable):
     harmonics : dict
         ``{m: (f_m, phi_m)}`` as column matrices.
     order : int
+        Order of the shortened system (1 or 2) used by :attr:`rhs` and :meth:`solve`.
     """
 
     state: tuple[sp.Symbol, ...]
@@ -96,7 +98,20 @@ class FastAveragedSystem(SymPyPrintable):
 
     def solve(self, x0: Any, t_eval: Any, values: dict | None = None, rtol: float = 1e-10) -> np.ndarray:
         """Integrate the shortened system and return the reconstructed ``x(t) ~ X(t) + w(X, t)`` (order 2) or
-        ``X(t)`` (order 1), shape ``(n, len(t_eval))``.  ``X(0)`` is chosen so that ``x(0) = x0``."""
+        ``X(t)`` (order 1), shape ``(n, len(t_eval))``.  ``X(0)`` is chosen so that ``x(0) = x0``.
+
+        Parameters
+        ----------
+        x0 : array_like of float, shape (n,)
+            Initial state ``x`` at the first time of ``t_eval``; finite numbers, one per state variable.
+        t_eval : array_like of float
+            Times at which the solution is returned, ascending; the integration runs from the first to the last.
+        values : mapping of Symbol or symbol name to number, optional
+            Values of every free parameter (including ``nu`` when it is a symbol; keys are symbols or their names);
+            a missing one raises ParameterError.
+        rtol : float, optional
+            Relative tolerance of the integration, a positive number (default 1e-10).
+        """
         from scipy.integrate import solve_ivp
         from scipy.optimize import fsolve
 
@@ -146,9 +161,11 @@ def fast_averaged_system(rhs: Any, state: Any, nu: Any, order: int = 1) -> FastA
     rhs : sequence of expressions in ``state`` and ``symosc.t``
         ``t`` may appear only through ``cos(k nu t)``, ``sin(k nu t)``.
     state : sequence of Symbol
+        The state variables, one per right-hand side.
     nu : Symbol or number
         The fast frequency (``mu = 1/nu`` small).
     order : {1, 2}
+        Order of the shortened system: 1 (the mean ``F``) or 2 (with the correction ``F2/nu``).
 
     Examples
     --------
@@ -193,7 +210,9 @@ class VibrationalAveraging(SymPyPrintable):
     Attributes
     ----------
     coordinates : tuple of Symbol
+        The generalised coordinates ``q``.
     mass : Matrix
+        The mass matrix ``M``.
     potential : Expr
         ``V``.
     effective_potential : Expr or None
@@ -221,7 +240,14 @@ class VibrationalAveraging(SymPyPrintable):
         return None if self.effective_potential is None else sp.simplify(self.effective_potential - self.potential)
 
     def stiffness(self, point: dict) -> sp.Matrix:
-        """Hessian of ``V_eff`` at an equilibrium ``point`` (mapping coordinate -> value)."""
+        """Hessian of ``V_eff`` at an equilibrium ``point`` (mapping coordinate -> value).
+
+        Parameters
+        ----------
+        point : mapping of Symbol or symbol name to Expr
+            The equilibrium: a value for each coordinate (keys are the coordinate symbols or their names); other
+            symbols stay symbolic.
+        """
         if self.effective_potential is None:
             raise ModelError("the averaged force is not potential; linearize slow_force instead")
         q = sp.Matrix(self.coordinates)
@@ -232,7 +258,13 @@ class VibrationalAveraging(SymPyPrintable):
 
     def stability_condition(self, point: dict) -> sp.Expr:
         """1-DOF: ``V_eff''(q*)`` (the equilibrium is stable iff it is positive); n-DOF: the Hessian's determinant
-        (necessary condition; check all leading minors with :meth:`stiffness`)."""
+        (necessary condition; check all leading minors with :meth:`stiffness`).
+
+        Parameters
+        ----------
+        point : mapping of Symbol or symbol name to Expr
+            The equilibrium: a value for each coordinate (keys are the coordinate symbols or their names).
+        """
         H = self.stiffness(point)
         return sp.factor(H[0, 0] if H.shape == (1, 1) else H.det())
 
@@ -258,6 +290,7 @@ def vibrational_averaging(
     Parameters
     ----------
     coordinates : Symbol or sequence of Symbol
+        The generalised coordinates ``q`` (SymPy Symbols).
     mass : expression or Matrix
         Mass matrix: constant, or ``M(q)`` for one degree of freedom (never dependent on ``t``).
     potential : expression
@@ -373,6 +406,19 @@ def vibrational_averaging_of(system: Any, p: Any = None) -> VibrationalAveraging
     The forcing is split exactly into its mean (slow: gravity, Coriolis, damping) and its harmonics in ``p t``
     (fast: must not depend on the velocities); the slow conservative part is integrated back to a potential.
 
+    Parameters
+    ----------
+    system : LagrangianSystem
+        The mechanics model: any object with ``coordinates``, ``velocities``, ``mass_matrix`` and ``forcing``
+        (``M(q) q'' = forcing``), the forcing periodic in ``t`` with frequency ``p``.
+    p : Symbol or number, optional
+        Fast angular frequency; by default the single symbol named ``p`` in the forcing (ModelError when there is
+        none or several).
+
+    Returns
+    -------
+    VibrationalAveraging
+
     Examples
     --------
     >>> import sympy as sp
@@ -417,6 +463,30 @@ def vibrational_stiffness(
     :func:`vibrational_averaging` (``V = q^T K0 q/2``, fast force ``-K1 q cos(p t)``), i.e.
     ``K0 + K1^T M^{-1} K1/(2 p^2)`` for symmetric ``K1``; the equilibrium is stable (first approximation) iff it is
     positive definite.
+
+    Parameters
+    ----------
+    model : linear model, optional
+        A linear model with ``.M``, ``.coordinates`` and ``.periodic_stiffness() -> (K0, K1, p)`` (e.g.
+        ``LagrangianSystem.linearize()``); when omitted, all of ``M``, ``K0``, ``K1`` and ``p`` must be given.
+    M : Matrix, optional
+        Mass matrix, square ``n x n`` (used when ``model`` is omitted).
+    K0 : Matrix, optional
+        Constant part of the stiffness matrix, ``n x n`` (used when ``model`` is omitted).
+    K1 : Matrix, optional
+        Amplitude of the stiffness modulation ``K1 cos(p t)``, ``n x n`` and symmetric (used when ``model`` is
+        omitted).
+    p : Symbol or number, optional
+        Fast angular frequency of the modulation (used when ``model`` is omitted).
+
+    Returns
+    -------
+    Matrix
+        The effective stiffness ``n x n`` (Hessian of ``V_eff``).
+
+    See Also
+    --------
+    vibrational_averaging
 
     Examples
     --------

@@ -31,7 +31,21 @@ __all__ = ["MultiAveragedEquations", "averaged_equations_ndof", "dry_friction_ra
 
 @dataclass(frozen=True)
 class MultiAveragedEquations(SymPyPrintable):
-    """Shortened equations of n non-resonant oscillators: amplitudes ``a_i``, phases ``psi_i``."""
+    """Shortened equations of n non-resonant oscillators: amplitudes ``a_i``, phases ``psi_i``.
+
+    Attributes
+    ----------
+    amplitudes : tuple of Symbol
+        The amplitude symbols ``a1 .. an`` (positive).
+    phases : tuple of Symbol
+        The phase symbols ``psi1 .. psin`` (real).
+    frequencies : tuple of Expr
+        The comparison frequencies ``w_i``.
+    a_dot : tuple of Expr
+        Right-hand sides ``a_i' = <f_i sin(psi_i)>/w_i``, functions of the amplitudes only.
+    phase_dot : tuple of Expr
+        Right-hand sides ``psi_i' = w_i/2 + <f_i cos(psi_i)>/(w_i a_i)``.
+    """
 
     amplitudes: tuple[sp.Symbol, ...]
     phases: tuple[sp.Symbol, ...]
@@ -45,6 +59,12 @@ class MultiAveragedEquations(SymPyPrintable):
         Returns a list of ``{"amplitudes": (...), "eigenvalues": (...), "stable": bool}``; the eigenvalues are those
         of the Jacobian of ``a' `` with respect to ``a`` (all negative real parts: stable).  Each ``a_i' = a_i g_i``
         factor ``a_i = 0`` is treated separately, so mode-suppressed states are found.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or symbol name to number, optional
+            Values of every free parameter of ``a_dot`` (keys are symbols or their names); a missing one raises
+            ParameterError. Omitted: the equations must contain no parameters, and the amplitudes are kept exact.
         """
         A = sp.Matrix(self.a_dot)
         if values is not None:
@@ -106,6 +126,7 @@ def averaged_equations_ndof(
     forces : sequence of expressions
         ``f_i`` in the coordinates and velocities (polynomial).
     coordinates, velocities : sequences of Symbol
+        The coordinates ``x_i`` and velocities ``v_i`` used in the forces, one of each per force.
     frequencies : sequence, optional
         Comparison frequencies ``w_i`` (default ``sqrt(df_i/dx_i)`` at rest).
     resonance_order : int, optional
@@ -178,6 +199,15 @@ def dry_friction_torus_average(x: float, y: float) -> float:
     averaged over the torus.  Closed forms: ``16 E(k)``, ``k = y/x`` for ``x >= y >= 0``; ``16 k B(k)``, ``k = x/y``,
     ``B(k) = (E(k) - (1 - k^2) K(k))/k^2`` for ``0 <= x <= y`` (complete elliptic integrals of modulus ``k``).
 
+    Parameters
+    ----------
+    x : float
+        Velocity amplitude of the first oscillation (the one the average projects on); a non-negative finite number.
+    y : float
+        Velocity amplitude of the second oscillation; a non-negative finite number.
+
+    Examples
+    --------
     >>> round(dry_friction_torus_average(1.0, 0.0) / math.pi, 12)
     8.0
     """
@@ -210,6 +240,14 @@ def dry_friction_ratio(k: float) -> float:
     oscillation than the first, per unit velocity amplitude (Table 15 of §12.14).  ``R = B(k)/E(k)`` for
     ``k <= 1`` and ``R(1/k) = 1/R(k)``; ``R(0) = 1/2``, ``R(1) = 1``, ``R(oo) = 2``.
 
+    Parameters
+    ----------
+    k : float
+        Ratio ``y/x`` of the velocity amplitudes of the second and the first oscillation; a non-negative number
+        (``inf`` allowed).
+
+    Examples
+    --------
     >>> round(dry_friction_ratio(0.5), 3), round(dry_friction_ratio(2.0), 3)
     (0.554, 1.806)
     """

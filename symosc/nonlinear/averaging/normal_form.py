@@ -91,6 +91,12 @@ class AveragingNormalForm(SymPyPrintable):
 
     Attributes
     ----------
+    D : Symbol
+        The differentiation symbol of ``f(D)``.
+    coordinates : tuple of Symbol
+        The coordinates ``y_j``.
+    psi : tuple of Expr
+        The right-hand sides ``psi_j`` as given.
     real_roots : tuple of Expr
         The real roots ``kappa_s`` of ``Delta(D)`` (coordinates ``xi_s``).
     complex_roots : tuple of Expr
@@ -107,6 +113,12 @@ class AveragingNormalForm(SymPyPrintable):
         ``y_j`` and every derivative symbol used in ``psi`` in terms of the new unknowns (12.144).
     xi_dot, a_dot, u_dot : tuple of Expr
         The exact right-hand sides (12.151)–(12.153).
+    state_symbols : tuple of (int, int)
+        The order of the entries of a state vector (:meth:`from_state`, :meth:`to_state`): one pair
+        ``(j, nu)`` (coordinate index, derivative order) per entry, for ``D**nu y_j``; all ``y_j`` first, then the
+        first derivatives of the coordinates that have them, and so on.
+    time : Symbol or None
+        The slow explicit time in ``psi`` (a parameter of the shortened equations), if any.
     """
 
     D: sp.Symbol
@@ -156,6 +168,11 @@ class AveragingNormalForm(SymPyPrintable):
 
         The state is ordered as :attr:`state_symbols`: all ``y_j`` first, then the first derivatives of the
         coordinates that have them, and so on (inverse of (12.144)).
+
+        Parameters
+        ----------
+        state : sequence of float
+            The state ``(y_j, Dy_j, ...)``, one finite number per entry of :attr:`state_symbols`, in that order.
         """
         x = np.asarray(state, dtype=float)
         if x.shape != (len(self.state_symbols),) or not np.all(np.isfinite(x)):
@@ -170,7 +187,14 @@ class AveragingNormalForm(SymPyPrintable):
         return out
 
     def to_state(self, coordinates: Mapping) -> np.ndarray:
-        """The state ``(y_j, Dy_j, ...)`` (ordered as :attr:`state_symbols`) of given normal coordinates (12.144)."""
+        """The state ``(y_j, Dy_j, ...)`` (ordered as :attr:`state_symbols`) of given normal coordinates (12.144).
+
+        Parameters
+        ----------
+        coordinates : mapping of Symbol or symbol name to float
+            Values of the normal coordinates ``xi_s``, ``a_h`` and ``u_h`` (keys are the symbols or their names);
+            finite numbers, a missing one counts as 0.
+        """
         vals = {}
         for s in (*self.xi, *self.amplitudes, *self.phases):
             v = coordinates.get(s, coordinates.get(s.name, 0.0))
@@ -221,6 +245,10 @@ class ShortenedEquations(SymPyPrintable):
         Indices of the averaged pairs.
     parameters : tuple of Symbol
         Other free symbols (values are passed to the numeric methods).
+    normal_form : AveragingNormalForm
+        The normal form the equations were averaged from.
+    n_samples : int
+        Points per phase of the torus quadrature used when ``psi`` is not a polynomial.
     """
 
     normal_form: AveragingNormalForm = field(repr=False)
@@ -272,11 +300,29 @@ class ShortenedEquations(SymPyPrintable):
         return _rates(self, x, self._param_values(values))
 
     def rate_values(self, state: Sequence[float], values: Mapping | None = None) -> np.ndarray:
-        """Averaged rates of :attr:`variables` at ``state`` (exact averages compiled, or torus quadrature)."""
+        """Averaged rates of :attr:`variables` at ``state`` (exact averages compiled, or torus quadrature).
+
+        Parameters
+        ----------
+        state : sequence of float
+            Values of the slow :attr:`variables`, one finite number each, in that order.
+        values : mapping of Symbol or symbol name to float, optional
+            Values of every symbol in :attr:`parameters` (keys are symbols or their names); a missing or non-finite
+            value raises ParameterError.
+        """
         return self._rates_at(state, values)[0]
 
     def phase_rate_values(self, state: Sequence[float], values: Mapping | None = None) -> np.ndarray:
-        """Averaged phase rates ``u_h'`` of the active pairs at ``state`` (rad/s)."""
+        """Averaged phase rates ``u_h'`` of the active pairs at ``state`` (rad/s).
+
+        Parameters
+        ----------
+        state : sequence of float
+            Values of the slow :attr:`variables`, one finite number each, in that order.
+        values : mapping of Symbol or symbol name to float, optional
+            Values of every symbol in :attr:`parameters` (keys are symbols or their names); a missing or non-finite
+            value raises ParameterError.
+        """
         return self._rates_at(state, values)[1]
 
     def regime(
@@ -286,6 +332,17 @@ class ShortenedEquations(SymPyPrintable):
 
         Amplitudes given as exactly 0 in ``guess`` stay 0 (a suppressed pair: ``a_h = 0`` solves its averaged
         equation); their rows of the Jacobian give the growth rate of a small oscillation in that pair.
+
+        Parameters
+        ----------
+        guess : sequence of float
+            Starting values of the slow :attr:`variables`, one finite number each, in that order.
+        values : mapping of Symbol or symbol name to float, optional
+            Values of every symbol in :attr:`parameters` (keys are symbols or their names); a missing or non-finite
+            value raises ParameterError.
+        tol : float, optional
+            Largest accepted residual of the rates, relative to the largest variable (and at least absolute); a
+            positive number (default 1e-10).
 
         Raises
         ------
@@ -357,6 +414,18 @@ class ShortenedEquations(SymPyPrintable):
         """Solve the shortened equations for the slow variables; returns ``(t, states)`` with states ``(n_var, n_t)``.
 
         The phases follow by quadrature of :meth:`phase_rate_values` (§12.12).
+
+        Parameters
+        ----------
+        t_span : tuple of float
+            ``(t0, t1)``: the interval of integration.
+        initial : sequence of float
+            Values of the slow :attr:`variables` at ``t0``, one finite number each, in that order.
+        values : mapping of Symbol or symbol name to float, optional
+            Values of every symbol in :attr:`parameters` (keys are symbols or their names); a missing or non-finite
+            value raises ParameterError.
+        t_eval : array_like of float, optional
+            Times at which to return the solution, inside ``t_span``; the solver's own steps when omitted.
         """
         from scipy.integrate import solve_ivp
 

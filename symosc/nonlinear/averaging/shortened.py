@@ -149,7 +149,12 @@ class AveragedEquations(SymPyPrintable):
     ----------
     f : Expr
         The force function (restoring force plus damping, per unit mass).
+    x : Symbol
+        Symbol of the coordinate in ``f``.
+    v : Symbol
+        Symbol of the velocity ``x'`` in ``f``.
     kind : {"autonomous", "forced"}
+        Whether a periodic force acts (``"forced"``) or not.
     frequency : Expr
         Comparison frequency ``w`` (``nu`` when forced).
     a_dot, phase_dot : Expr
@@ -158,6 +163,16 @@ class AveragedEquations(SymPyPrintable):
         Instantaneous damping coefficient and frequency (Bulgakov (5.332), (6.16)); functions of ``a``.
     R, nu : Expr
         Forcing amplitude and frequency (``0`` and ``None`` when autonomous).
+    forcing_phase : Expr
+        Phase ``gamma`` of the first harmonic ``R cos(nu t + gamma)`` of the forcing (0 for ``R cos(nu t)``); the
+        phase ``theta`` is measured from it.
+    center : Expr
+        Center ``q*(a)`` of the oscillation, ``x = q* + a cos(psi)`` (Bulgakov (5.345)); 0 unless
+        ``averaged_equations(..., center=True)``.
+    amplitude : Symbol
+        Symbol of the amplitude ``a`` in the equations (positive).
+    phase : Symbol
+        Symbol of the phase ``theta`` in the forced equations (real).
     """
 
     f: sp.Expr
@@ -279,6 +294,12 @@ class AveragedEquations(SymPyPrintable):
         Stability: ``d(a Phi)/da > 0`` (5.341)–(5.342).  The equilibrium ``a = 0`` is listed first when
         ``a Phi`` vanishes there.
 
+        Parameters
+        ----------
+        values : mapping of Symbol or symbol name to number, optional
+            Values of every free parameter of the equations (keys are symbols or their names); a missing one
+            raises ParameterError. Omitted: the amplitudes are solved symbolically.
+
         Examples
         --------
         >>> import sympy as sp
@@ -301,6 +322,21 @@ class AveragedEquations(SymPyPrintable):
         """Integrate the shortened equations numerically from ``a(0) = a0`` (and ``theta(0) = theta0`` if forced).
 
         Returns an array of shape ``(len(t_eval),)`` (autonomous: ``a``) or ``(2, len(t_eval))`` (forced: a, theta).
+
+        Parameters
+        ----------
+        a0 : float
+            Initial amplitude ``a(0)``; a positive number.
+        t_eval : array_like of float
+            Times at which the solution is returned, ascending and starting at or after 0 (integration runs from 0
+            to the last one).
+        values : mapping of Symbol or symbol name to number
+            Values of every free parameter of the equations (keys are symbols or their names); a missing one
+            raises ParameterError.
+        theta0 : float, optional
+            Initial phase ``theta(0)`` in radians (forced case; default 0).
+        rtol : float, optional
+            Relative tolerance of the integration, a positive number (default 1e-10).
         """
         from ._numeric import integrate_shortened
 
@@ -312,6 +348,15 @@ class AveragedEquations(SymPyPrintable):
         ``nu`` may be omitted when the equations were built with a numeric forcing frequency.
 
         Returns a tuple of :class:`~symosc.nonlinear.SteadyState`, ascending in amplitude.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or symbol name to number
+            Values of every free parameter except ``nu`` (keys are symbols or their names); a missing one raises
+            ParameterError, and the forcing amplitude must be nonzero.
+        nu : float, optional
+            Forcing frequency; a positive finite number, required unless the equations were built with a numeric
+            ``nu`` (then it must equal that number).
         """
         self._need_forced("steady_states()")
         from ._numeric import steady_states
@@ -322,6 +367,19 @@ class AveragedEquations(SymPyPrintable):
         """Resonance curve over ``nu_range``: every branch, its stability and the fold (jump) points.
 
         Returns a :class:`~symosc.nonlinear.FrequencyResponse`.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or symbol name to number
+            Values of every free parameter except ``nu`` (keys are symbols or their names); a missing one raises
+            ParameterError, and the forcing amplitude must be nonzero.
+        nu_range : tuple of float
+            ``(lo, hi)``: the forcing-frequency interval sampled, with ``0 < lo < hi`` finite.
+        n : int, optional
+            Number of equally spaced frequencies sampled, an integer >= 3 (default 400).
+        a_max : float, optional
+            Largest amplitude searched when ``W`` is not a polynomial in ``a``; a positive number (default: twice
+            the largest amplitude where ``W <= 0`` on a wide scan).
         """
         self._need_forced("frequency_response()")
         from ._numeric import frequency_response
@@ -329,7 +387,21 @@ class AveragedEquations(SymPyPrintable):
         return frequency_response(self, values, nu_range, n, a_max)
 
     def backbone(self, values: dict, amplitudes: Any) -> Any:
-        """Backbone (skeleton) curve: free-oscillation frequency ``w(a)`` solving ``Psi(a; w) = w`` (6.33)."""
+        """Backbone (skeleton) curve: free-oscillation frequency ``w(a)`` solving ``Psi(a; w) = w`` (6.33).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or symbol name to number
+            Values of every free parameter except ``nu`` and ``a`` (keys are symbols or their names); a missing one
+            raises ParameterError.
+        amplitudes : float or array_like of float
+            Amplitudes ``a`` at which to evaluate the backbone frequency; positive numbers.
+
+        Returns
+        -------
+        ndarray
+            The frequency at each amplitude (NaN where no positive real frequency exists).
+        """
         from ._numeric import backbone
 
         return backbone(self, values, amplitudes)

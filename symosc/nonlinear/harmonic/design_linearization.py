@@ -123,12 +123,24 @@ class DesignLinearization(SymPyPrintable):
         )
 
     def damping(self, a: float) -> float:
-        """Instantaneous damping ``Phi(a)`` of the shortened equations (5.330): ``a' = -a Phi(a)``."""
+        """Instantaneous damping ``Phi(a)`` of the shortened equations (5.330): ``a' = -a Phi(a)``.
+
+        Parameters
+        ----------
+        a : float
+            Amplitude of the oscillation about the centre ``q*``; a positive number.
+        """
         _, s, _ = _harmonics(self.f, self.q_star, a, self.omega, self.eps)
         return -s / (2 * np.pi * self.omega * a)
 
     def frequency(self, a: float) -> float:
-        """Instantaneous frequency ``Psi(a)`` of the shortened equations (5.330): ``u' = Psi(a)``."""
+        """Instantaneous frequency ``Psi(a)`` of the shortened equations (5.330): ``u' = Psi(a)``.
+
+        Parameters
+        ----------
+        a : float
+            Amplitude of the oscillation about the centre ``q*``; a positive number.
+        """
         _, _, c = _harmonics(self.f, self.q_star, a, self.omega, self.eps)
         return (self.omega**2 + self.eps**2) / (2 * self.omega) + c / (2 * np.pi * self.omega * a)
 

@@ -69,6 +69,21 @@ W2 = sp.Symbol("omega2", positive=True)
 def harmonic_linearization(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None = None) -> sp.Expr:
     """Coefficient of harmonic linearization ``h(A) = J(A)/A`` of an odd nonlinearity ``g(sigma)`` (12.78, 12.80).
 
+    Parameters
+    ----------
+    g : Expr
+        The nonlinear characteristic ``g(sigma)``, odd in ``sigma`` (condition (12.67)); a polynomial, or built with
+        ``sign``/``Abs`` (relays).
+    sigma : Symbol
+        The input of the nonlinear element, the variable of ``g``.
+    amplitude : Symbol, optional
+        Symbol of the amplitude ``A`` in the result (default: a positive symbol ``A``).
+
+    Returns
+    -------
+    Expr
+        ``h(A) = J(A)/A`` with ``J(A) = (1/pi) Integral(g(A cos u) cos u, (u, -pi, pi))``.
+
     See Also
     --------
     describing_function
@@ -95,7 +110,15 @@ def harmonic_linearization(g: Any, sigma: sp.Symbol, amplitude: sp.Symbol | None
 
 @dataclass(frozen=True)
 class LinearizationBoundary(SymPyPrintable):
-    """A value ``h`` of the linearization coefficient at which ``Delta(D)`` has the roots ``±i omega`` (§12.7)."""
+    """A value ``h`` of the linearization coefficient at which ``Delta(D)`` has the roots ``±i omega`` (§12.7).
+
+    Attributes
+    ----------
+    h : Expr or float
+        The boundary value ``h*`` of the linearization coefficient (symbolic when the determinant has parameters).
+    omega2 : Expr or float
+        The squared frequency ``omega**2`` of the imaginary roots at ``h*``.
+    """
 
     h: Any
     omega2: Any
@@ -115,6 +138,20 @@ def linearization_boundary(delta: Any, h: sp.Symbol, D: sp.Symbol = D_) -> tuple
     Writing ``Delta(D) = E(D**2) + D O(D**2)``, both ``E(-w**2) = 0`` and ``O(-w**2) = 0`` are linear in ``h``;
     eliminating ``h`` leaves a polynomial in ``w**2``.  Symbolic parameters are kept (the result is the book's
     "periodic boundary"); with numbers only the roots with ``w**2 > 0`` and real ``h`` are returned.
+
+    Parameters
+    ----------
+    delta : Expr
+        The characteristic determinant ``Delta(D) = Delta_0(D) + h F(D)``, a polynomial in ``D`` of degree exactly 1
+        in ``h`` (one nonlinear element, (12.71)); other symbols are kept as parameters.
+    h : Symbol
+        The linearization coefficient in ``delta``.
+    D : Symbol, optional
+        The differentiation symbol in ``delta`` (default ``D``).
+
+    Returns
+    -------
+    tuple of LinearizationBoundary
 
     Examples
     --------
@@ -170,7 +207,25 @@ def _real_positive_roots(poly: sp.Expr) -> list[float]:
 
 @dataclass(frozen=True)
 class HarmonicCycle(SymPyPrintable):
-    """A generating periodic motion: ``sigma ≈ amplitude * cos(omega t)`` at the nonlinear element's input."""
+    """A generating periodic motion: ``sigma ≈ amplitude * cos(omega t)`` at the nonlinear element's input.
+
+    Attributes
+    ----------
+    amplitude : float
+        Amplitude ``A*`` of ``sigma``: the root of ``h(A) = h*``.
+    omega : float
+        Frequency of the cycle (rad/s), that of the imaginary roots at ``h*``.
+    h : float
+        The boundary value ``h*`` of the linearization coefficient.
+    dh_dA : float
+        Slope ``h'(A*)`` of the linearization coefficient at the cycle.
+    root_sensitivity : complex
+        ``d lambda/dh`` of the critical root ``lambda = i omega`` at ``h*``.
+    other_roots_stable : bool
+        Whether the other roots of ``Delta`` at ``h*`` have negative real parts.
+    stable : bool
+        Orbital stability by §12.10: ``Re(d lambda/dh) * h'(A*) < 0`` and the other roots stable.
+    """
 
     amplitude: float
     omega: float
@@ -187,7 +242,23 @@ class HarmonicCycle(SymPyPrintable):
 
 @dataclass(frozen=True)
 class HarmonicLinearization(SymPyPrintable):
-    """All generating cycles of ``Delta_0(D) + h F(D)`` with ``h = J(A)/A``, and the pieces used to find them."""
+    """All generating cycles of ``Delta_0(D) + h F(D)`` with ``h = J(A)/A``, and the pieces used to find them.
+
+    Attributes
+    ----------
+    delta : Expr
+        The characteristic determinant, linear in the linearization coefficient.
+    h_symbol : Symbol
+        The linearization coefficient in ``delta``.
+    gain : Expr
+        The coefficient of harmonic linearization ``h(A) = J(A)/A`` of the nonlinearity.
+    amplitude_symbol : Symbol
+        The amplitude symbol ``A`` in ``gain``.
+    boundaries : tuple of LinearizationBoundary
+        The values ``h*`` at which ``Delta`` has imaginary roots.
+    cycles : tuple of HarmonicCycle
+        The generating cycles, ascending in frequency, then amplitude.
+    """
 
     delta: sp.Expr
     h_symbol: sp.Symbol
@@ -205,7 +276,16 @@ class HarmonicLinearization(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, amax: float | None = None) -> Any:
-        """``h(A)`` with the boundary values ``h*`` and the cycles marked."""
+        """``h(A)`` with the boundary values ``h*`` and the cycles marked.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        amax : float, optional
+            Largest amplitude drawn, a positive number (default: 1.5 times the largest cycle amplitude, at least
+            1.5).
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -245,6 +325,8 @@ def self_oscillations(
         Linearization coefficient and the nonlinear element's input.
     g : Expr
         The odd nonlinearity ``g(sigma)`` (polynomial, ``sign``, ``Abs``).
+    D : Symbol, optional
+        The differentiation symbol in ``delta`` (default ``D``).
     amplitude_max, samples : float, int
         Amplitudes ``0 < A <= amplitude_max`` are scanned on a geometric grid for sign changes of ``h(A) - h*``.
 
@@ -300,6 +382,28 @@ def servo_characteristic(T: Any, U: Any, V: Any, x: Any, y: Any, z: Any, D: sp.S
     ``TUV D^4 + T(U+V) D^3 + (x z + T) D^2 + y z D + z`` with ``x = L^2 + TUn``, ``y = M + Tn``; derived from
     (12.89) as ``T D^2 (UD+1)(VD+1) + z (x D^2 + y D + 1)``.
 
+    Parameters
+    ----------
+    T : Expr or float
+        Time constant ``T`` of (12.89); a positive number or symbol.
+    U : Expr or float
+        Time constant ``U`` of (12.89); a positive number or symbol.
+    V : Expr or float
+        Time constant ``V`` of (12.89); a non-negative number or symbol (0 gives the third-order case).
+    x : Expr or float
+        Feedback parameter ``x = L**2 + T U n`` (12.93); a real number or symbol, of either sign.
+    y : Expr or float
+        Feedback parameter ``y = M + T n`` (12.93); a real number or symbol.
+    z : Expr or float
+        The linearization coefficient replacing ``g(sigma)`` by ``z sigma``; usually a symbol.
+    D : Symbol, optional
+        The differentiation symbol of the result (default ``D``).
+
+    Returns
+    -------
+    Expr
+        The characteristic polynomial in ``D``.
+
     Examples
     --------
     >>> import sympy as sp
@@ -351,6 +455,24 @@ def servo_region(x: float, y: float, T: float, U: float, z0: float) -> int:
     1: robust stability; 2: small-amplitude self-oscillation C1; 3: large-amplitude self-oscillation C2;
     4: instability.  ``z0`` is the slope of the tangent from the origin to ``J(C)`` (the maximum of ``J(C)/C``).
 
+    Parameters
+    ----------
+    x : float
+        Feedback parameter ``x = L**2 + T U n`` (12.93); a finite real number.
+    y : float
+        Feedback parameter ``y = M + T n`` (12.93); a finite real number.
+    T : float
+        Time constant ``T`` of (12.89); a positive number.
+    U : float
+        Time constant ``U`` of (12.89); a positive number.
+    z0 : float
+        Maximal gain of the characteristic: the largest value of ``J(C)/C``; a positive number.
+
+    Returns
+    -------
+    int
+        The region 1, 2, 3 or 4 of Table 13.
+
     Examples
     --------
     >>> servo_region(1.0, 0.5, 1.0, 1.0, 3.6), servo_region(1.0, 2.0, 1.0, 1.0, 3.6)
@@ -370,6 +492,20 @@ def neimark_curve(delta: Any, h1: sp.Symbol, h2: sp.Symbol, omega: Any, D: sp.Sy
     """Curve C1 of §12.8: the pairs ``(h1, h2)`` for which ``Delta(i w) = 0``, ``Delta`` bilinear in ``h1, h2``.
 
     Returns an array of shape ``(len(omega), 2, 2)``: ``[k, branch] = (h1, h2)``, NaN where the branch is complex.
+
+    Parameters
+    ----------
+    delta : Expr
+        The characteristic determinant, a polynomial in ``D`` of degree at most 1 in each of ``h1`` and ``h2``
+        (12.81)–(12.83), numeric apart from ``h1``, ``h2`` and ``D``.
+    h1 : Symbol
+        Linearization coefficient of the first nonlinear element in ``delta``.
+    h2 : Symbol
+        Linearization coefficient of the second nonlinear element in ``delta``.
+    omega : float or array_like of float
+        Frequencies ``w`` (rad/s) at which to compute the curve; real numbers.
+    D : Symbol, optional
+        The differentiation symbol in ``delta`` (default ``D``).
 
     Examples
     --------
@@ -407,7 +543,21 @@ def neimark_curve(delta: Any, h1: sp.Symbol, h2: sp.Symbol, omega: Any, D: sp.Sy
 
 @dataclass(frozen=True)
 class TwoNonlinearityCycle(SymPyPrintable):
-    """Generating cycle with two nonlinear elements: input amplitudes ``A1``, ``A2 = k(w) A1``, frequency ``w``."""
+    """Generating cycle with two nonlinear elements: input amplitudes ``A1``, ``A2 = k(w) A1``, frequency ``w``.
+
+    Attributes
+    ----------
+    amplitude1 : float
+        Amplitude ``A1`` at the input of the first nonlinear element.
+    amplitude2 : float
+        Amplitude ``A2 = |R(i w)| A1`` at the input of the second.
+    omega : float
+        Frequency ``w`` of the cycle (rad/s).
+    h1 : float
+        Linearization coefficient ``h1(A1)`` of the first element at the cycle.
+    h2 : float
+        Linearization coefficient ``h2(A2)`` of the second element at the cycle.
+    """
 
     amplitude1: float
     amplitude2: float
@@ -442,6 +592,40 @@ def two_nonlinearity_cycles(
 
     Solves ``Delta(i w; h1(A1), h2(|R(i w)| A1)) = 0`` for ``w > 0``, ``A1 > 0`` with ``h_i(A) = J_i(A)/A`` and
     ``sigma_2 = R(D) sigma_1`` (``ratio = R(D)``, a rational function of ``D``), from a grid of starting points.
+
+    Parameters
+    ----------
+    delta : Expr
+        The characteristic determinant, a polynomial in ``D`` bilinear in ``h1`` and ``h2``, numeric apart from
+        ``h1``, ``h2`` and ``D``.
+    h1 : Symbol
+        Linearization coefficient of the first nonlinear element in ``delta``.
+    h2 : Symbol
+        Linearization coefficient of the second nonlinear element in ``delta``.
+    g1 : Expr
+        The first nonlinearity ``g1(sigma1)``, odd in ``sigma1``.
+    sigma1 : Symbol
+        Input of the first nonlinear element, the variable of ``g1``.
+    g2 : Expr
+        The second nonlinearity ``g2(sigma2)``, odd in ``sigma2``.
+    sigma2 : Symbol
+        Input of the second nonlinear element, the variable of ``g2``.
+    ratio : Expr
+        The transfer ``R(D)`` with ``sigma2 = R(D) sigma1``, a rational function of ``D`` with numeric coefficients.
+    D : Symbol, optional
+        The differentiation symbol in ``delta`` and ``ratio`` (default ``D``).
+    omega_max : float, optional
+        Largest starting frequency of the grid, a positive number (default 10); starts lie in
+        ``(0, omega_max]``.
+    amplitude_max : float, optional
+        Largest starting amplitude ``A1`` of the grid, a positive number (default 10).
+    starts : int, optional
+        Number of starting values per axis of the grid, a positive integer (default 12, so 144 starts).
+
+    Returns
+    -------
+    tuple of TwoNonlinearityCycle
+        The distinct cycles found, ascending in frequency, then amplitude.
 
     Examples
     --------

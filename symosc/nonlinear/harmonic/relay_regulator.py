@@ -63,7 +63,13 @@ class RelayRegulatorBoundary(SymPyPrintable):
     kappas: tuple[float, ...]
 
     def relay_amplitudes(self, level: float = 1.0) -> tuple[float, ...]:
-        """Ideal relay ``H = level * sign(y)``: ``b* = 4 level / (pi h)`` for each gain (12.210)."""
+        """Ideal relay ``H = level * sign(y)``: ``b* = 4 level / (pi h)`` for each gain (12.210).
+
+        Parameters
+        ----------
+        level : float, optional
+            Output level of the relay ``H = level * sign(y)``; a positive number (default 1).
+        """
         return tuple(4.0 * level / (math.pi * h) for h in self.gains)
 
 

@@ -61,7 +61,15 @@ class CharacteristicExponentSeries(SymPyPrintable):
     eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def evaluate(self, eps: float, order: int | None = None) -> np.ndarray:
-        """The truncated sums at ``eps`` (complex array, rad/s)."""
+        """The truncated sums at ``eps`` (complex array, rad/s).
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to sum the series; a real number.
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all included orders when omitted.
+        """
         n = self.order if order is None else int(order)
         if not 0 <= n <= self.order:
             raise ParameterError(f"exponents are known to order {self.order}; asked for {order}")
@@ -69,11 +77,25 @@ class CharacteristicExponentSeries(SymPyPrintable):
         return self.coefficients[:, : n + 1] @ powers
 
     def error_estimate(self, eps: float) -> np.ndarray:
-        """Size of the last included term, per exponent (a heuristic for the truncation error)."""
+        """Size of the last included term, per exponent (a heuristic for the truncation error).
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to estimate; a real number.
+        """
         return np.abs(self.coefficients[:, -1]) * abs(float(eps)) ** self.order
 
     def series(self, i: int, digits: int = 12) -> sp.Expr:
-        """Exponent ``i`` as a SymPy polynomial in ``eps`` (Float coefficients)."""
+        """Exponent ``i`` as a SymPy polynomial in ``eps`` (Float coefficients).
+
+        Parameters
+        ----------
+        i : int
+            Row of the exponent (see ``labels``), an integer from 0 to ``2n - 1``.
+        digits : int, optional
+            Significant digits of the Float coefficients, a positive integer (default 12).
+        """
         c = self.coefficients[i]
         return sp.Add(
             *[

@@ -137,7 +137,14 @@ class EpsSeries(SymPyPrintable):
         return self.expr + self.getO()
 
     def coefficient(self, k: int) -> sp.Expr:
-        """Coefficient of ``eps**k`` (including ``factor``)."""
+        """Coefficient of ``eps**k`` (including ``factor``).
+
+        Parameters
+        ----------
+        k : int
+            Power of ``eps`` whose coefficient is wanted; an integer from 0 to ``order`` (a larger one raises
+            IndexError).
+        """
         if k > self.order:
             raise IndexError(f"{self.name} is known to order {self.order} only; recompute with order >= {k}")
         return self.factor * self.coefficients[k]
@@ -147,6 +154,19 @@ class EpsSeries(SymPyPrintable):
 
         With ``dps`` the sum is formed in mpmath at that precision and an ``mpf`` is returned; otherwise a float
         (or a float array when ``value`` is an array).
+
+        Parameters
+        ----------
+        value : float, mpmath.mpf or array_like of float
+            Value of the expansion variable ``eps`` at which to sum the series; real numbers (an array is summed
+            element by element). A ``SeriesWarning`` is issued when ``|value|`` exceeds the estimated radius of
+            convergence.
+        order : int, optional
+            Highest power of ``eps`` kept in the sum, an integer >= 0; all known terms when omitted (values above
+            ``self.order`` are clipped to it).
+        dps : int, optional
+            Decimal digits of the mpmath working precision, an integer >= 1; when given the sum is formed in mpmath
+            and an ``mpf`` is returned, otherwise in float64.
         """
         n = self.order if order is None else min(int(order), self.order)
         _warn_beyond_radius(self, value)
@@ -172,6 +192,21 @@ class EpsSeries(SymPyPrintable):
         For a series in even powers only the approximant is built in ``eps**2``.  Padé continues the series beyond
         its radius of convergence when the nearest singularities are poles or branch points off the real axis, as for
         van der Pol (there ``[10/10]`` in ``eps**2`` gives the frequency at ``eps = 3`` to 1e-5).
+
+        Parameters
+        ----------
+        value : float or mpmath.mpf
+            Value of the expansion variable ``eps`` at which to evaluate the approximant; a real number.
+        m : int, optional
+            Degree of the numerator, an integer >= 0 with ``m + n`` at most the number of coefficients less one
+            (counted in ``eps**2`` for an even series); ``N - n`` when omitted, and ``N // 2`` (diagonal) when both
+            degrees are omitted.
+        n : int, optional
+            Degree of the denominator, an integer >= 0 with ``m + n`` at most the number of coefficients less one;
+            ``N - m`` when omitted, and ``N - N // 2`` when both degrees are omitted.
+        dps : int, optional
+            Decimal digits of the mpmath working precision, an integer >= 1; when given an ``mpf`` is returned,
+            otherwise a float computed at 30 digits.
         """
         work = dps or 30
         with mpmath.workdps(work + 10):
@@ -200,6 +235,13 @@ class EpsSeries(SymPyPrintable):
         Uses the coefficients in the variable ``eps**2`` when the odd ones vanish.  The method chosen is the one whose
         underlying assumption fits: Domb–Sykes when the ratios keep one sign pattern, Mercer–Roberts when they oscillate
         irregularly (complex singularities).
+
+        Parameters
+        ----------
+        terms : int, optional
+            Number of trailing coefficients (of the series in ``eps``, or in ``eps**2`` for an even series) used by
+            the ratio fits, a positive integer (fewer than 3 usable ratios leave only the root test); half of them,
+            and at least 6, when omitted.
         """
         cs = [mpmath.mpf(sp.N(c, 30)) for c in self.coefficients]
         even = all(c == 0 for c in cs[1::2]) and len(cs) > 4

@@ -62,7 +62,17 @@ class NonResonantForcedSolution(SymPyPrintable):
         return 2 * np.pi / self.Omega
 
     def evaluate(self, t: Any, mu: float, order: int | None = None) -> np.ndarray:
-        """``q(t)`` of the series truncated at ``order`` (default: all terms)."""
+        """``q(t)`` of the series truncated at ``order`` (default: all terms).
+
+        Parameters
+        ----------
+        t : float or array_like of float
+            Time(s) at which to evaluate; real numbers (the solution has period ``2 pi / Omega``).
+        mu : float
+            Value of the small parameter ``mu``; a finite real number.
+        order : int, optional
+            Highest power of ``mu`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+        """
         n = self.order if order is None else check_int("order", order, minimum=0, maximum=self.order)
         m = check_finite("mu", mu)
         tt = np.asarray(t, dtype=float)
@@ -71,7 +81,16 @@ class NonResonantForcedSolution(SymPyPrintable):
         return (np.exp(1j * self.Omega * np.multiply.outer(tt, h)) @ coeff).real
 
     def initial_state(self, mu: float, order: int | None = None) -> np.ndarray:
-        """``(C1(mu), C2(mu))``: the initial state of the periodic solution, series truncated at ``order``."""
+        """``(C1(mu), C2(mu))``: the initial state of the periodic solution, series truncated at ``order``.
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a real number.
+        order : int, optional
+            Highest power of ``mu`` kept, an integer >= 0; all computed orders when omitted (larger values are
+            clipped to ``self.order``).
+        """
         return np.array([self.C1.evaluate(mu, order), self.C2.evaluate(mu, order)])
 
     def _repr_latex_(self) -> str:

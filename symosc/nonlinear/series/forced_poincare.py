@@ -59,7 +59,13 @@ class ForcedPeriodicSolution(SymPyPrintable):
         return bool(np.all(np.linalg.eigvals(self.jacobian).real < 0))
 
     def multipliers(self, mu: float) -> np.ndarray:
-        """First-order Floquet multipliers ``1 + mu P lambda``."""
+        """First-order Floquet multipliers ``1 + mu P lambda``.
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a real number (the multipliers are first order in it).
+        """
         return 1.0 + mu * (2 * np.pi / self.omega) * np.linalg.eigvals(self.jacobian)
 
     def __repr__(self) -> str:

@@ -39,6 +39,14 @@ class LindstedtSeries(SymPyPrintable):
 
     Attributes
     ----------
+    f : Expr
+        The conservative force ``f(x)``, a polynomial in ``x`` with ``f(0) = 0``.
+    x : Symbol
+        Symbol of the coordinate in ``f``.
+    eps_symbol : Symbol
+        Symbol of the small parameter (the expansion variable of the series).
+    amplitude : Symbol
+        Symbol of the amplitude ``A = x(0)`` (the motion starts at rest there).
     frequency : EpsSeries
         ``omega(eps, A)``; coefficients are polynomials in ``A`` (and the parameters of ``f``).
     frequency_squared : EpsSeries
@@ -47,6 +55,9 @@ class LindstedtSeries(SymPyPrintable):
         ``2 pi/omega``.
     order : int
         Highest power of ``eps`` reached.
+    _harmonics : tuple of tuple of Expr
+        Internal: the cosine coefficients of ``y_k(tau)`` (``x = A*y``) for each order ``k``, used by
+        :meth:`solution`.
     """
 
     f: sp.Expr
@@ -61,7 +72,15 @@ class LindstedtSeries(SymPyPrintable):
     eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Expr:
-        """``x(tau)`` truncated at ``order`` (a cosine polynomial in ``tau = omega*t``)."""
+        """``x(tau)`` truncated at ``order`` (a cosine polynomial in ``tau = omega*t``).
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+        tau : Symbol, optional
+            Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
+        """
         n = self.order if order is None else int(order)
         if n < 0 or n > self.order:
             raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
@@ -88,7 +107,20 @@ class LindstedtSeries(SymPyPrintable):
         return [m[0] for m in sp.Poly(self.f, self.x).monoms() if m[0] > 1]
 
     def omega(self, eps: Any, A: Any, order: int | None = None, **values: Any) -> Any:
-        """Numeric frequency of the truncated series (NumPy broadcasting over ``eps`` and ``A``)."""
+        """Numeric frequency of the truncated series (NumPy broadcasting over ``eps`` and ``A``).
+
+        Parameters
+        ----------
+        eps : float or array_like of float
+            Value(s) of the small parameter; real numbers, broadcast against ``A``.
+        A : float or array_like of float
+            Amplitude value(s) ``x(0)``; real numbers, broadcast against ``eps``.
+        order : int, optional
+            Highest power of ``eps`` kept, an integer >= 0; all computed orders when omitted (larger values are
+            clipped to ``self.order``).
+        **values : float
+            Values of the other parameters of ``f``, keyed by symbol name (each one that occurs must be given).
+        """
         expr = self._truncated(self.frequency, order)
         params = sorted(expr.free_symbols - {self.eps_symbol, self.amplitude}, key=lambda s: s.name)
         fn = _compile(expr, [self.eps_symbol, self.amplitude, *params])
@@ -99,7 +131,17 @@ class LindstedtSeries(SymPyPrintable):
         return s.factor * sp.Add(*[c * self.eps_symbol**k for k, c in enumerate(s.coefficients[: n + 1])])
 
     def validate(self, eps: float, A: float, **kwargs: Any) -> Any:
-        """Compare with the numerically integrated period; see :func:`symosc.nonlinear.validate_lindstedt`."""
+        """Compare with the numerically integrated period; see :func:`symosc.nonlinear.validate_lindstedt`.
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to compare; a finite real number.
+        A : float
+            Amplitude (starting displacement at rest) at which to compare; a finite real number.
+        **kwargs
+            ``orders=`` and ``rtol=``, passed to :func:`~symosc.nonlinear.validate_lindstedt`.
+        """
         from .validate import validate_lindstedt
 
         return validate_lindstedt(self, eps, A, **kwargs)
@@ -175,8 +217,13 @@ def lindstedt(
         may contain other symbols (kept exact in the result).
     order : int
         Highest power of ``eps`` (>= 1).
-    x, eps, amplitude : Symbol
-        Symbols of the coordinate, the small parameter and the amplitude ``A``.
+    x : Symbol, optional
+        Symbol of the coordinate in ``f`` (default ``x``).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter in the result (default ``eps``); ``f`` must not contain it. The old keyword
+        ``eps=`` is still accepted, with a deprecation warning.
+    amplitude : Symbol, optional
+        Symbol of the amplitude ``A = x(0)`` in the result (default ``A``); ``f`` must not contain it.
 
     Returns
     -------

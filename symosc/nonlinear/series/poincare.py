@@ -59,6 +59,12 @@ class LimitCycleSeries(SymPyPrintable):
     ----------
     f : Expr
         The right-hand side as given.
+    x : Symbol
+        Symbol of the coordinate in ``f``.
+    v : Symbol
+        Symbol of the velocity ``x'`` in ``f``.
+    eps_symbol : Symbol
+        Symbol of the small parameter (the expansion variable of the series).
     order : int
         The requested (and reached) order.
     generating_amplitude : Expr
@@ -76,6 +82,11 @@ class LimitCycleSeries(SymPyPrintable):
         Orbital stability for small ``eps > 0`` by the sign rule ``eps * H'(A*) > 0`` (reverse it for ``eps < 0``).
     arithmetic : str
         ``"exact"``, ``"float"`` or ``"mpmath"``.
+    dps : int or None
+        Decimal digits of the fixed-point arithmetic when ``arithmetic="mpmath"`` (None otherwise).
+    _harmonics : tuple of (list, list)
+        Internal: per order ``k``, the cosine and sine coefficients of ``x_k(tau)/A*``, used by :meth:`harmonics`,
+        :meth:`solution` and :meth:`evaluate_solution`.
     """
 
     f: sp.Expr
@@ -105,7 +116,13 @@ class LimitCycleSeries(SymPyPrintable):
         return EpsSeries(sq, self.eps_symbol, n, name="omega**2")
 
     def harmonics(self, order: int | None = None) -> list[tuple[list, list]]:
-        """Fourier coefficients ``(cos[n], sin[n])`` of ``x_k(tau)`` for k = 0..order (SymPy numbers, unscaled)."""
+        """Fourier coefficients ``(cos[n], sin[n])`` of ``x_k(tau)`` for k = 0..order (SymPy numbers, unscaled).
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest order ``k`` returned, an integer from 0 to ``self.order``; all computed orders when omitted.
+        """
         n = self.order if order is None else self._check_order(order)
         A0 = self.generating_amplitude
         return [([A0 * c for c in cs], [A0 * s for s in ss]) for cs, ss in self._harmonics[: n + 1]]
@@ -117,7 +134,15 @@ class LimitCycleSeries(SymPyPrintable):
         return order
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Expr:
-        """``x(tau) = sum_k eps**k x_k(tau)`` truncated at ``order`` as a SymPy expression in ``tau = omega*t``."""
+        """``x(tau) = sum_k eps**k x_k(tau)`` truncated at ``order`` as a SymPy expression in ``tau = omega*t``.
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+        tau : Symbol, optional
+            Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
+        """
         n = self.order if order is None else self._check_order(order)
         A0 = self.generating_amplitude
         nh = max(len(cs) for cs, _ in self._harmonics[: n + 1])
@@ -133,7 +158,23 @@ class LimitCycleSeries(SymPyPrintable):
         return sp.expand(A0 * out) if A0 != 1 else out
 
     def evaluate_solution(self, eps: float, tau: Any, order: int | None = None) -> np.ndarray:
-        """Numeric ``(x, dx/dt)`` of the truncated series at phase(s) ``tau`` (dx/dt = omega dx/dtau)."""
+        """Numeric ``(x, dx/dt)`` of the truncated series at phase(s) ``tau`` (dx/dt = omega dx/dtau).
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to sum the series; a real number (a ``SeriesWarning`` beyond the
+            estimated radius of convergence).
+        tau : float or array_like of float
+            Phase(s) ``tau = omega*t`` at which to evaluate, in radians; real numbers.
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+
+        Returns
+        -------
+        ndarray
+            Shape ``(2,) + shape(tau)``: ``x`` and ``dx/dt``.
+        """
         n = self.order if order is None else self._check_order(order)
         tau = np.asarray(tau, dtype=float)
         A0 = float(self.generating_amplitude)
@@ -152,7 +193,21 @@ class LimitCycleSeries(SymPyPrintable):
 
     @plot_method
     def plot(self, eps: float, order: int | None = None, *, ax: Any = None, numeric: bool = True) -> Any:
-        """Phase portrait ``(x, dx/dt)`` of the truncated series at ``eps``, with the numeric cycle for comparison."""
+        """Phase portrait ``(x, dx/dt)`` of the truncated series at ``eps``, with the numeric cycle for comparison.
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to draw the cycle; a finite real number.
+        order : int, optional
+            Highest power of ``eps`` kept in the series, an integer from 0 to ``self.order``; all computed orders
+            when omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        numeric : bool, optional
+            Whether to overlay the numerically integrated cycle (:func:`~symosc.nonlinear.numeric_orbit`); default
+            True.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -174,7 +229,15 @@ class LimitCycleSeries(SymPyPrintable):
 
     def validate(self, eps_values: Any, **kwargs: Any) -> Any:
         """Compare the truncated series with the numerically integrated limit cycle; see
-        :func:`symosc.nonlinear.validate_limit_cycle`."""
+        :func:`symosc.nonlinear.validate_limit_cycle`.
+
+        Parameters
+        ----------
+        eps_values : float or sequence of float
+            Values of the small parameter at which to compare; finite real numbers.
+        **kwargs
+            ``orders=``, ``rtol=`` and ``dps=``, passed to :func:`~symosc.nonlinear.validate_limit_cycle`.
+        """
         from .validate import validate_limit_cycle
 
         return validate_limit_cycle(self, eps_values, **kwargs)
@@ -229,8 +292,13 @@ def limit_cycle(
         ``(kappa - lambda x**2) x'`` use ``x -> sqrt(kappa/lambda) x``, ``eps -> kappa*eps``).
     order : int
         Highest power of ``eps`` in the frequency, period, amplitude and solution (>= 1).
-    x, v, eps : Symbol
-        The symbols used in ``f`` (and for the series).
+    x : Symbol, optional
+        Symbol of the coordinate in ``f`` (default ``x``).
+    v : Symbol, optional
+        Symbol of the velocity ``x'`` in ``f`` (default ``v``).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter in ``f`` and in the series (default ``eps``). The old keyword ``eps=`` is still
+        accepted, with a deprecation warning.
     arithmetic : {"exact", "float", "mpmath"}
         Exact rationals (needs rational coefficients after scaling by the generating amplitude), double precision,
         or binary fixed point at ``dps`` decimal digits (mpmath numbers on output).

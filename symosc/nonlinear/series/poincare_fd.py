@@ -64,7 +64,15 @@ class OperatorCycle(SymPyPrintable):
         )
 
     def multiplier(self, mu: float, omega: float) -> float:
-        """First-order nontrivial Floquet multiplier ``1 + mu pi G'(A*) / omega**2``."""
+        """First-order nontrivial Floquet multiplier ``1 + mu pi G'(A*) / omega**2``.
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a real number.
+        omega : float
+            The critical frequency of the system (``PoincareOperatorSystem.omega``); a nonzero number, rad/s.
+        """
         return 1.0 + mu * np.pi * self.slope / omega**2
 
 
@@ -84,6 +92,8 @@ class PoincareOperatorSystem(SymPyPrintable):
         ``F_lj(i omega) / (F_lm(i omega) Delta1(i omega))``: the projection row.
     other_roots : ndarray (complex)
         Roots of ``Delta1``.
+    n_samples : int
+        Points of the periodic trapezoidal rule used for the first harmonic of ``psi``.
     """
 
     omega: float
@@ -95,7 +105,13 @@ class PoincareOperatorSystem(SymPyPrintable):
     variables: tuple[sp.Symbol, ...]
 
     def Q(self, A: float) -> complex:
-        """``Q(A)``: ``G = Im Q``, ``2 A b omega**2 = -Re Q`` (Bulgakov (1954), eq. (12.35))."""
+        """``Q(A)``: ``G = Im Q``, ``2 A b omega**2 = -Re Q`` (Bulgakov (1954), eq. (12.35)).
+
+        Parameters
+        ----------
+        A : float
+            Amplitude of the generating solution ``y* = A Re(V e^{iu})``; a finite real number.
+        """
         N = self.n_samples
         u = 2 * np.pi * np.arange(N) / N
         e = np.exp(1j * u)
@@ -107,19 +123,48 @@ class PoincareOperatorSystem(SymPyPrintable):
         return complex(self.W @ first)
 
     def G(self, A: float) -> float:
-        """The amplitude function ``G(A) = Im Q(A)`` (12.35)."""
+        """The amplitude function ``G(A) = Im Q(A)`` (12.35).
+
+        Parameters
+        ----------
+        A : float
+            Amplitude of the generating solution ``y* = A Re(V e^{iu})``; a finite real number.
+        """
         return self.Q(A).imag
 
     def b(self, A: float) -> float:
-        """First frequency correction ``b(A) = -Re Q(A) / (2 A omega**2)``."""
+        """First frequency correction ``b(A) = -Re Q(A) / (2 A omega**2)``.
+
+        Parameters
+        ----------
+        A : float
+            Amplitude of the generating solution ``y* = A Re(V e^{iu})``; a nonzero finite real number.
+        """
         return -self.Q(A).real / (2 * A * self.omega**2)
 
     def amplitude_rate(self, A: float) -> float:
-        """Shortened amplitude equation per unit ``mu``: ``dA/dt = mu G(A) / (2 omega)`` (12.152, one active pair)."""
+        """Shortened amplitude equation per unit ``mu``: ``dA/dt = mu G(A) / (2 omega)`` (12.152, one active pair).
+
+        Parameters
+        ----------
+        A : float
+            Amplitude of the generating solution ``y* = A Re(V e^{iu})``; a finite real number.
+        """
         return self.G(A) / (2 * self.omega)
 
     def cycles(self, A_max: float, *, n_grid: int = 400, tol: float = 1e-12) -> list[OperatorCycle]:
-        """All roots ``A*`` of ``G`` in ``(0, A_max]`` (sign changes on a grid, then Brent), with stability."""
+        """All roots ``A*`` of ``G`` in ``(0, A_max]`` (sign changes on a grid, then Brent), with stability.
+
+        Parameters
+        ----------
+        A_max : float
+            Upper end of the amplitude interval searched; a positive finite number.
+        n_grid : int, optional
+            Number of grid points on which sign changes of ``G`` are sought, an integer >= 2 (default 400); two
+            roots closer than the grid spacing can be missed.
+        tol : float, optional
+            Relative tolerance of Brent's method on each root, a positive number (default 1e-12).
+        """
         from scipy.optimize import brentq
 
         if not np.isfinite(A_max) or A_max <= 0:

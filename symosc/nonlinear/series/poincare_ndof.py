@@ -74,19 +74,42 @@ class NDofPeriodicSolution(SymPyPrintable):
 
     Attributes
     ----------
+    n : int
+        Number of degrees of freedom.
+    mode : int
+        Index of the linear mode continued (modes in ascending frequency, from 0).
+    order : int
+        Highest power of ``eps`` reached.
+    arithmetic : str
+        ``"float"`` or ``"mpmath"``: the arithmetic of the series coefficients.
+    q : tuple of Symbol
+        The coordinates, in the order of the rows of ``M``, ``K`` and ``f``.
+    eps_symbol : Symbol
+        Symbol of the small parameter (the expansion variable of the series).
+    mode_frequencies : tuple of float
+        The linear frequencies ``w_j`` (rad/s), ascending.
+    mode_shapes : ndarray, shape (n, n)
+        Mass-normalised mode shapes ``Phi`` (``Phi^T M Phi = I``) as columns, in ascending frequency.
+    generating_amplitude : float
+        Root ``A*`` of the amplitude equation ``H(A) = 0``.
+    amplitude_equation : Expr
+        ``H(A)`` of the continued mode (a polynomial in ``A`` with float coefficients, in the time scaled by
+        ``w_m``).
     frequency, period : EpsSeries
         ``omega(eps)`` in rad/s (``factor = w_m``) and ``2 pi/omega``.
     amplitude : EpsSeries
         Modal amplitude ``eta_m(0)`` (``eta = Phi^T M q``, mass-normalised modes) at the turning point of the mode.
-    generating_amplitude : float
-        Root of the amplitude equation ``H(A) = 0``.
-    mode_frequencies : tuple of float
-        The linear frequencies ``w_j``.
     exponents : tuple of (complex, complex)
         First-order characteristic exponents ``(lambda_0, lambda_1)`` with ``lambda = lambda_0 + eps*lambda_1``
         (rad/s), two per mode; the critical pair first.
     stable : bool
         Orbital stability for small ``eps > 0`` (all non-zero ``Re lambda_1 < 0``).
+    _coords : tuple
+        Internal: per order, per coordinate, the cosine and sine coefficients of ``q_i`` divided by ``A*``.
+    _numeric : tuple
+        Internal: ``(M, K, f, q, qdot, eps_symbol)`` as given, for the numeric checks and the exponent series.
+    _exponent_cache : dict
+        Internal: the exponent series already computed, keyed by order.
     """
 
     n: int
@@ -110,7 +133,15 @@ class NDofPeriodicSolution(SymPyPrintable):
     eps = _deprecated_attribute("eps_symbol")  # the old name of the small-parameter symbol
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Matrix:
-        """``q(tau)`` (column Matrix) truncated at ``order``; ``tau = omega*t``."""
+        """``q(tau)`` (column Matrix) truncated at ``order``; ``tau = omega*t``.
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+        tau : Symbol, optional
+            Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
+        """
         n = self.order if order is None else int(order)
         if n < 0 or n > self.order:
             raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
@@ -129,7 +160,20 @@ class NDofPeriodicSolution(SymPyPrintable):
         return sp.Matrix(out)
 
     def initial_state(self, eps: float, order: int | None = None) -> np.ndarray:
-        """``(q(0), q'(0))`` of the truncated series (the phase where ``eta_m' = 0``)."""
+        """``(q(0), q'(0))`` of the truncated series (the phase where ``eta_m' = 0``).
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to sum the series; a real number.
+        order : int, optional
+            Highest power of ``eps`` kept, an integer from 0 to ``self.order``; all computed orders when omitted.
+
+        Returns
+        -------
+        ndarray, shape (2n,)
+            ``q(0)`` followed by ``dq/dt(0)`` (in the original time).
+        """
         n = self.order if order is None else int(order)
         om = self.frequency.evaluate(eps, n)
         q0 = np.zeros(self.n)
@@ -142,7 +186,13 @@ class NDofPeriodicSolution(SymPyPrintable):
         return np.concatenate([self.generating_amplitude * q0, self.generating_amplitude * om * v0])
 
     def exponents_at(self, eps: float) -> np.ndarray:
-        """First-order characteristic exponents at ``eps`` (complex array, rad/s)."""
+        """First-order characteristic exponents at ``eps`` (complex array, rad/s).
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter; a real number (the exponents are ``lambda_0 + eps*lambda_1``).
+        """
         return np.array([complex(a) + eps * complex(b) for a, b in self.exponents])
 
     def exponent_series(self, order: int | None = None) -> CharacteristicExponentSeries:
@@ -153,6 +203,12 @@ class NDofPeriodicSolution(SymPyPrintable):
         Rayleigh–Schrödinger perturbation of the Floquet operator in Fourier space, the critical exponent by
         Liouville's formula (:class:`symosc.nonlinear.CharacteristicExponentSeries`).  The order-1 coefficients agree
         with the averaged first-order ``exponents``.
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` in the exponent series, an integer from 0 to ``self.order`` (default
+            ``self.order``).
 
         Examples
         --------
@@ -170,7 +226,15 @@ class NDofPeriodicSolution(SymPyPrintable):
         return self._exponent_cache[key]
 
     def characteristic_exponents(self, eps: float, order: int | None = None) -> np.ndarray:
-        """Characteristic exponents (rad/s) at ``eps`` from :meth:`exponent_series` truncated at ``order``."""
+        """Characteristic exponents (rad/s) at ``eps`` from :meth:`exponent_series` truncated at ``order``.
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to sum the series; a real number.
+        order : int, optional
+            Order of the exponent series, an integer from 0 to ``self.order`` (default ``self.order``).
+        """
         ser = self.exponent_series(order)
         return ser.evaluate(eps)
 
@@ -179,6 +243,23 @@ class NDofPeriodicSolution(SymPyPrintable):
 
         ``exponents_series_real`` uses the first-order exponents, or :meth:`exponent_series` truncated at
         ``exponent_order`` when it is given.
+
+        Parameters
+        ----------
+        eps : float
+            Value of the small parameter at which to compare; a finite real number.
+        rtol : float, optional
+            Relative tolerance of the integration of the orbit and its monodromy matrix, a positive number
+            (default 1e-11).
+        exponent_order : int, optional
+            Order of the exponent series compared, an integer from 0 to ``self.order``; the first-order exponents
+            when omitted.
+
+        Returns
+        -------
+        dict
+            Numeric and series period, amplitude and their errors, the multipliers, and the real parts of the
+            numeric (``exponents_numeric_real``) and series (``exponents_series_real``) exponents, sorted.
         """
         return _validate_ndof(self, float(eps), rtol, exponent_order)
 
@@ -227,9 +308,21 @@ def periodic_solution_ndof(
         Coordinates and velocities used in ``f``.
     order : int
         Highest power of ``eps`` (>= 1).
+    mode : int, optional
+        Index of the linear mode to continue, an integer from 0 to ``n - 1`` in ascending frequency (default 0); no
+        other mode frequency may be an integer multiple of it (internal resonance).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter in ``f`` and in the series (default ``eps``). The old keyword ``eps=`` is still
+        accepted, with a deprecation warning.
     arithmetic : {"float", "mpmath"}
         Mode shapes are irrational in general, so the series are computed in floating point or in mpmath fixed
         point at ``dps`` digits.
+    dps : int, optional
+        Decimal digits of the mpmath arithmetic, a positive integer (default ``mpmath.mp.dps``; the modes are
+        computed with 20 digits more). Ignored by ``arithmetic="float"``.
+    amplitude0 : float, optional
+        Which generating amplitude to continue when the amplitude equation has several positive roots (the root
+        closest to this value is used); required then.
 
     Examples
     --------

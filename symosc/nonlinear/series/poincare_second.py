@@ -55,6 +55,10 @@ class SecondApproximation(SymPyPrintable):
         Generating mode with ``V_m = 1``: ``y0 = A* Re(V e^{iu})``.
     harmonics : ndarray, shape (2, n, n_harmonics + 1), complex
         One-sided Fourier coefficients of ``y0`` and ``y1`` (``y = Re sum_k Y_k e^{i k u}``, ``Y_0`` real).
+    _operator : tuple of ndarray
+        Internal: the coefficient matrices of ``f(D)`` in ascending powers of ``D``, used by :meth:`r_matrix`.
+    _jacobian : tuple
+        Internal: the rows of the Jacobian of ``psi`` (expressions) and the symbols they are written in.
     """
 
     omega: float
@@ -70,19 +74,43 @@ class SecondApproximation(SymPyPrintable):
     _jacobian: tuple = field(default=(), repr=False, compare=False)  # (psi Jacobian rows as Exprs, argument symbols)
 
     def frequency(self, mu: float, order: int = 2) -> float:
-        """``omega (1 + b mu)`` (``order=1``) or ``omega (1 + b mu + c mu**2 / 2)`` (``order=2``), rad/s."""
+        """``omega (1 + b mu)`` (``order=1``) or ``omega (1 + b mu + c mu**2 / 2)`` (``order=2``), rad/s.
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a finite real number.
+        order : int, optional
+            Number of corrections kept, an integer 0, 1 or 2 (default 2; 0 gives ``omega``).
+        """
         m = check_finite("mu", mu)
         k = check_int("order", order, minimum=0, maximum=2)
         return self.omega * (1 + (self.b * m if k >= 1 else 0.0) + (self.c * m * m / 2 if k >= 2 else 0.0))
 
     def reference_amplitude(self, mu: float, order: int = 1) -> float:
-        """First-harmonic amplitude of ``y_m``: ``A*`` (``order=0``) or ``A* + mu B`` (``order=1``)."""
+        """First-harmonic amplitude of ``y_m``: ``A*`` (``order=0``) or ``A* + mu B`` (``order=1``).
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a finite real number.
+        order : int, optional
+            Number of corrections kept, an integer 0 or 1 (default 1).
+        """
         m = check_finite("mu", mu)
         k = check_int("order", order, minimum=0, maximum=1)
         return self.amplitude + (self.B * m if k == 1 else 0.0)
 
     def solution(self, u: Any, mu: float) -> np.ndarray:
-        """``y0(u) + mu y1(u)`` (shape ``(n, len(u))``), ``u = Omega t``; error ``O(mu**2)``."""
+        """``y0(u) + mu y1(u)`` (shape ``(n, len(u))``), ``u = Omega t``; error ``O(mu**2)``.
+
+        Parameters
+        ----------
+        u : float or array_like of float
+            Phase(s) ``u = Omega t`` at which to evaluate, in radians; real numbers.
+        mu : float
+            Value of the small parameter ``mu``; a finite real number.
+        """
         m = check_finite("mu", mu)
         uu = np.atleast_1d(np.asarray(u, dtype=float))
         Y = self.harmonics[0] + m * self.harmonics[1]
@@ -96,6 +124,12 @@ class SecondApproximation(SymPyPrintable):
         ``R = e^{LP} [-b L P + Integral(e^{-L tau} A^-1 Psi(y*(tau)) e^{L tau}, (tau, 0, P))]``, ``Psi = dpsi/dy``,
         in the original coordinates (the book's (12.65) in the modal basis ``v``, ``H1 = -Psi``).  The integral uses
         Gauss–Legendre quadrature on ``n_nodes`` points.
+
+        Parameters
+        ----------
+        n_nodes : int, optional
+            Number of quadrature nodes over the period, an integer from 16 to 100000 (default 256; used in panels
+            of 16 Gauss–Legendre points).
         """
         import scipy.linalg as sl
 
@@ -129,6 +163,11 @@ class SecondApproximation(SymPyPrintable):
 
         One ``eta`` is 0 (autonomy); the other decides orbital stability (stable if negative, with the other roots
         of ``Delta`` in the left half-plane).
+
+        Parameters
+        ----------
+        mu : float
+            Value of the small parameter ``mu``; a finite real number.
         """
         m = check_finite("mu", mu)
         R = self.r_matrix()

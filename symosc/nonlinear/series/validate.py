@@ -46,6 +46,8 @@ class NumericCycle(SymPyPrintable):
 
     Attributes
     ----------
+    eps : float
+        The value of the small parameter at which the cycle was located.
     amplitude : float or mpf
         ``x`` at the section (the turning point).
     period, frequency : float or mpf
@@ -145,11 +147,18 @@ def numeric_limit_cycle(
     Parameters
     ----------
     f : Expr
-        Right-hand side in ``x``, ``v`` (and ``eps``).
+        Right-hand side ``f(x, v)`` of ``x'' + x = eps*f``, an expression in ``x``, ``v`` (and ``eps``) with no other
+        free symbols (substitute numbers for parameters first).
     eps : float
-        The parameter value.
+        Value of the small parameter ``eps``; a finite real number (``|eps| >= 3`` selects the stiff integrator).
+    x : Symbol, optional
+        Symbol of the coordinate in ``f`` (default ``x``).
+    v : Symbol, optional
+        Symbol of the velocity ``x'`` in ``f`` (default ``v``).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter when ``f`` contains it (default ``eps``).
     guess : float
-        Amplitude guess (the generating amplitude or the series value).
+        Amplitude guess (the generating amplitude or the series value); a positive number.
     method : str
         ``"auto"`` (``DOP853`` for ``|eps| < 3``, ``LSODA`` with the analytic Jacobian otherwise: the relaxation
         regime is stiff; ``"Radau"`` also works but is about 10x slower here), or any
@@ -253,7 +262,45 @@ def numeric_orbit(
     guess: float = 2.0,
     samples: int = 400,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Samples ``(x(t), v(t))`` over one period of the numerically located limit cycle (for plots)."""
+    """Samples ``(x(t), v(t))`` over one period of the numerically located limit cycle (for plots).
+
+    Parameters
+    ----------
+    f : Expr
+        Right-hand side ``f(x, v)`` of ``x'' + x = eps*f``, an expression in ``x``, ``v`` (and ``eps``) with no other
+        free symbols.
+    eps : float
+        Value of the small parameter ``eps``; a finite real number.
+    x : Symbol, optional
+        Symbol of the coordinate in ``f`` (default ``x``).
+    v : Symbol, optional
+        Symbol of the velocity ``x'`` in ``f`` (default ``v``).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter when ``f`` contains it (default ``eps``).
+    guess : float, optional
+        Amplitude guess for the shooting on the section ``v = 0, x > 0``; a positive number (default 2, the van der
+        Pol generating amplitude).
+    samples : int, optional
+        Number of equally spaced time samples over the period, an integer >= 2 (default 400).
+
+    Returns
+    -------
+    x, v : ndarray
+        The coordinate and the velocity at the samples, starting at the turning point ``x = amplitude, v = 0``.
+
+    See Also
+    --------
+    numeric_limit_cycle
+    LimitCycleSeries.plot
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, v = sp.symbols("x v")
+    >>> xs, vs = numeric_orbit((1 - x**2) * v, 0.1, samples=50)
+    >>> xs.shape, round(float(xs.max()), 4)
+    ((50,), 2.0001)
+    """
     cyc = numeric_limit_cycle(f, eps, x=x, v=v, eps_symbol=eps_symbol, guess=guess)
     rhs, jac = _rhs_functions(f, x, v, eps_symbol, "numpy")
     method = "LSODA" if cyc.stiff else "DOP853"
@@ -282,6 +329,30 @@ def numeric_period(
 ) -> float:
     """Period of ``x'' + x = eps*f(x)`` started at rest at ``x = A`` (two event-located half swings, DOP853).
 
+    Parameters
+    ----------
+    f : Expr
+        Restoring force ``f(x)`` of ``x'' + x = eps*f``, an expression in ``x`` (and ``eps``) with no other free
+        symbols.
+    eps : float
+        Value of the small parameter ``eps``; a finite real number.
+    A : float
+        Starting displacement (the motion starts at rest at ``x = A``); a finite real number for which the orbit
+        oscillates (otherwise ConvergenceError).
+    x : Symbol, optional
+        Symbol of the coordinate in ``f`` (default ``x``).
+    eps_symbol : Symbol, optional
+        Symbol of the small parameter when ``f`` contains it (default ``eps``).
+    rtol : float, optional
+        Relative tolerance of the integration, a positive number (default 1e-12).
+
+    Returns
+    -------
+    float
+        The period (time between two successive turning points on the same side).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> round(numeric_period(sp.Integer(0) * sp.Symbol("x"), 0.3, 1.0), 10)
     6.2831853072
@@ -296,10 +367,16 @@ def numeric_period(
 class SeriesValidation(SymPyPrintable):
     """Truncated series against the numerical cycle/period.
 
-    ``rows`` holds one dict per (eps, order) with the series and numeric values, the errors, the size of the last
-    term included (a proxy for the truncation error while the series converges) and ``in_validity`` (False when
-    ``|eps|`` exceeds the estimated radius of convergence: the series is then not meaningful and only the numeric
-    value stands).
+    Attributes
+    ----------
+    rows : tuple of dict
+        One dict per (eps, order) with the series and numeric values, the errors, the size of the last term included
+        (a proxy for the truncation error while the series converges) and ``in_validity`` (False when ``|eps|``
+        exceeds the estimated radius of convergence: the series is then not meaningful and only the numeric value
+        stands).
+    radius : float or None
+        Estimated radius of convergence of the frequency series (None when it could not be estimated or was not
+        computed).
     """
 
     rows: tuple
@@ -327,7 +404,13 @@ class SeriesValidation(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Frequency error vs order for each eps (log scale)."""
+        """Frequency error vs order for each eps (log scale).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -352,7 +435,9 @@ def validate_limit_cycle(
     Parameters
     ----------
     lc : LimitCycleSeries
-    eps_values : float or sequence
+        The series to check, as returned by :func:`limit_cycle`.
+    eps_values : float or sequence of float
+        Values of the small parameter at which to compare; finite real numbers.
     orders : sequence of int, optional
         Truncation orders to tabulate (default: ``lc.order`` only).
     rtol : float
@@ -438,6 +523,29 @@ def _pade_error(series: Any, e: float, n: int, ref: float) -> float:
 @validated
 def validate_lindstedt(ls: Any, eps: float, A: float, *, orders: Any = None, rtol: float = 1e-12) -> SeriesValidation:
     """Compare a :class:`~symosc.nonlinear.LindstedtSeries` frequency with the numerically integrated period.
+
+    Parameters
+    ----------
+    ls : LindstedtSeries
+        The series to check, as returned by :func:`lindstedt`.
+    eps : float
+        Value of the small parameter at which to compare; a finite real number.
+    A : float
+        Amplitude (starting displacement at rest) at which to compare; a finite real number.
+    orders : sequence of int, optional
+        Truncation orders to tabulate, integers from 0 to ``ls.order`` (default: ``ls.order`` only).
+    rtol : float, optional
+        Relative tolerance of the integration of the period, a positive number (default 1e-12).
+
+    Returns
+    -------
+    SeriesValidation
+        One row per order (the amplitude columns hold ``A``, the radius is None).
+
+    See Also
+    --------
+    lindstedt
+    numeric_period
 
     Examples
     --------

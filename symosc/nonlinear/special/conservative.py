@@ -61,6 +61,26 @@ def _prepare(V: Any, q: Any, m: Any) -> tuple[sp.Expr, sp.Symbol, sp.Expr]:
 def classify_equilibrium(V: Any, q: sp.Symbol, q0: Any, *, m: Any = 1) -> Equilibrium:
     """Classify the equilibrium ``q0`` of a system with inertia ``m(q)`` and potential ``V(q)`` (Bulgakov §5.2).
 
+    Parameters
+    ----------
+    V : Expr
+        Potential energy ``V(q)``, an expression in ``q`` (other symbols are kept, but the sign of ``V''/m`` at
+        ``q0`` must then be decidable).
+    q : Symbol
+        The coordinate, the variable of ``V`` and ``m``.
+    q0 : Expr or float
+        The equilibrium to classify, a zero of ``V'(q)``; a number or expression.
+    m : Expr or float, optional
+        Inertia coefficient ``m(q)``, positive at ``q0`` (default 1).
+
+    Returns
+    -------
+    Equilibrium
+
+    See Also
+    --------
+    libration_period, rotation_period
+
     Examples
     --------
     >>> import sympy as sp
@@ -69,10 +89,6 @@ def classify_equilibrium(V: Any, q: sp.Symbol, q0: Any, *, m: Any = 1) -> Equili
     1
     >>> classify_equilibrium(-sp.cos(q), q, sp.pi).separatrix_slopes
     (-1, 1)
-
-    See Also
-    --------
-    libration_period, rotation_period
     """
     V, q, m = _prepare(V, q, m)
     q0 = sp.sympify(q0)

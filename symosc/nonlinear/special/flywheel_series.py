@@ -74,11 +74,31 @@ class FlywheelSpeedSeries(SymPyPrintable):
         return out + self.r2 / m**2 if k == 2 else out
 
     def speed(self, M: float, order: int = 1) -> np.ndarray:
-        """``r_m + r1 / M`` (``order=1``) or ``r_m + r1 / M + r2 / M**2`` (``order=2``) on :attr:`sigma`."""
+        """``r_m + r1 / M`` (``order=1``) or ``r_m + r1 / M + r2 / M**2`` (``order=2``) on :attr:`sigma`.
+
+        Parameters
+        ----------
+        M : float
+            Constant part of the reduced mass (flywheel included), the large parameter of the series; a positive
+            number.
+        order : int, optional
+            Highest power of ``1/M`` kept, 1 or 2 (default 1; 2 needs ``r2``, i.e. ``drive_slope=`` when the series
+            was built).
+        """
         return self._terms(M, order)
 
     def irregularity(self, M: float, order: int = 1) -> float:
-        """Cyclic irregularity ``(r_max - r_min) / r_m`` from the series truncated at ``1/M**order``."""
+        """Cyclic irregularity ``(r_max - r_min) / r_m`` from the series truncated at ``1/M**order``.
+
+        Parameters
+        ----------
+        M : float
+            Constant part of the reduced mass (flywheel included), the large parameter of the series; a positive
+            number.
+        order : int, optional
+            Highest power of ``1/M`` kept, 1 or 2 (default 1; 2 needs ``r2``, i.e. ``drive_slope=`` when the series
+            was built).
+        """
         if not M > 0:
             raise ParameterError(f"M must be positive, got {M}")
         if order == 1:
@@ -86,7 +106,13 @@ class FlywheelSpeedSeries(SymPyPrintable):
         return float(np.ptp(self._terms(M, order))) / self.r_m
 
     def mass_for(self, delta: float) -> float:
-        """Total reduced mass for an irregularity ``delta`` (first order; Radinger's formula (5.319))."""
+        """Total reduced mass for an irregularity ``delta`` (first order; Radinger's formula (5.319)).
+
+        Parameters
+        ----------
+        delta : float
+            The required coefficient of cyclic irregularity ``(r_max - r_min)/r_m``; a number in ``(0, 1)``.
+        """
         if not 0 < delta < 1:
             raise ParameterError(f"delta must lie in (0, 1), got {delta}")
         return float(np.ptp(self.r1)) / (delta * self.r_m)

@@ -106,7 +106,13 @@ class CoulombMotion(SymPyPrintable):
         return np.where(moving, x, out)
 
     def velocity(self, t: Any) -> np.ndarray:
-        """Velocity at times ``t`` (zero after the stop)."""
+        """Velocity at times ``t`` (zero after the stop).
+
+        Parameters
+        ----------
+        t : float or array_like of float
+            Time(s) since the start from rest at ``x0``; real numbers >= 0.
+        """
         t = np.asarray(t, dtype=float)
         tp = np.array([float(q) for q in self.turning_points])
         times = np.array(self.times)
@@ -128,7 +134,15 @@ class CoulombMotion(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, n: int = 2000) -> Any:
-        """Draw ``x(t)`` with the dead zone shaded."""
+        """Draw ``x(t)`` with the dead zone shaded.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        n : int, optional
+            Number of time samples from 0 to 1.1 times the stop time, an integer >= 2 (default 2000).
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -147,6 +161,23 @@ def coulomb_oscillator(x0: Any, B: Any, k: Any = 1, eps: Any = 0, max_half_swing
 
     Bulgakov §5.6–5.7: ``x_{j+1} = B sign(x_j)(1 + delta) - delta x_j`` while ``|x_j| > B``; the period
     ``2 pi/omega``, ``omega = sqrt(k^2 - eps^2)``, does not depend on the friction.
+
+    Parameters
+    ----------
+    x0 : Expr or float
+        Starting position (the motion starts at rest); a real number (exact rationals give exact turning points).
+    B : Expr or float
+        Dead-zone half-width ``F/k^2`` (Coulomb friction force per unit mass over ``k^2``); a non-negative number.
+    k : Expr or float, optional
+        Undamped natural frequency; a positive number (default 1).
+    eps : Expr or float, optional
+        Viscous damping coefficient in ``2 eps x'``; a number with ``0 <= eps < k`` (default 0).
+    max_half_swings : int, optional
+        Largest number of half-swings computed before ConvergenceError, an integer >= 1 (default 1000000).
+
+    Returns
+    -------
+    CoulombMotion
 
     Examples
     --------
@@ -201,8 +232,19 @@ def coulomb_oscillator(x0: Any, B: Any, k: Any = 1, eps: Any = 0, max_half_swing
 class HalfSwingMap(SymPyPrintable):
     """Turning-point map of one right-to-left half-swing: from rest at ``a > 0`` to the next rest at ``-b``.
 
-    ``phi`` is the function with ``Phi(a) = Phi(-b)``; call the object with ``a`` to get ``b`` (negative when the
-    motion ends on the starting side; ``None`` if the spring cannot overcome friction at ``a``, i.e. it never moves).
+    Call the object with ``a`` to get ``b`` (negative when the motion ends on the starting side; ``None`` if the
+    spring cannot overcome friction at ``a``, i.e. it never moves).
+
+    Attributes
+    ----------
+    q : Symbol
+        The coordinate symbol of ``phi`` and ``force``.
+    phi : Expr
+        The function ``Phi(q) = Integral((V'(s) - F) exp(-eps s), (s, 0, q))`` with ``Phi(a) = Phi(-b)``.
+    force : Expr
+        The net force ``-V'(q) + F`` at rest just before moving left (the motion starts only where it is negative).
+    _phi_num, _force_num : callable
+        Internal: compiled numeric versions of ``phi`` and ``force``.
     """
 
     q: sp.Symbol
@@ -236,7 +278,22 @@ class HalfSwingMap(SymPyPrintable):
         raise ConvergenceError(f"no turning point found after the start at a = {a}: the motion does not stop")
 
     def sequence(self, a0: float, n: int) -> list[float]:
-        """``a0, b1, a2, ...`` for a symmetric system (each half-swing mapped by the same map), up to ``n`` steps."""
+        """``a0, b1, a2, ...`` for a symmetric system (each half-swing mapped by the same map), up to ``n`` steps.
+
+        The sequence stops early when the motion sticks or ends on the starting side.
+
+        Parameters
+        ----------
+        a0 : float
+            Starting turning point (at rest); a positive number.
+        n : int
+            Largest number of half-swings, an integer >= 0.
+
+        Returns
+        -------
+        list of float
+            At most ``n + 1`` amplitudes, starting with ``a0``.
+        """
         out = [float(a0)]
         for _ in range(n):
             b = self(out[-1])
@@ -255,6 +312,7 @@ def half_swing_map(V: Any, q: sp.Symbol, *, friction: Any = 0, drag: Any = 0) ->
     V : expression in ``q``
         Potential energy per unit mass (e.g. ``1 - cos(q)`` for the pendulum in units of ``g/l``).
     q : Symbol
+        The coordinate, the variable of ``V``.
     friction : number
         Coulomb friction force per unit mass ``F >= 0`` (opposes the motion).
     drag : number
@@ -318,6 +376,15 @@ def quadratic_drag_eta(xi: float, dps: int = 30) -> float:
 
     ``xi = eps a - beta`` is the reduced amplitude; the next reduced amplitude is ``eta`` (Table 3 of the book).
 
+    Parameters
+    ----------
+    xi : float
+        Reduced amplitude ``xi = eps a - beta`` (5.114); a positive finite number.
+    dps : int, optional
+        Decimal digits of the mpmath root finding, a positive integer (default 30).
+
+    Examples
+    --------
     >>> round(quadratic_drag_eta(1.0), 4)
     0.5936
     """
@@ -332,6 +399,13 @@ def quadratic_drag_eta_series(order: int) -> list[sp.Rational]:
 
     Solved order by order from ``f(-eta) = f(xi)``, ``f(x) = (1 + x) e^{-x}``.
 
+    Parameters
+    ----------
+    order : int
+        Number of coefficients (the highest power of ``xi``), an integer >= 1.
+
+    Examples
+    --------
     >>> quadratic_drag_eta_series(5)
     [1, -2/3, 4/9, -44/135, 104/405]
     """
@@ -362,6 +436,15 @@ def quadratic_drag_half_swing_times(xi: float, dps: int = 20) -> tuple[float, fl
     ``t = (1/sqrt2) Integral(dx/sqrt(g(x)))`` with ``g(x) = x + 1 - (xi + 1) e^{x - xi}``.  The inverse-square-root
     endpoint singularities are handled by tanh-sinh quadrature.  Table 4 of the book; small ``xi``: ``(pi/2, pi/2)``.
 
+    Parameters
+    ----------
+    xi : float
+        Reduced amplitude ``xi = eps a - beta`` (5.114) at the start of the half-swing; a positive finite number.
+    dps : int, optional
+        Decimal digits of the mpmath quadrature, a positive integer (default 20; 10 more are used internally).
+
+    Examples
+    --------
     >>> [round(v, 3) for v in quadratic_drag_half_swing_times(1.0)]
     [1.747, 1.475]
     """

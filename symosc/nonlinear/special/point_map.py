@@ -55,6 +55,9 @@ def point_map_fixed_point(
         The map: an expression in ``var`` (or its only free symbol) or a function of one float.
     x0 : float
         Starting guess.
+    var : Symbol, optional
+        The variable of ``P`` when it is an expression (default: its only free symbol); any other free symbol
+        raises ParameterError. Ignored for a callable.
     tol : float
         Tolerance on ``|P(x) - x|``.
     step : float

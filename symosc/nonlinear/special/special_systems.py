@@ -79,12 +79,34 @@ class ClockEscapement(SymPyPrintable):
     exists: bool
 
     def next_amplitude(self, a: float) -> float:
-        """``b(a)``; for ``a`` below the start threshold the kick is missed and the Coulomb law ``a - 2B`` applies."""
+        """``b(a)``; for ``a`` below the start threshold the kick is missed and the Coulomb law ``a - 2B`` applies.
+
+        Parameters
+        ----------
+        a : float
+            Amplitude of the current swing (a turning point), in the units of ``B``; a positive number.
+        """
         if a <= float(self.start_threshold):
             return a - 2 * float(self.B)
         return float(self.map.subs(_a, a))
 
     def sequence(self, a0: float, n: int) -> list[float]:
+        """Successive swing amplitudes ``a0, b(a0), b(b(a0)), ...`` of the point map.
+
+        The sequence stops early when an amplitude falls to ``B`` or below (the balance stops in the dead zone).
+
+        Parameters
+        ----------
+        a0 : float
+            Starting amplitude (a turning point), in the units of ``B``; a positive number.
+        n : int
+            Number of map steps, an integer >= 0.
+
+        Returns
+        -------
+        list of float
+            At most ``n + 1`` amplitudes, starting with ``a0``.
+        """
         out = [float(a0)]
         for _ in range(n):
             nxt = self.next_amplitude(out[-1])
@@ -99,6 +121,12 @@ class ClockEscapement(SymPyPrintable):
 
         ``pi - asin((f - B)/(a - B)) + asin((f - B)/sqrt((a - B)^2 + h))``: shorter than ``pi`` when ``f > B`` (kick
         before the dead-zone edge is passed), longer when ``f < B`` and exactly ``pi`` when ``f = B`` (Airy).
+
+        Parameters
+        ----------
+        a : Expr or float
+            Amplitude at the start of the half-swing, above the start threshold (the kick is reached); a number or a
+            symbol.
         """
         a = sp.sympify(a)
         B, h, f = self.B, self.h, self.f
@@ -117,6 +145,19 @@ def clock_escapement(B: Any, h: Any, f: Any = 0) -> ClockEscapement:
 
     The map is derived from energy conservation about the friction center ``+B`` of the leftward swing:
     ``(b + B)^2 = (a - B)^2 + h``.
+
+    Parameters
+    ----------
+    B : Expr or float
+        Dead zone ``F/sigma`` of the Coulomb friction (friction force over spring stiffness); a positive number.
+    h : Expr or float
+        Kick ``h = 2 dH/sigma``: twice the escapement energy per swing over the stiffness; a positive number.
+    f : Expr or float, optional
+        Position ``|x|`` at which the kick is given; a non-negative number (default 0).
+
+    Returns
+    -------
+    ClockEscapement
 
     Examples
     --------
@@ -141,7 +182,27 @@ def clock_escapement(B: Any, h: Any, f: Any = 0) -> ClockEscapement:
 
 @dataclass(frozen=True)
 class StepGenerator(SymPyPrintable):
-    """Cycle of ``x'' + 2 eps x' + k^2 x = k^2 S H(x')``: turning points ``+A`` and ``-B`` (5.166)."""
+    """Cycle of ``x'' + 2 eps x' + k^2 x = k^2 S H(x')``: turning points ``+A`` and ``-B`` (5.166).
+
+    Attributes
+    ----------
+    S : Expr
+        Height of the step characteristic (the switched force per unit ``k^2``).
+    eps : Expr
+        Damping coefficient ``eps`` of the circuit.
+    k : Expr
+        Undamped natural frequency ``k``.
+    delta : Expr
+        Half-swing decrement ``exp(-pi eps/omega)``, ``omega = sqrt(k^2 - eps^2)`` (5.162)–(5.163).
+    A : Expr
+        Upper turning point of the cycle, ``S/(1 - delta)`` (5.166).
+    B : Expr
+        Magnitude of the lower turning point, ``S delta/(1 - delta)`` (5.166).
+    multiplier : Expr
+        Slope ``delta**2`` of the composed half-maps at the cycle (stable, since below 1).
+    period : Expr
+        Period ``2 pi/omega`` of the cycle.
+    """
 
     S: sp.Expr
     eps: sp.Expr
@@ -153,7 +214,20 @@ class StepGenerator(SymPyPrintable):
     period: sp.Expr
 
     def sequence(self, a0: float, n: int) -> list[float]:
-        """Signed turning points ``a0, -b1, c2, ...`` of the half-maps (5.161), (5.164)."""
+        """Signed turning points ``a0, -b1, c2, ...`` of the half-maps (5.161), (5.164).
+
+        Parameters
+        ----------
+        a0 : float
+            Starting upper turning point; a real number.
+        n : int
+            Number of half-swings, an integer >= 0.
+
+        Returns
+        -------
+        list of float
+            ``n + 1`` signed turning points, starting with ``a0``.
+        """
         d, S = float(self.delta), float(self.S)
         out = [float(a0)]
         for j in range(n):
@@ -166,6 +240,21 @@ def step_valve_generator(S: Any, eps: Any, k: Any = 1) -> StepGenerator:
     """Valve generator with an ideal step characteristic (Bulgakov (1954), §5.13; the model is
     reconstructed where the print is illegible).
 
+    Parameters
+    ----------
+    S : Expr or float
+        Height of the step characteristic ``i_a = S H(x')`` (rescaled, (5.158)–(5.160)); a positive number.
+    eps : Expr or float
+        Damping coefficient ``eps = R/(2L)``; a positive number below ``k``.
+    k : Expr or float, optional
+        Undamped natural frequency ``k = 1/sqrt(LC)``; a positive number above ``eps`` (default 1).
+
+    Returns
+    -------
+    StepGenerator
+
+    Examples
+    --------
     >>> g = step_valve_generator(1, 0)
     Traceback (most recent call last):
     ...
@@ -214,6 +303,22 @@ def backlash_critical_gap(z: float, f: float, variant: str = "follower") -> floa
     states and agree with a simulation of the piecewise equations (:func:`simulate_backlash_servo`: at 0.9 k_c a
     self-oscillation persists, at 1.1 k_c every start comes to rest, for both variants).
 
+    Parameters
+    ----------
+    z : float
+        Reduced (dimensionless) backlash ``z`` of (5.186)–(5.189); a non-negative finite number.
+    f : float
+        Reduced Coulomb friction (friction force over the motor's driving force); a non-negative finite number.
+    variant : {"follower", "motor"}, optional
+        Where the friction acts: on the follower (5.186, default) or on the motor (5.189).
+
+    Returns
+    -------
+    float
+        The critical gap ``k_c`` (0 when ``z = 0``, or ``f >= 1`` for the motor variant).
+
+    Examples
+    --------
     >>> round(backlash_critical_gap(1.0, 0.0), 6) == round(backlash_critical_gap(1.0, 1e-12), 6)
     True
     """
@@ -236,9 +341,16 @@ def backlash_critical_gap(z: float, f: float, variant: str = "follower") -> floa
 class FlywheelDesign(SymPyPrintable):
     """Flywheel from Radinger's formula: ``M r_m^2 delta = Delta E`` (leading term of §5.24).
 
-    ``energy_swing`` is ``Delta E = max E - min E`` of ``E(s) = Integral(torque - r_m^2 a'(s)/2)``; ``extremes`` are
-    the crank positions of the smallest and the largest speed; ``mass`` the total reduced mass needed;
-    ``flywheel_mass`` that minus ``other_mass`` (m2 + m3 of (5.319)).
+    Attributes
+    ----------
+    energy_swing : float
+        ``Delta E = max E - min E`` of ``E(s) = Integral(torque - r_m^2 a'(s)/2)``.
+    extremes : tuple of float
+        The crank positions ``s`` (reduced to one period) of the smallest and the largest speed.
+    mass : float
+        The total reduced mass needed, ``Delta E/(delta r_m^2)``.
+    flywheel_mass : float
+        ``mass`` minus ``other_mass`` (m2 + m3 of (5.319)): the flywheel's share.
     """
 
     energy_swing: float
@@ -265,12 +377,32 @@ def radinger_flywheel(
     ----------
     torque : expression in ``s``
         Excess driving force ``F(s) - G(s)`` along the path ``s`` (zero mean over a period).
+    s : Symbol
+        The path coordinate (crank-pin path) in ``torque`` and ``mass_variation``.
     delta : float
         Coefficient of cyclic irregularity ``(r_max - r_min)/r_m``.
     r_m : float
         Mean speed.
     mass_variation : expression in ``s``
         The zero-mean variable part ``a(s)`` of the reduced mass.
+    other_mass : float, optional
+        The constant reduced masses already present (m2 + m3 of (5.319)), subtracted to give ``flywheel_mass``; a
+        finite number (default 0).
+    period : float, optional
+        Period of the torque in ``s``; a positive number (default ``2 pi``).
+    samples : int, optional
+        Number of grid points over one period on which sign changes of the torque are located, an integer >= 2
+        (default 4001).
+
+    Returns
+    -------
+    FlywheelDesign
+
+    Examples
+    --------
+    >>> s = sp.Symbol("s")
+    >>> round(radinger_flywheel(sp.sin(s), s, 0.02, 10.0).mass, 10)   # Delta E = 2
+    1.0
     """
     torque, av = sp.sympify(torque), sp.sympify(mass_variation)
     for e, n in ((torque, "torque"), (av, "mass_variation")):
