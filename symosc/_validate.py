@@ -471,9 +471,9 @@ def _alternatives(text: str) -> list[str]:
 
 def _admits_string(annotation: Any) -> bool:
     """Whether a parameter annotated ``annotation`` may receive a string: one of its alternatives is ``str``,
-    a path or a ``Literal``, or there is no annotation to go by (a string default admits strings too)."""
+    a path or a ``Literal`` (a string default or a docstring type naming ``str`` admits strings too)."""
     if annotation is inspect.Parameter.empty:
-        return True
+        return False  # decided by the default and the docstring's type
     kinds = ("str", "Path", "os.PathLike", "PathLike")
     return any(
         a in kinds or a.startswith(("Literal", "PathLike", "os.PathLike"))
@@ -521,6 +521,7 @@ def validated(fn):
         one (computed on the first call with a string argument)."""
         kinds = _docstring_parameters(inspect.getdoc(fn) or "")
         return frozenset(p for p in maybe_refused if not _documented_string(kinds.get(p, ("", ""))[0]))
+
     conventional_names = frozenset(conventional)
     # positional index from which a conventional parameter can be given positionally (never, if none)
     first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)

@@ -16,7 +16,13 @@ P = sp.Symbol("p")
 
 
 def as_expr(value: Any, name: str) -> sp.Expr:
-    """Sympify ``value`` or raise ParameterError naming ``name``."""
+    """Sympify ``value`` or raise ParameterError naming ``name`` (text is refused: write ``sp.Symbol("R1")``, not
+    ``"R1"``, so that a typo is never silently a new symbol)."""
+    if isinstance(value, str | bytes):
+        raise ParameterError(
+            f"{name} must be a number or SymPy expression, got the string {value!r} (use sympy.Symbol({value!r}) for a "
+            "symbolic value)"
+        )
     try:
         expr = sp.sympify(value)
     except (sp.SympifyError, TypeError, ValueError) as exc:

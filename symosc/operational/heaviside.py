@@ -6,6 +6,8 @@ Convention: images are **Carson** images, ``X(p) = p * Laplace[x](p)``; original
 
 from __future__ import annotations
 
+from typing import Any
+
 import mpmath
 import sympy as sp
 
@@ -234,12 +236,41 @@ def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, 
     if ser.has(1 / s) or any(term.as_coeff_exponent(s)[1] < 0 for term in sp.Add.make_args(sp.expand(ser))):
         raise ModelError("the image grows at p -> oo; the first expansion theorem needs X(p) analytic at infinity")
     coeffs = [ser.coeff(s, k) if k else ser.subs(s, 0) for k in range(order)]
-    out = sp.Add(*[c * t**k / sp.factorial(k) for k, c in enumerate(coeffs)])
+    terms = [c * t**k / sp.factorial(k) for k, c in enumerate(coeffs)]
+    out = sp.Add(*terms)
     if tol is not None:
-        last = coeffs[-1] * t ** (order - 1) / sp.factorial(order - 1)
+        last = terms[-1]
         if last.is_number and abs(complex(last)) > tol:
             raise ConvergenceError(
                 f"first expansion: last term {float(abs(complex(last))):.3g} > tol={tol}; raise order",
                 achieved=float(abs(complex(last))),
             )
+    elif out.is_number:
+        _check_partial_sum(terms, out, t, order)
     return out
+
+
+def _check_partial_sum(terms: list, total: sp.Expr, t: Any, order: int) -> None:
+    """Warn (AccuracyWarning) or raise (ConvergenceError) when a numeric partial sum is inaccurate: its error is at
+    least the last term, plus the rounding of the largest term at the working precision when ``t`` is a float."""
+    import warnings
+
+    from ..errors import AccuracyWarning
+
+    size = [abs(complex(sp.N(term, 30))) for term in terms]
+    value = abs(complex(sp.N(total, 30)))
+    rounding = max(size) * 2.0**-52 if any(isinstance(a, sp.Float) for a in sp.sympify(t).atoms(sp.Number)) else 0.0
+    error = size[-1] + rounding
+    if not error <= value:
+        raise ConvergenceError(
+            f"first expansion at t = {t}: the error of the {order}-term sum is about {error:.3g} (last term "
+            f"{size[-1]:.3g}, rounding of terms up to {max(size):.3g}), more than the sum {value:.3g}; raise order, "
+            "give t exactly (Rational) or use inverse_carson/invert_numeric",
+            achieved=error,
+        )
+    if error > 1e-8 * max(value, 1e-300):
+        warnings.warn(
+            f"first expansion at t = {t}: the {order}-term sum {value:.6g} may be off by {error:.3g}",
+            AccuracyWarning,
+            stacklevel=3,
+        )

@@ -20,8 +20,10 @@ import numpy as np
 from ...errors import ConvergenceError, ModelError
 from . import _taylor
 
-#: eigenvalue gaps below cluster_tol * _NOISE * ||A|| are rounding noise and always link
-_NOISE = 1e-12
+#: eigenvalue gaps below _NOISE * ||A|| * κ (κ the eigenvalue condition number) are within the eigenvalues' own
+#: rounding uncertainty and always link, whatever cluster_tol is (a perturbed Jordan block at 0 is never split into
+#: "distinct" eigenvalues when cluster_tol is lowered after a Taylor series failed to converge)
+_NOISE = 1e-14
 
 
 def relative_clusters(
@@ -29,8 +31,9 @@ def relative_clusters(
 ) -> list[list[int]]:
     """Single-linkage clusters: λ_i, λ_j are linked when ``|λ_i - λ_j| <= cluster_tol*max(|λ_i|, |λ_j|)``.
 
-    A gap within the eigenvalues' own uncertainty, ``cluster_tol * 1e-12 * scale * max(κ_i, κ_j)`` (``scale`` ~
-    ||A||, κ the eigenvalue condition numbers), also links: a perturbed Jordan block at 0 stays one cluster.
+    A gap within the eigenvalues' own uncertainty, ``1e-14 * scale * max(κ_i, κ_j)`` (``scale`` ~ ||A||, κ the
+    eigenvalue condition numbers), also links, whatever ``cluster_tol``: a perturbed Jordan block at 0 stays one
+    cluster.
     """
     n = len(eigs)
     parent = list(range(n))
@@ -42,7 +45,7 @@ def relative_clusters(
             i = parent[i]
         return i
 
-    floor = cluster_tol * _NOISE * scale
+    floor = _NOISE * scale
     for i in range(n):
         for j in range(i + 1, n):
             gap = abs(eigs[i] - eigs[j])

@@ -103,7 +103,9 @@ class Matrizant(SymPyPrintable):
         self, t1: float, values: Mapping | None = None, *, tol: float | None = None, fallback: bool = True
     ) -> np.ndarray:
         """``Ω(t1)`` from the series; if ``tol`` is given and the a-priori bound exceeds it, integrate numerically
-        (``fallback=True``) or raise ConvergenceError.
+        (``fallback=True``) or raise ConvergenceError.  Without ``tol`` the bound is still checked: an error bound
+        above ``1e-8`` of the value warns (:class:`~symosc.errors.AccuracyWarning`), one above the value itself
+        raises ConvergenceError.
 
         >>> import sympy as sp
         >>> t = sp.Symbol("t")
@@ -125,7 +127,28 @@ class Matrizant(SymPyPrintable):
         free = S.free_symbols - {self.t}
         if free:
             raise ParameterError("missing values for: " + ", ".join(sorted(map(str, free))))
-        return np.asarray(_compile(S, [self.t])(float(t1)), dtype=float)
+        out = np.asarray(_compile(S, [self.t])(float(t1)), dtype=float)
+        if tol is None:  # no tolerance asked: still say when the truncation makes the value inaccurate or meaningless
+            b = self.bound(t1, values=values)
+            scale = max(1.0, float(np.max(np.abs(out))))
+            if not b <= scale:
+                raise ConvergenceError(
+                    f"order {self.order} Peano–Baker series at t={t1}: the truncation error may reach {b:.3g}, more "
+                    "than the value itself; raise order, shorten the interval, or use matrizant_numeric()",
+                    achieved=b,
+                )
+            if b > 1e-8 * scale:
+                import warnings
+
+                from ...errors import AccuracyWarning
+
+                warnings.warn(
+                    f"order {self.order} Peano–Baker series at t={t1}: truncation error up to {b:.3g} "
+                    f"(a-priori bound); pass tol= to fall back to numerical integration",
+                    AccuracyWarning,
+                    stacklevel=2,
+                )
+        return out
 
     def __repr__(self) -> str:
         return f"Matrizant(n={self.A.rows}, t0={self.t0}, order={self.order})"

@@ -13,6 +13,7 @@ Signal model (Belyakov 2005, eq. 39), per channel c and sample n at t_n = n dt::
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -21,7 +22,7 @@ import numpy as np
 
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
-from ...errors import IdentificationError, ParameterError
+from ...errors import AccuracyWarning, IdentificationError, ParameterError
 
 __all__ = ["ModalEstimate"]
 
@@ -411,8 +412,44 @@ def _modal_estimate(
             f"{method}: only {osc.size} oscillatory mode(s) found but {n_pairs_wanted} requested; {n_real} pole(s) are "
             "real (non-oscillatory, e.g. noise or an overdamped component). Lower n_modes or improve the signal"
         )
+    if osc.size == 0:
+        raise IdentificationError(
+            f"{method}: the record holds no oscillation (every identified pole is real: {n_real}); nothing to identify"
+        )
     osc = osc[np.argsort(osc.imag)]
-    return _fit(y, dt, osc, constant=constant, method=method, singular_values=singular_values, details=details)
+    samples_per_period = 2 * np.pi / (float(osc.imag.max()) * dt)
+    if samples_per_period < _MIN_SAMPLES_PER_PERIOD:
+        warnings.warn(
+            f"{method}: the fastest mode found, {osc.imag.max():.6g} rad/s, has only {samples_per_period:.2g} samples "
+            f"per period at dt = {dt:g} s: the record may be under-sampled, and a faster mode above the Nyquist "
+            f"frequency pi/dt = {np.pi / dt:.6g} rad/s would fold to this frequency. Sample faster (at least "
+            f"{_MIN_SAMPLES_PER_PERIOD} samples per period of the fastest mode) to rule aliasing out",
+            AccuracyWarning,
+            stacklevel=4,
+        )
+    estimate = _fit(y, dt, osc, constant=constant, method=method, singular_values=singular_values, details=details)
+    _check_explains_more_than_noise(estimate, y.size, method)
+    return estimate
+
+
+#: fewer samples per period of the fastest identified mode than this, and the record may be aliased
+_MIN_SAMPLES_PER_PERIOD = 5
+
+
+def _check_explains_more_than_noise(estimate: ModalEstimate, n_values: int, method: str) -> None:
+    """Model-order test: white noise fitted with ``p`` free poles and amplitudes has about ``2 p / N`` of its energy
+    explained by chance; a model that explains less than three times that is no better than noise."""
+    explained = 1.0 - estimate.residual**2
+    chance = 2.0 * estimate.n_poles / n_values
+    if explained < 3.0 * chance:
+        warnings.warn(
+            f"{method}: the {len(estimate.frequencies)} fitted mode(s) explain {100 * explained:.2g} % of the "
+            f"record's energy, no more than {estimate.n_poles} free poles would fit in white noise "
+            f"(about {100 * chance:.2g} %): the record may hold no identifiable oscillation; check the signal, "
+            "its noise level, or lower n_modes",
+            AccuracyWarning,
+            stacklevel=4,
+        )
 
 
 def _basis(lam: np.ndarray, t: np.ndarray, constant: bool) -> np.ndarray:

@@ -128,11 +128,15 @@ def _fastest_frequency(y: np.ndarray, dt: float) -> float | None:
     if not np.any(power[1:] > 0):
         return None
     floor = float(np.median(power[len(power) // 2 :]))
-    threshold = max(100.0 * floor, 1e-6 * float(power[1:].max()))
-    above = np.nonzero(power[1:] > threshold)[0]
-    if above.size == 0:
+    threshold = max(100.0 * floor, 1e-14 * float(power[1:].max()))
+    # spectral peaks (local maxima) above the noise floor: the window's leakage around a strong mode falls off
+    # monotonically, while a weak mode far below the strong one (80 dB and more) still stands out as a peak, and
+    # decimating past it would fold it to a wrong frequency
+    inner = power[1:-1]
+    peaks = np.nonzero((inner > power[:-2]) & (inner >= power[2:]) & (inner > threshold))[0] + 1
+    if peaks.size == 0:
         return None
-    return 2 * np.pi * (above[-1] + 1) / (n * dt)
+    return 2 * np.pi * (peaks[-1] + 1) / (n * dt)
 
 
 def _auto_decimation(y: np.ndarray, dt: float, n_poles: int | None) -> int:
