@@ -96,6 +96,21 @@ class ErrorMap(SymPyPrintable):
         """Contour map in 1 % bands up to 10 % (Figs 21–22), or of the min modal energy (``energy=True``, Figs 23–24).
 
         The energy map draws the applicability level (half the mean modal energy) as a dashed line.
+
+        Parameters
+        ----------
+        name : str, optional
+            Parameter whose mean error is drawn; must be one of ``names`` (default: the first of them).
+        noise_index : int, optional
+            Index into ``noise`` of the level to draw (default -1: the highest level given).
+        energy : bool, optional
+            Draw the minimum modal energy of the release (Figs 23–24) instead of the error (default False).
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
         """
         import matplotlib.pyplot as plt
 

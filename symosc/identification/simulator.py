@@ -218,7 +218,17 @@ class StandRecord(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Plot the sensor signals (mm) against time."""
+        """Plot the sensor signals (mm) against time.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
 
         ax = new_axes(ax)
         for j, y in enumerate(self.signals, start=1):
@@ -354,9 +364,12 @@ def simulate_stand(
     dt, n_samples : float, int
         Sampling period (s) and number of samples (the dissertation: 0.002212 s, 12544).
     noise : float
-        White-noise standard deviation as a fraction of ``noise_reference`` (default: the mean absolute modal
+        White-noise standard deviation as a fraction of ``noise_reference``; a finite number >= 0 (default 0: no
+        noise).
+    noise_reference : float, optional
+        Reference amplitude (m) that ``noise`` multiplies; a positive number.  Default: the mean absolute modal
         amplitude ``mean |C'|`` of the linear model, about 0.00067 m for the dissertation's stand; if the force
-        leaves a mode unexcited, sqrt(2) times the mean standard deviation of the clean signals).
+        leaves a mode unexcited, sqrt(2) times the mean standard deviation of the clean signals.
     seed : int, optional
         Seed of the noise generator.
     damping : float or (N,) array
