@@ -137,7 +137,8 @@ def jacobian(
     Parameters
     ----------
     func : callable
-        Returns a scalar, a 1-D array, a mapping name -> number, or a dataclass (its scalar fields).
+        ``func(x, *args, **kwargs)``: the function to differentiate; must return a scalar, a 1-D array, a mapping
+        name -> number, or a dataclass (its scalar fields).
     x : array_like, shape (n,)
         Point of differentiation: finite real numbers (flattened to a 1-D array).
     method : {"auto", "complex", "central"}

@@ -256,7 +256,7 @@ def stand_system(
     Parameters
     ----------
     model : BodyOnSprings
-        From :func:`symosc.models.body_on_springs`.
+        The stand model; must come from :func:`symosc.models.body_on_springs`.
     values : dict
         Parameter values of the model (by symbol or name).
     damping : float or sequence of float
@@ -355,7 +355,8 @@ def simulate_stand(
     Parameters
     ----------
     model : BodyOnSprings
-        From :func:`symosc.models.body_on_springs`; fixes the layout and the product-of-inertia convention.
+        The stand model; must come from :func:`symosc.models.body_on_springs` (it fixes the layout and the
+        product-of-inertia convention).
     values : mapping
         ``m, rx, rz, Ixx, Iyy, Izz, Ixz, k1..kN, c1..cN`` and the layout (``Lx, Lz`` or ``x_j, z_j``);
         ``ry, Ixy, Iyz`` default to 0.

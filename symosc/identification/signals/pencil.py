@@ -107,8 +107,14 @@ def matrix_pencil(
         Real samples at t = 0, dt, 2 dt, ...: finite, at least 4 per channel, not all zero.
     dt : float
         Sampling period (s); must be positive and finite.
-    n_modes, n_poles, constant
-        As for :func:`~symosc.identification.era`; ``None`` for both selects the order from the singular values.
+    n_modes : int, optional
+        Number of oscillatory modes, an integer >= 1.  If neither it nor ``n_poles`` is given, the order is selected
+        from the largest gap of the singular values.
+    n_poles : int, optional
+        Number of exponentials, ``2 n_modes + 1`` with the constant (offset) state, ``2 n_modes`` without; give at
+        most one of ``n_modes`` and ``n_poles``.
+    constant : bool
+        Include a constant (offset) state (default True; it is dropped again when the data do not support it).
     hankel_size : int, optional
         Pencil parameter L (default N/3, at most 300); the Hankel matrix has L + 1 columns.
     nyquist_margin : float
