@@ -239,8 +239,10 @@ def error_map(
         Body and stand (``m, Izz, Ixx, Ixz, Lx, Lz, k1..k4``; rx, rz are set from the offsets). Default: Tables 1–2.
     force : sequence of 4 floats
         Vertical forces (N) released at t = 0 (default 2000 N pressing spring 2 down).
-    dt, n_samples : float, int
-        Sampling of the record (default: the dissertation's 0.02212 s decimated by 3, 27.7 s).
+    dt : float
+        Sampling period of the record (s); must be positive (default: the dissertation's 0.02212 s decimated by 3).
+    n_samples : int
+        Number of samples per record; a positive integer (default 418: 27.7 s at the default ``dt``).
     reference : float
         Noise reference amplitude (m); Belyakov uses the modal amplitude 0.00067 m.
     estimator : callable, optional

@@ -362,8 +362,10 @@ def simulate_stand(
         ``ry, Ixy, Iyz`` default to 0.
     force : sequence of N floats
         Vertical forces (N, positive up) applied at the attachment points before ``t = 0``.
-    dt, n_samples : float, int
-        Sampling period (s) and number of samples (the dissertation: 0.002212 s, 12544).
+    dt : float
+        Sampling period (s); must be positive and finite (the dissertation: 0.002212 s).
+    n_samples : int
+        Number of samples; an integer >= 2 (the dissertation: 12544).
     noise : float
         White-noise standard deviation as a fraction of ``noise_reference``; a finite number >= 0 (default 0: no
         noise).
