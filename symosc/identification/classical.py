@@ -35,6 +35,15 @@ class InertiaFormula(SymPyPrintable):
 
     ``expr`` is the moment of inertia; ``equations`` the equations of motion/measurement it solves; calling the
     object with ``values`` (keyed by symbol or name) evaluates it.
+
+    Attributes
+    ----------
+    name : str
+        Name of the method (``"flywheel"``, ``"physical_pendulum"``, ``"rocking_platform"``).
+    expr : sympy.Expr
+        The moment of inertia in terms of the measured and known quantities.
+    equations : tuple of sympy.Eq
+        The equations of motion or measurement that ``expr`` solves.
     """
 
     name: str

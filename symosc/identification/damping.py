@@ -45,6 +45,13 @@ class QuadraticModes(SymPyPrintable):
     ``vectors[:, j]`` is normalised to unit Euclidean norm with its largest component real and positive.
     ``undamped_frequencies`` = ``|lambda|`` (eq. 97), ``mode_shape_moduli`` = signed moduli
     ``sign(Re u) |u|`` scaled like the vectors (stage 3 of Belyakov's recipe).
+
+    Attributes
+    ----------
+    eigenvalues : ndarray of complex, shape (n,)
+        Eigenvalues ``lambda_j`` with positive imaginary part, sorted by ``|lambda|``.
+    vectors : ndarray of complex, shape (n, n)
+        Eigenvectors ``u_j`` as columns (unit Euclidean norm, largest component real and positive).
     """
 
     eigenvalues: np.ndarray
@@ -69,6 +76,24 @@ class QuadraticModes(SymPyPrintable):
 @validated
 def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
     """Solve the quadratic eigenproblem of a damped linear system (oscillatory modes only).
+
+    Parameters
+    ----------
+    mass : array_like, shape (n, n)
+        Mass matrix ``M``: a finite symmetric positive definite matrix (a scalar means a 1x1 matrix).
+    damping : array_like, shape (n, n)
+        Damping matrix ``D``: a finite symmetric matrix of the same size as ``mass``.
+    stiffness : array_like, shape (n, n)
+        Stiffness matrix ``K``: a finite symmetric matrix of the same size as ``mass``.
+
+    Returns
+    -------
+    QuadraticModes
+
+    Raises
+    ------
+    ModelError
+        If a mode is overdamped (real eigenvalues) or the mass matrix is not positive definite.
 
     Examples
     --------
@@ -125,11 +150,25 @@ class DampingPerturbation(SymPyPrintable):
     u1: np.ndarray
 
     def eigenvalues(self, eps: float = 1.0) -> np.ndarray:
-        """First-order eigenvalues ``i omega + eps lambda1``."""
+        """First-order eigenvalues ``i omega + eps lambda1``.
+
+        Parameters
+        ----------
+        eps : float, optional
+            Scale of the damping matrix (the system's damping is ``eps D``); a finite number, small for the
+            first-order theory to hold (default 1: the ``D`` given).
+        """
         return 1j * self.frequencies + eps * self.lambda1
 
     def vectors(self, eps: float = 1.0) -> np.ndarray:
-        """First-order eigenvectors ``u0 + eps u1``."""
+        """First-order eigenvectors ``u0 + eps u1``.
+
+        Parameters
+        ----------
+        eps : float, optional
+            Scale of the damping matrix (the system's damping is ``eps D``); a finite number, small for the
+            first-order theory to hold (default 1: the ``D`` given).
+        """
         return self.modes + eps * self.u1
 
 
@@ -140,6 +179,20 @@ def damping_perturbation(mass: Any, damping: Any, stiffness: Any) -> DampingPert
     Off-diagonal Sylvester solution (eq. 106) in the mass-normalised basis ``X = U0^{-1} U1``:
     ``X_jk = -i omega_k Dt_jk / (omega_j^2 - omega_k^2)``, ``Dt = U0^T D U0``; the diagonal follows from
     ``u0_k^T u1_k = 0``.  Requires distinct undamped frequencies.
+
+    Parameters
+    ----------
+    mass : array_like, shape (n, n)
+        Mass matrix ``M``: a finite symmetric positive definite matrix (a scalar means a 1x1 matrix).
+    damping : array_like, shape (n, n)
+        Damping matrix ``D``: a finite symmetric matrix of the same size as ``mass``.
+    stiffness : array_like, shape (n, n)
+        Stiffness matrix ``K``: a finite symmetric matrix of the same size as ``mass``; positive definite, with
+        distinct undamped frequencies.
+
+    Returns
+    -------
+    DampingPerturbation
 
     Examples
     --------

@@ -96,6 +96,21 @@ class ErrorMap(SymPyPrintable):
         """Contour map in 1 % bands up to 10 % (Figs 21–22), or of the min modal energy (``energy=True``, Figs 23–24).
 
         The energy map draws the applicability level (half the mean modal energy) as a dashed line.
+
+        Parameters
+        ----------
+        name : str, optional
+            Parameter whose mean error is drawn; must be one of ``names`` (default: the first of them).
+        noise_index : int, optional
+            Index into ``noise`` of the level to draw (default -1: the highest level given).
+        energy : bool, optional
+            Draw the minimum modal energy of the release (Figs 23–24) instead of the error (default False).
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
         """
         import matplotlib.pyplot as plt
 
@@ -224,8 +239,10 @@ def error_map(
         Body and stand (``m, Izz, Ixx, Ixz, Lx, Lz, k1..k4``; rx, rz are set from the offsets). Default: Tables 1–2.
     force : sequence of 4 floats
         Vertical forces (N) released at t = 0 (default 2000 N pressing spring 2 down).
-    dt, n_samples : float, int
-        Sampling of the record (default: the dissertation's 0.02212 s decimated by 3, 27.7 s).
+    dt : float
+        Sampling period of the record (s); must be positive (default: the dissertation's 0.02212 s decimated by 3).
+    n_samples : int
+        Number of samples per record; a positive integer (default 418: 27.7 s at the default ``dt``).
     reference : float
         Noise reference amplitude (m); Belyakov uses the modal amplitude 0.00067 m.
     estimator : callable, optional

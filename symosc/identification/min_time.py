@@ -56,6 +56,26 @@ def excitation_time(amplitude: float, omega: float, force_max: float, mass: floa
     The bang-bang law adds ``4 u_m`` to the amplitude per period; the minimum time differs from this by
     ``O(u_m / a) / omega``.
 
+    Parameters
+    ----------
+    amplitude : float
+        Target amplitude ``a`` of the displacement (same length unit as the force over stiffness); must be positive
+        and finite.
+    omega : float
+        Natural frequency (rad/s); must be positive and finite.
+    force_max : float
+        Bound ``u_bar_max`` on the force (N); must be positive and finite.
+    mass : float, optional
+        Mass ``m`` of the oscillator (kg); must be positive and finite (default 1: ``force_max`` is then a force per
+        unit mass).
+
+    Returns
+    -------
+    float
+        The time (s).
+
+    Examples
+    --------
     >>> round(excitation_time(2e-3, 2 * (7.4e5 / 15000) ** 0.5, 20.0, 15000.0), 4)  # stand, vertical mode
     33.0987
     """
@@ -68,6 +88,26 @@ def excitation_time(amplitude: float, omega: float, force_max: float, mass: floa
 def sine_forcing_time(amplitude: float, omega: float, force_max: float, mass: float = 1.0) -> float:
     """Time ``2 a m omega / u_bar_max`` for resonant forcing ``u_bar_max sin(omega t)`` from rest (eq. 78).
 
+    Parameters
+    ----------
+    amplitude : float
+        Target amplitude ``a`` of the displacement (same length unit as the force over stiffness); must be positive
+        and finite.
+    omega : float
+        Natural frequency (rad/s); must be positive and finite.
+    force_max : float
+        Bound ``u_bar_max`` on the force (N); must be positive and finite.
+    mass : float, optional
+        Mass ``m`` of the oscillator (kg); must be positive and finite (default 1: ``force_max`` is then a force per
+        unit mass).
+
+    Returns
+    -------
+    float
+        The time (s).
+
+    Examples
+    --------
     >>> round(sine_forcing_time(1, 1, 1) / excitation_time(1, 1, 1), 5)
     1.27324
     """
@@ -115,6 +155,21 @@ class MinTimeResult(SymPyPrintable):
 
     ``control(t)`` returns ``u_m sign(sin(omega (time - t) + alpha))`` (scaled control), the bang-bang law of the
     maximum principle; ``switching_times`` are its sign changes in ``(0, time)``.
+
+    Attributes
+    ----------
+    time : float
+        Minimum time to reach the circle (s when ``omega`` is in rad/s); 0 when the start lies on it.
+    alpha : float
+        Phase (rad) of the optimal bang-bang law ``u_m sign(sin(omega (time - t) + alpha))``.
+    inside : bool
+        Whether the initial state lies inside the circle (the motion pumps energy in rather than out).
+    u_m : float
+        Scaled control bound ``u_bar_max / (m omega**2)`` (units of ``x1``).
+    omega : float
+        Natural frequency (rad/s).
+    switching_times : ndarray
+        Times in ``(0, time)`` at which the optimal control changes sign, ascending.
     """
 
     time: float
@@ -125,7 +180,13 @@ class MinTimeResult(SymPyPrintable):
     switching_times: np.ndarray = field(repr=False)
 
     def control(self, t: Any) -> np.ndarray:
-        """Optimal scaled control at times ``t`` in ``[0, time]``."""
+        """Optimal scaled control at times ``t`` in ``[0, time]``.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) at which to evaluate the control; finite, meaningful in ``[0, time]``.
+        """
         s = np.sin(self.omega * (self.time - np.asarray(t, dtype=float)) + self.alpha)
         return self.u_m * np.where(s >= 0, 1.0, -1.0)
 
@@ -144,11 +205,15 @@ def min_time_1dof(
     Parameters
     ----------
     x0 : (x1, x2)
-        Initial scaled state.
+        Initial scaled state ``(x1, x1'/omega)``: a pair of finite numbers.
     a, u_m, omega : float
-        Target amplitude, control bound (both in units of ``x1``) and natural frequency.
+        Target amplitude, control bound (both in units of ``x1``) and natural frequency; all positive and finite.
     tol : float
-        Absolute tolerance on the time.
+        Absolute tolerance on the time (> 0).
+
+    Returns
+    -------
+    MinTimeResult
 
     Examples
     --------
@@ -217,6 +282,31 @@ def switching_curves(
     (backward time above the exact :func:`min_time_1dof` from that point) are replaced by ``nan``, leaving the
     switching curves of the optimal synthesis; this costs one minimum-time solve per point.
 
+    Parameters
+    ----------
+    a : float
+        Radius of the target circle (scaled amplitude, units of ``x1``); must be positive and finite.
+    u_m : float
+        Scaled control bound ``u_bar_max / (m omega**2)`` (units of ``x1``); must be positive and finite.
+    omega : float, optional
+        Natural frequency (rad/s); must be positive and finite (default 1).
+    n_switches : int, optional
+        Number of switching curves traced (the first ``n_switches`` switches backwards in time); an integer >= 1.
+    inside : bool, optional
+        Reach the circle from inside (True, default: excitation) or from outside (False: damping).
+    points : int, optional
+        Number of terminal points on the circle, i.e. of points per curve; an integer >= 1 (default 361).
+    optimal_only : bool, optional
+        Replace points of non-optimal extremals by ``nan`` (default False: all extremals).
+
+    Returns
+    -------
+    list of ndarray, each of shape (points, 2)
+        Curve ``k`` holds the ``k``-th switching point of the extremal through each terminal point (``nan`` where
+        the extremal left its side of the circle, or was discarded as non-optimal).
+
+    Examples
+    --------
     >>> curves = switching_curves(3.0, 1.0, n_switches=2, points=5)
     >>> [c.shape for c in curves]
     [(5, 2), (5, 2)]
@@ -254,6 +344,24 @@ def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
     On the switching line ``x2 = 0`` the sign is chosen so that the motion leaves it consistently (``+1`` for
     ``x1 < u_m`` inside, so the law starts from rest).
 
+    Parameters
+    ----------
+    x1 : float or array_like
+        Scaled displacement(s) ``x1``; finite, broadcastable against ``x2``.
+    x2 : float or array_like
+        Scaled velocity(ies) ``x1'/omega``; finite, broadcastable against ``x1``.
+    a : float
+        Radius of the target circle (units of ``x1``); must be positive.
+    u_m : float
+        Scaled control bound (units of ``x1``); must be positive.
+
+    Returns
+    -------
+    ndarray
+        The scaled control ``-u_m``, ``0`` or ``u_m`` at each state.
+
+    Examples
+    --------
     >>> quasi_optimal_control([0.0, 0.5, 3.0, 3.0], [0.0, -0.2, 1.0, 0.0], 2.0, 0.1).tolist()
     [0.1, -0.1, -0.1, 0.1]
     """
@@ -267,7 +375,19 @@ def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
 
 @dataclass(frozen=True)
 class QuasiOptimalRun(SymPyPrintable):
-    """Closed-loop run of the quasi-optimal law: event times, states at the events and the control on each arc."""
+    """Closed-loop run of the quasi-optimal law: event times, states at the events and the control on each arc.
+
+    Attributes
+    ----------
+    time : float
+        Time at which the circle ``|x| = a`` was reached.
+    events_t : ndarray, shape (n + 1,)
+        Times of the events (start, switches on ``x2 = 0`` and the final crossing of the circle), from 0.
+    events_x : ndarray, shape (n + 1, 2)
+        Scaled states ``(x1, x1'/omega)`` at the events.
+    controls : ndarray, shape (n,)
+        Scaled control on each of the ``n`` arcs between events.
+    """
 
     time: float
     events_t: np.ndarray = field(repr=False)
@@ -276,7 +396,19 @@ class QuasiOptimalRun(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, points: int = 40) -> Any:
-        """Draw the phase-plane trajectory (arcs about ``(±u_m, 0)``)."""
+        """Draw the phase-plane trajectory (arcs about ``(±u_m, 0)``).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        points : int, optional
+            Number of points drawn per arc (an integer >= 2; default 40).
+
+        Returns
+        -------
+        matplotlib Axes
+        """
 
         ax = new_axes(ax)
         for x, u, t0, t1 in zip(self.events_x[:-1], self.controls, self.events_t[:-1], self.events_t[1:], strict=True):
@@ -297,6 +429,25 @@ def simulate_quasi_optimal(
 
     Returns the reaching time; from rest it is about ``pi a / (2 omega u_m)`` (eq. 76).
 
+    Parameters
+    ----------
+    x0 : (x1, x2)
+        Initial scaled state ``(x1, x1'/omega)``: a pair of finite numbers.
+    a : float
+        Radius of the target circle (units of ``x1``); must be positive and finite.
+    u_m : float
+        Scaled control bound ``u_bar_max / (m omega**2)`` (units of ``x1``); must be positive and finite.
+    omega : float, optional
+        Natural frequency (rad/s); must be positive and finite (default 1).
+    max_arcs : int, optional
+        Largest number of arcs simulated (an integer >= 1); more raises ConvergenceError.
+
+    Returns
+    -------
+    QuasiOptimalRun
+
+    Examples
+    --------
     >>> run = simulate_quasi_optimal((0.0, 0.0), 4.0, 1.0)
     >>> round(run.time / (2 * 3.141592653589793), 6)
     1.0
@@ -348,6 +499,21 @@ class ExcitationBound(SymPyPrintable):
     rest the exact 1-DOF minimum time can be shorter than (76) by less than half a period (the last arc need not be
     a full half turn), so the rigorous lower bound is ``exact_bound = max(exact_times)`` with ``exact_times`` the
     exact minimum times of each normal coordinate under its bound ``b_i`` (:func:`min_time_1dof`).
+
+    Attributes
+    ----------
+    bound : float
+        ``max(times)``: the bound of eq. 84 (s).
+    times : ndarray, shape (n,)
+        Time ``pi a_i omega_i / (2 b_i)`` of eq. 84 per mode, ascending frequency order.
+    omega : ndarray, shape (n,)
+        Natural frequencies ``omega_i`` (rad/s), ascending.
+    control_bounds : ndarray, shape (n,)
+        Bounds ``b_i = sum_j |B'_ij| U_j`` on the modal forces.
+    exact_times : ndarray, shape (n,)
+        Exact minimum time from rest of each normal coordinate under its bound ``b_i``.
+    exact_bound : float
+        ``max(exact_times)``: the rigorous lower bound.
     """
 
     bound: float
@@ -380,14 +546,21 @@ def excitation_time_bound(
     Parameters
     ----------
     M, K : (n, n) arrays
-        Inertia and stiffness matrices.
+        Inertia and stiffness matrices: symmetric, ``M`` and ``K`` positive definite.
     B : (n, r) array
-        Control matrix (``C^T`` for actuators collocated with the sensors).
+        Control matrix with ``n`` rows (``C^T`` for actuators collocated with the sensors).
     force_max : float or (r,) array
-        Bounds ``U_j``.
+        Bounds ``U_j`` on the ``r`` controls; positive and finite (a scalar applies to every control).
     amplitudes : (n,) floats
-        Target amplitude of each mode (ascending frequency order).  ``normalization="max"``: amplitude of the
-        largest generalised coordinate in that mode; ``"mass"``: amplitude of the mass-normalised coordinate.
+        Target amplitude of each mode (ascending frequency order); ``n`` positive numbers, read according to
+        ``normalization``.
+    normalization : {"max", "mass"}
+        What ``amplitudes`` measure: ``"max"`` (default) the amplitude of the largest generalised coordinate in that
+        mode, ``"mass"`` the amplitude of the mass-normalised coordinate.
+
+    Returns
+    -------
+    ExcitationBound
 
     Examples
     --------

@@ -85,6 +85,22 @@ def real_modes(values: Any, how: str = "modulus") -> np.ndarray:
     ``t = 0``, which is exactly the ``q0' = 1`` scaling Algorithm 1 needs; the modulus is larger by
     ``|lambda| / omega_d`` per mode (0.45 % on the stand's vertical mode at 10000 N s/m per spring).
 
+    Parameters
+    ----------
+    values : array_like of float or complex
+        Identified frequencies, mode shapes or modal amplitudes, any shape; must be numeric (real input is only
+        converted to float).
+    how : {"modulus", "real"}, optional
+        How complex values are made real: ``"modulus"`` (default, Belyakov's stage 3) gives ``sign(Re) * |.|``,
+        ``"real"`` the real part.
+
+    Returns
+    -------
+    ndarray of float
+        Same shape as ``values``.
+
+    Examples
+    --------
     >>> real_modes([1 + 0.01j, -2 - 0.1j]).round(4).tolist()
     [1.0, -2.0025]
     >>> real_modes([1 + 0.01j, -2 - 0.1j], how="real").tolist()
@@ -106,6 +122,26 @@ def check_distinct(omega: Sequence[float], rtol: float = 1e-3) -> np.ndarray:
 
     With a repeated eigenvalue ``A'`` is diagonal in a non-normal basis and the reconstruction is undefined.
 
+    Parameters
+    ----------
+    omega : sequence of float, shape (k,)
+        Identified natural frequencies (rad/s): a 1-D sequence of positive finite numbers.  Complex values are
+        replaced by their modulus ``|lambda|`` (Belyakov (2005), eq. 97).
+    rtol : float, optional
+        Relative tolerance (> 0): two frequencies with ``|w_i - w_j| <= rtol * max(w_i, w_j)`` count as repeated.
+
+    Returns
+    -------
+    ndarray of float, shape (k,)
+        The (real) frequencies.
+
+    Raises
+    ------
+    IdentificationError
+        If two frequencies agree within ``rtol``.
+
+    Examples
+    --------
     >>> check_distinct([14.0, 16.4, 27.4]).tolist()
     [14.0, 16.4, 27.4]
     >>> check_distinct([14.0, 14.001, 27.4])  # doctest: +ELLIPSIS
@@ -150,9 +186,30 @@ def _prepare(omega: Any, modes: Any, rtol: float, how: str = "modulus") -> tuple
 def central_identity(C: Any, modes: Any, omega: Any, modal_stiffness: Any) -> Any:
     """Inertia matrix ``M = C^T (C'^+)^T K' A'^{-1} C'^+ C`` (eq. 32).
 
-    Works on NumPy arrays and on SymPy matrices (then the result is symbolic).  ``modal_stiffness`` is the
-    vector of ``K'_ii`` or a full ``K'`` matrix.
+    Works on NumPy arrays and on SymPy matrices (then the result is symbolic).
 
+    Parameters
+    ----------
+    C : array_like or sympy.Matrix, shape (N, n)
+        Observation matrix of the physical coordinates: a 2-D array or Matrix, row j maps the coordinates to sensor
+        j (for the stand, ``(1, x_j - rx, -(z_j - rz))``, eq. 23).
+    modes : array_like or sympy.Matrix, shape (N, k)
+        Normal-coordinate observation matrix ``C'`` (amplitude of mode i on sensor j): a 2-D array or Matrix of
+        full column rank (``N >= k``).
+    omega : sequence of float or sympy expressions, shape (k,)
+        Natural frequencies (rad/s) of the columns of ``modes``; must be nonzero (``A' = diag(omega**2)`` is
+        inverted).
+    modal_stiffness : array_like or sympy.Matrix, shape (k,) or (k, k)
+        Modal stiffness ``K'``: the vector of its diagonal ``K'_ii`` or the full matrix, consistent with the
+        scaling of ``modes``.
+
+    Returns
+    -------
+    ndarray or sympy.Matrix, shape (n, n)
+        The inertia matrix ``M`` (symbolic when ``C`` or ``modes`` is a SymPy matrix).
+
+    Examples
+    --------
     >>> import numpy as np
     >>> M = np.diag([2.0, 3.0]); phi = np.eye(2); C = np.array([[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]])
     >>> central_identity(C, C @ phi, np.array([1.0, 2.0]), np.array([2.0, 12.0])).round(12).tolist()
@@ -184,6 +241,32 @@ class InertiaEstimate(SymPyPrintable):
     ``Ixz`` follows ``convention`` (``"tensor"``: ``Ixz = -M23``; ``"dissertation"``: ``Ixz = +M23``).
     ``spring_stiffness`` is set by Algorithm 2.1, ``condition`` is the condition number of the linear system that
     closed the problem (Algorithm 2.2; 1.0 for the closed forms of Algorithms 1 and 2.1).
+
+    Attributes
+    ----------
+    mass : float
+        Reconstructed mass ``m`` (kg, in the units of the force and the modes), positive.
+    rx, rz : float
+        Center of mass in the body frame (same length unit as the sensor positions).
+    Izz, Ixx : float
+        Moments of inertia about the axes through the center of mass (pitch ``theta_z`` and roll ``theta_x``).
+    Ixz : float
+        Product of inertia, signed according to ``convention``.
+    M : ndarray, shape (3, 3)
+        Inertia matrix about the center of mass in the coordinates ``(y, theta_z, theta_x)`` (Belyakov (2005),
+        eq. 26).
+    modal_stiffness : ndarray, shape (3,)
+        Modal stiffnesses ``K'_ii`` in the scaling of the given ``modes``.
+    modal_mass : ndarray, shape (3,)
+        Modal masses ``K'_ii / omega_i**2``.
+    algorithm : str
+        Which reconstruction produced the estimate: ``"1"``, ``"2.1 (diag)"``, ``"2.1 (full)"`` or ``"2.2"``.
+    convention : {"tensor", "dissertation"}
+        Product-of-inertia sign convention of ``Ixz``.
+    spring_stiffness : float or None
+        Common spring stiffness ``k`` found by Algorithm 2.1; None for the other algorithms.
+    condition : float
+        Condition number of the closing linear system (Algorithm 2.2); 1.0 for Algorithms 1 and 2.1.
     """
 
     mass: float
@@ -266,18 +349,22 @@ def inertia_from_release(
     Parameters
     ----------
     omega : array, shape (k,)
-        Identified natural frequencies (rad/s).  Complex values are replaced by ``|.|`` (stage 3).
+        Identified natural frequencies (rad/s): exactly three distinct positive finite numbers.  Complex values are
+        replaced by ``|.|`` (stage 3).
     modes : array, shape (N, k)
-        Normal-coordinate observation matrix ``C'`` with ``q0' = 1`` (full modal amplitudes with sign, metres).
-        Complex full amplitudes ``A exp(i phi)`` (phase at the release) are made real by ``complex_modes``.
+        Normal-coordinate observation matrix ``C'`` with ``q0' = 1`` (full modal amplitudes with sign, metres); must
+        have full column rank, ``N >= 3`` sensors.  Complex full amplitudes ``A exp(i phi)`` (phase at the release)
+        are made real by ``complex_modes``.
     force : sequence of N floats
-        Vertical forces (N, positive up) at the sensors before the release, e.g. ``(0, -2000, 0, 0)``.
+        Vertical forces (N, positive up) at the sensors before the release, one per sensor, e.g.
+        ``(0, -2000, 0, 0)``.
     positions : (Lx, Lz) or array (N, 2)
-        Sensor points ``(x_j, z_j)`` in the body frame (see :func:`sensor_layout`).
+        Sensor points ``(x_j, z_j)`` in the body frame: a pair ``(Lx, Lz)`` for the 4-spring rectangle or at least
+        three non-collinear points (see :func:`sensor_layout`).
     product_of_inertia : {"tensor", "dissertation"}
-        ``Ixz = -M23`` or ``+M23``.
+        Sign convention of the product of inertia: ``Ixz = -M23`` (default) or ``+M23``.
     rtol : float
-        Relative tolerance of the repeated-frequency check (stage 4).
+        Relative tolerance (> 0) of the repeated-frequency check (stage 4).
     complex_modes : {"real", "modulus"}
         Stage 3 for complex ``modes`` (see :func:`real_modes`).  ``"real"`` (default) takes the displacement at
         the release and stays exact with damping; ``"modulus"`` is the dissertation's recipe, biased by
@@ -338,6 +425,31 @@ def inertia_equal_springs(
     reconstructed ``M`` stays symmetric); ``"full"`` uses the whole matrix and symmetrises ``M``.  On the
     dissertation's data the two agree to 1e-5 (the full-variant values, computed without
     symmetrising, differ from both at the 1e-6 level in Izz and Ixx).
+
+    Parameters
+    ----------
+    omega : array, shape (3,)
+        Identified natural frequencies (rad/s): exactly three distinct positive finite numbers.  Complex values are
+        replaced by ``|.|`` (stage 3).
+    modes : array, shape (N, 3)
+        Normal-coordinate observation matrix ``C'`` (modal amplitudes with sign, any column scaling); must have full
+        column rank, ``N >= 3`` sensors.  Complex values are made real by ``sign(Re) * |.|``.
+    mass : float
+        Known mass of the body (kg); must be positive and finite.
+    positions : (Lx, Lz) or array (N, 2)
+        Sensor points ``(x_j, z_j)`` in the body frame: a pair ``(Lx, Lz)`` for the 4-spring rectangle or at least
+        three non-collinear points (see :func:`sensor_layout`).
+    variant : {"diag", "full"}
+        Which part of ``C'^T C'`` is taken as ``K' / k``: its diagonal (default) or the whole matrix.
+    product_of_inertia : {"tensor", "dissertation"}
+        Sign convention of the product of inertia: ``Ixz = -M23`` (default) or ``+M23``.
+    rtol : float
+        Relative tolerance (> 0) of the repeated-frequency check (stage 4).
+
+    Returns
+    -------
+    InertiaEstimate
+        With ``spring_stiffness`` set to the identified ``k``.
 
     See Also
     --------
@@ -409,10 +521,30 @@ def inertia_known_center(
 
     Parameters
     ----------
+    omega : array, shape (3,)
+        Identified natural frequencies (rad/s): exactly three distinct positive finite numbers.  Complex values are
+        replaced by ``|.|`` (stage 3).
+    modes : array, shape (N, 3)
+        Normal-coordinate observation matrix ``C'`` (modal amplitudes with sign, any column scaling); must have full
+        column rank, ``N >= 3`` sensors.  Complex values are made real by ``sign(Re) * |.|``.
+    mass : float
+        Known mass of the body (kg); must be positive and finite.
     center : (rx, rz)
-        Known center of mass in the body frame.
+        Known center of mass in the body frame: a pair of finite numbers (same length unit as ``positions``).
+    positions : (Lx, Lz) or array (N, 2)
+        Sensor points ``(x_j, z_j)`` in the body frame: a pair ``(Lx, Lz)`` for the 4-spring rectangle or at least
+        three non-collinear points (see :func:`sensor_layout`).
+    product_of_inertia : {"tensor", "dissertation"}
+        Sign convention of the product of inertia: ``Ixz = -M23`` (default) or ``+M23``.
+    rtol : float
+        Relative tolerance (> 0) of the repeated-frequency check (stage 4).
     cond_max, cond_warn : float
-        Condition number above which to raise / to warn.
+        Condition number above which to raise / to warn (positive, ``cond_warn <= cond_max``).
+
+    Returns
+    -------
+    InertiaEstimate
+        With ``condition`` set to the scale-free condition number of the 3x3 system.
 
     See Also
     --------
@@ -491,6 +623,21 @@ class InertiaTensor(SymPyPrintable):
     """Five of the six inertia-tensor components from two orientations (``Iyz`` is never measured).
 
     Products follow ``convention``; ``Iyz`` is ``nan`` unless given.  ``source_Ixx`` says which run gave ``Ixx``.
+
+    Attributes
+    ----------
+    Ixx, Iyy, Izz : float
+        Moments of inertia about the body axes through the center of mass.
+    Ixy, Ixz : float
+        Products of inertia, signed according to ``convention``.
+    Iyz : float
+        Product of inertia ``Iyz``: ``nan`` (not measured by the two-orientation procedure) unless given.
+    mass : float
+        Mean of the two runs' masses (``nan`` when not given).
+    convention : {"tensor", "dissertation"}
+        Product-of-inertia sign convention (``"tensor"``: off-diagonal entries ``-Ixy, -Ixz, -Iyz``).
+    source_Ixx : {1, 2}
+        The run (1 or 2) whose ``Ixx`` was taken.
     """
 
     Ixx: float
@@ -524,6 +671,12 @@ class InertiaTensor(SymPyPrintable):
 
         ``I_u = u^T J u`` (= ``Ix a^2 + Iy b^2 + Iz c^2 - 2 Ixy ab - 2 Ixz ac - 2 Iyz bc`` in the tensor
         convention).  Raises :class:`IdentificationError` if the axis needs the unknown ``Iyz``.
+
+        Parameters
+        ----------
+        direction : sequence of 3 floats
+            Direction ``(a, b, c)`` of the axis in the body frame ``(x, y, z)``: a nonzero finite vector (normalised
+            here).
         """
         u = np.asarray(direction, dtype=float)
         u = u / np.linalg.norm(u)
@@ -543,6 +696,22 @@ def assemble_tensor(run1: InertiaEstimate, run2: InertiaEstimate, *, Iyz: float 
     along the stand's ``+z`` axis: its ``Izz`` is the body's ``Iyy`` and its ``Ixz`` the body's ``Ixy``.  ``Ixx``
     is taken from the run with the larger ``|Ixz|`` (where the out-of-model product is smaller).
 
+    Parameters
+    ----------
+    run1 : InertiaEstimate
+        Estimate in the first orientation (gives ``Izz`` and ``Ixz``).
+    run2 : InertiaEstimate
+        Estimate after turning the body 90° about Cx (gives ``Iyy`` and ``Ixy``); must use the same ``convention``
+        as ``run1``.
+    Iyz : float, optional
+        Product of inertia ``Iyz`` if known from elsewhere; when omitted it stays ``nan`` (unknown).
+
+    Returns
+    -------
+    InertiaTensor
+
+    Examples
+    --------
     >>> import numpy as np
     >>> r1 = InertiaEstimate(1.0, 0, 0, 44000.0, 3001.0, 400.0, np.eye(3), np.ones(3), np.ones(3), "1", "tensor")
     >>> r2 = InertiaEstimate(1.0, 0, 0, 43000.0, 3003.0, 20.0, np.eye(3), np.ones(3), np.ones(3), "1", "tensor")

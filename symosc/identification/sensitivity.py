@@ -71,7 +71,18 @@ class JacobianResult(SymPyPrintable):
         return np.nanmax(np.abs(self.elasticities), axis=1)
 
     def error_bound(self, relative_error: float | Sequence[float]) -> np.ndarray:
-        """First-order relative error bound of each output for relative input errors ``relative_error``."""
+        """First-order relative error bound of each output for relative input errors ``relative_error``.
+
+        Parameters
+        ----------
+        relative_error : float or sequence of float, shape (n,)
+            Bound(s) on the relative error of the inputs: one non-negative number for all inputs, or one per input.
+
+        Returns
+        -------
+        ndarray, shape (m,)
+            ``sum_j |E_ij| eps_j`` per output.
+        """
         eps = np.broadcast_to(np.asarray(relative_error, dtype=float), self.x.shape)
         return np.nansum(np.abs(self.elasticities) * eps[None, :], axis=1)
 
@@ -126,15 +137,25 @@ def jacobian(
     Parameters
     ----------
     func : callable
-        Returns a scalar, a 1-D array, a mapping name -> number, or a dataclass (its scalar fields).
+        ``func(x, *args, **kwargs)``: the function to differentiate; must return a scalar, a 1-D array, a mapping
+        name -> number, or a dataclass (its scalar fields).
     x : array_like, shape (n,)
-        Point of differentiation.
+        Point of differentiation: finite real numbers (flattened to a 1-D array).
     method : {"auto", "complex", "central"}
         ``"complex"``: complex step (needs a complex-analytic ``func``), verified against central differences;
         raises if they disagree.  ``"central"``: Richardson-extrapolated central differences with error estimate
         from steps h and 2h.  ``"auto"``: complex step if it passes the check, else central (with a warning).
     step : float, optional
         Relative step (default 1e-20 for the complex step, 1e-4 for central differences) times ``max(|x_j|, 1e-8)``.
+    args : sequence, optional
+        Extra positional arguments passed to ``func`` after ``x``.
+    kwargs : mapping of str to object, optional
+        Extra keyword arguments passed to ``func``.
+    input_names : sequence of str, optional
+        Names of the ``n`` inputs, one per entry of ``x`` (default ``"x0", "x1", ...``).
+    output_names : sequence of str, optional
+        Names of the ``m`` outputs, one per value of ``func`` (default: the keys or field names ``func`` returns,
+        else ``"f0", "f1", ...``).
     rtol : float
         Agreement required between complex step and central differences, relative to ``max |J|``.
 
@@ -243,6 +264,34 @@ def sensitivity(
     """Jacobian and elasticities of ``func(frequencies, amplitudes, *args, **kwargs)`` with respect to the
     identified frequencies (n,) and modal amplitudes C' (sensors x n), in the order
     ``omega_1..omega_n, C'_11, C'_12, ..., C'_ln`` (row by row, as in Belyakov's 18-vector without p, Lx, Lz).
+
+    Parameters
+    ----------
+    func : callable
+        ``func(frequencies, amplitudes, *args, **kwargs)``: the reconstruction to differentiate; must return a
+        scalar, a 1-D array, a mapping name -> number, or a dataclass (its scalar fields), e.g. an
+        :class:`InertiaEstimate`.
+    frequencies : array_like, shape (n,)
+        Identified natural frequencies (rad/s) at which to differentiate; finite real numbers.
+    amplitudes : array_like, shape (sensors, n)
+        Modal amplitudes ``C'`` (one column per frequency); finite real numbers.
+    args : sequence, optional
+        Extra positional arguments passed to ``func`` after the amplitudes (e.g. force and positions).
+    kwargs : mapping of str to object, optional
+        Extra keyword arguments passed to ``func``.
+    method : {"auto", "complex", "central"}
+        Differentiation method (see :func:`jacobian`); ``"auto"`` (default) tries the complex step first.
+    output_names : sequence of str, optional
+        Names of the outputs, one per value of ``func`` (default: the keys or field names ``func`` returns).
+
+    Returns
+    -------
+    JacobianResult
+        Inputs named ``omega1, ..., C'11, C'12, ...``.
+
+    See Also
+    --------
+    jacobian
 
     Examples
     --------

@@ -218,7 +218,17 @@ class StandRecord(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Plot the sensor signals (mm) against time."""
+        """Plot the sensor signals (mm) against time.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
 
         ax = new_axes(ax)
         for j, y in enumerate(self.signals, start=1):
@@ -246,7 +256,7 @@ def stand_system(
     Parameters
     ----------
     model : BodyOnSprings
-        From :func:`symosc.models.body_on_springs`.
+        The stand model; must come from :func:`symosc.models.body_on_springs`.
     values : dict
         Parameter values of the model (by symbol or name).
     damping : float or sequence of float
@@ -345,18 +355,24 @@ def simulate_stand(
     Parameters
     ----------
     model : BodyOnSprings
-        From :func:`symosc.models.body_on_springs`; fixes the layout and the product-of-inertia convention.
+        The stand model; must come from :func:`symosc.models.body_on_springs` (it fixes the layout and the
+        product-of-inertia convention).
     values : mapping
         ``m, rx, rz, Ixx, Iyy, Izz, Ixz, k1..kN, c1..cN`` and the layout (``Lx, Lz`` or ``x_j, z_j``);
         ``ry, Ixy, Iyz`` default to 0.
     force : sequence of N floats
         Vertical forces (N, positive up) applied at the attachment points before ``t = 0``.
-    dt, n_samples : float, int
-        Sampling period (s) and number of samples (the dissertation: 0.002212 s, 12544).
+    dt : float
+        Sampling period (s); must be positive and finite (the dissertation: 0.002212 s).
+    n_samples : int
+        Number of samples; an integer >= 2 (the dissertation: 12544).
     noise : float
-        White-noise standard deviation as a fraction of ``noise_reference`` (default: the mean absolute modal
+        White-noise standard deviation as a fraction of ``noise_reference``; a finite number >= 0 (default 0: no
+        noise).
+    noise_reference : float, optional
+        Reference amplitude (m) that ``noise`` multiplies; a positive number.  Default: the mean absolute modal
         amplitude ``mean |C'|`` of the linear model, about 0.00067 m for the dissertation's stand; if the force
-        leaves a mode unexcited, sqrt(2) times the mean standard deviation of the clean signals).
+        leaves a mode unexcited, sqrt(2) times the mean standard deviation of the clean signals.
     seed : int, optional
         Seed of the noise generator.
     damping : float or (N,) array

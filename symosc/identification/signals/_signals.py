@@ -133,7 +133,16 @@ class ModalEstimate(SymPyPrintable):
 
     # ----------------------------------------------------------------------------------------------- methods
     def reconstruct(self, n_samples: int | None = None, *, t: Any = None) -> np.ndarray:
-        """Model signal, shape (channels, samples), at ``t`` (s) or at the first ``n_samples`` sample times."""
+        """Model signal, shape (channels, samples), at ``t`` (s) or at the first ``n_samples`` sample times.
+
+        Parameters
+        ----------
+        n_samples : int, optional
+            Number of sample times ``0, dt, 2 dt, ...`` to evaluate at (an integer >= 0); default: as many as were
+            fitted.  Ignored when ``t`` is given.
+        t : float or array_like, optional
+            Times (s, from the first sample) at which to evaluate the model; finite numbers.
+        """
         if t is None:
             t = np.arange(self.n_samples if n_samples is None else int(n_samples)) * self.dt
         t = np.asarray(t, dtype=float)
@@ -166,7 +175,21 @@ class ModalEstimate(SymPyPrintable):
 
     @plot_method
     def plot(self, signals: Any = None, *, ax: Any = None, channel: int = 0) -> Any:
-        """Plot the model signal of one channel (and the measured ``signals`` if given); returns the axes."""
+        """Plot the model signal of one channel (and the measured ``signals`` if given); returns the axes.
+
+        Parameters
+        ----------
+        signals : array_like, shape (samples,) or (channels, samples), optional
+            Measured record sampled at ``dt``, drawn as dots for comparison; not drawn when omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        channel : int, optional
+            Index of the channel to draw; must be less than the number of channels (default 0).
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:

@@ -48,9 +48,34 @@ def realize(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int, int]:
     """Kung realization ``(A, C, x0, singular_values, n_poles, hankel_size)`` of a sequence ``y[:, j] = C A^j x0``.
 
-    ``y`` has shape (channels, N).
+    Parameters
+    ----------
+    y : ndarray, shape (channels, N)
+        The sequence, one row per channel: a 2-D array of finite real numbers with at least 3 samples.
+    n_poles : int or None
+        State dimension of the realization, an integer >= 1 (odd with ``constant``: ``2 n_modes + 1``); None
+        selects the order from the largest singular-value gap.
+    hankel_size : int, optional
+        Number of block rows of the Hankel matrix, an integer in ``[2, N - 1]`` (default: about
+        N/(channels+1), at most 300/channels).
+    constant : bool, optional
+        Whether the sequence may contain a constant (offset) state; it affects the order selection and the rank
+        check (default True).
 
-    ``n_poles=None`` selects the order from the largest singular-value gap.
+    Returns
+    -------
+    A : ndarray, shape (n_poles, n_poles)
+        Discrete state matrix.
+    C : ndarray, shape (channels, n_poles)
+        Output matrix.
+    x0 : ndarray, shape (n_poles,)
+        Initial state.
+    singular_values : ndarray
+        Singular values of the block Hankel matrix.
+    n_poles : int
+        The state dimension used.
+    hankel_size : int
+        The number of block rows used.
 
     Examples
     --------
@@ -110,12 +135,12 @@ def era(
     Parameters
     ----------
     signals : array_like, shape (samples,) or (channels, samples)
-        Real samples at t = 0, dt, 2 dt, ...
+        Real samples at t = 0, dt, 2 dt, ...: finite, at least 4 per channel, not all zero.
     dt : float
-        Sampling period (s).
+        Sampling period (s); must be positive and finite.
     n_modes : int, optional
-        Number of oscillatory modes.  If neither it nor ``n_poles`` is given, the order is selected from the largest
-        gap of the Hankel singular values (returned in ``singular_values``).
+        Number of oscillatory modes, an integer >= 1.  If neither it nor ``n_poles`` is given, the order is selected
+        from the largest gap of the Hankel singular values (returned in ``singular_values``).
     n_poles : int, optional
         State dimension, ``2 n_modes + 1`` with the constant (offset) state, e.g. 7 = 1 + 2*3 in the dissertation.
     constant : bool

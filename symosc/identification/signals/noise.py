@@ -38,6 +38,17 @@ __all__ = [
 def noise_sigma(signals: Any, snr_db: float) -> float:
     """Standard deviation of white noise giving ``snr_db`` = 10 log10(mean(s**2) / sigma**2) on clean ``signals``.
 
+    Parameters
+    ----------
+    signals : array_like, shape (samples,) or (channels, samples)
+        Clean sampled record; finite real numbers.
+    snr_db : float
+        Signal-to-noise power ratio in decibels over all channels; a finite number (may be negative).
+
+    Returns
+    -------
+    float
+
     Examples
     --------
     >>> noise_sigma([1.0, -1.0, 1.0, -1.0], 20.0)
@@ -60,7 +71,26 @@ def add_noise(
 
     Give either ``snr_db`` (power ratio over all channels) or ``level`` (noise standard deviation as a fraction of
     ``reference``; Belyakov uses a percentage of the modal amplitude 0.00067 m; default reference is the RMS of
-    the signal).  ``rng`` is a seed or a :class:`numpy.random.Generator`.
+    the signal).
+
+    Parameters
+    ----------
+    signals : array_like, any shape
+        Clean signals; finite real numbers.
+    snr_db : float, optional
+        Signal-to-noise power ratio in decibels over all channels; give exactly one of ``snr_db`` and ``level``.
+    level : float, optional
+        Noise standard deviation as a fraction of ``reference``; a number >= 0 (give exactly one of ``snr_db`` and
+        ``level``).
+    reference : float, optional
+        Reference amplitude that ``level`` multiplies; a number >= 0 (default: the RMS of ``signals``).
+    rng : int, numpy.random.Generator or None, optional
+        Seed (an integer >= 0) or generator of the noise; None draws fresh entropy.
+
+    Returns
+    -------
+    ndarray
+        ``signals`` plus the noise, same shape.
 
     Examples
     --------
@@ -86,9 +116,19 @@ def add_noise(
 class CramerRaoBound(SymPyPrintable):
     """Cramér–Rao lower bounds (variances) for damped sinusoids in white Gaussian noise.
 
-    Attributes are variances per mode (``frequency``, ``damping``: shape (n_modes,)) and per channel and mode
-    (``amplitude``, ``phase``: shape (channels, n_modes)); ``fisher`` is the Fisher information matrix for the
-    parameter vector ``(delta_1..delta_K, omega_1..omega_K, then per channel A_c1, phi_c1, ..., [offset_c])``.
+    Attributes
+    ----------
+    frequency : ndarray, shape (n_modes,)
+        Variance bound of each angular frequency ``omega_k`` ((rad/s)**2).
+    damping : ndarray, shape (n_modes,)
+        Variance bound of each decay rate ``delta_k`` ((1/s)**2).
+    amplitude : ndarray, shape (channels, n_modes)
+        Variance bound of each amplitude ``A_ck``.
+    phase : ndarray, shape (channels, n_modes)
+        Variance bound of each phase ``phi_ck`` (rad**2).
+    fisher : ndarray, shape (p, p)
+        Fisher information matrix for the parameter vector
+        ``(delta_1..delta_K, omega_1..omega_K, then per channel A_c1, phi_c1, ..., [offset_c])``.
     """
 
     frequency: np.ndarray
@@ -119,6 +159,30 @@ def cramer_rao_bound(
 
     The Fisher information is ``J^T J / sigma**2`` with the analytic Jacobian ``J`` of the noise-free samples
     with respect to all parameters (poles shared by the channels); the bound is the diagonal of its inverse.
+
+    Parameters
+    ----------
+    frequencies : array_like, shape (n_modes,)
+        Angular frequencies ``omega_k`` (rad/s) of the true signal; finite numbers.
+    damping : array_like, shape (n_modes,)
+        Decay rates ``delta_k`` (1/s), one per frequency; finite numbers (0 for undamped sinusoids).
+    amplitudes : array_like, shape (n_modes,) or (channels, n_modes)
+        Amplitudes ``A_ck``, one column per frequency; finite, not all zero in a mode (else the information is
+        singular).
+    phases : array_like, same shape as amplitudes
+        Phases ``phi_ck`` (rad) at the first sample.
+    dt : float
+        Sampling period (s); must be positive.
+    n_samples : int
+        Number of samples per channel; must exceed ``2 n_modes``.
+    sigma : float
+        Standard deviation of the white Gaussian noise; must be positive.
+    offset : bool, optional
+        Whether the model has a constant offset ``A0_c`` per channel (estimated too; default False).
+
+    Returns
+    -------
+    CramerRaoBound
 
     Examples
     --------
@@ -174,7 +238,21 @@ def cramer_rao_bound(
 
 @dataclass(frozen=True, repr=False, eq=False)
 class MonteCarloResult(SymPyPrintable):
-    """Estimates over noise realisations: arrays of shape (runs, n_modes) (NaN rows for failed runs)."""
+    """Estimates over noise realisations: arrays of shape (runs, n_modes) (NaN rows for failed runs).
+
+    Attributes
+    ----------
+    frequencies : ndarray, shape (runs, n_modes)
+        Damped angular frequencies (rad/s) estimated in each run.
+    damping : ndarray, shape (runs, n_modes)
+        Decay rates (1/s) estimated in each run.
+    amplitudes : ndarray, shape (runs, channels, n_modes)
+        Amplitudes estimated in each run.
+    failures : int
+        Number of runs in which the estimator failed.
+    snr_db : float or None
+        Signal-to-noise ratio (dB) of the runs; None when the noise was given by ``level``.
+    """
 
     frequencies: np.ndarray
     damping: np.ndarray
@@ -232,8 +310,38 @@ def monte_carlo(
 
     Runs whose estimator raises an identification/parameter/convergence error are counted in ``failures`` and
     stored as NaN.  Run ``i`` uses seed ``(seed, i)``, so results are reproducible and independent of order and
-    of ``executor`` (``"auto"``, ``"serial"``, ``"processes"``, an Executor or a ``distributed.Client``; see
-    :func:`symosc.sweep`; parallel executors need a picklable ``estimator``).  ``progress`` shows a bar.
+    of ``executor``.
+
+    Parameters
+    ----------
+    estimator : callable
+        ``estimator(noisy, dt, **kwargs) -> ModalEstimate``, e.g. :func:`matrix_pencil`; picklable for parallel
+        executors.
+    signals : array_like, shape (samples,) or (channels, samples)
+        Clean sampled record: finite real numbers, at least 4 samples, not all zero.
+    dt : float
+        Sampling period (s); must be positive and finite.
+    snr_db : float, optional
+        Signal-to-noise power ratio (dB); give exactly one of ``snr_db`` and ``level``.
+    level : float, optional
+        Noise standard deviation as a fraction of ``reference``; a number >= 0 (give exactly one of ``snr_db`` and
+        ``level``).
+    reference : float, optional
+        Reference amplitude that ``level`` multiplies; a number >= 0 (default: the RMS of ``signals``).
+    runs : int, optional
+        Number of noise realisations; an integer >= 1 (default 200).
+    seed : int, optional
+        Base seed (an integer >= 0); run ``i`` uses ``(seed, i)``.
+    executor : {"auto", "serial", "processes"}, Executor or distributed.Client, optional
+        Where the runs go (see :func:`symosc.sweep`); the result does not depend on it.
+    progress : bool, optional
+        Show a progress bar (default: when stderr is a terminal).
+    **kwargs
+        Passed to ``estimator`` (e.g. ``n_modes=1``).
+
+    Returns
+    -------
+    MonteCarloResult
 
     See Also
     --------
@@ -285,7 +393,21 @@ def monte_carlo(
 
 @dataclass(frozen=True, eq=False)
 class ApplicabilityCheck(SymPyPrintable):
-    """Belyakov's criterion for Algorithm 1: the weakest mode carries more than half the mean modal energy."""
+    """Belyakov's criterion for Algorithm 1: the weakest mode carries more than half the mean modal energy.
+
+    Attributes
+    ----------
+    ok : bool
+        Whether the criterion ``min E_i > threshold`` holds.
+    energies : ndarray, shape (modes,)
+        Modal energies ``E_i`` (J when forces are in N and amplitudes in m).
+    threshold : float
+        Half the mean modal energy.
+    weakest_mode : int
+        Index of the mode with the smallest energy.
+    margin : float
+        ``min E_i / threshold`` (> 1 when the criterion holds).
+    """
 
     ok: bool
     energies: np.ndarray
@@ -301,6 +423,19 @@ def applicability(energies: Any = None, *, mode_shapes: Any = None, force: Any =
     Give the modal energies directly, or the normal-coordinate observation matrix C' (``mode_shapes``, sensors x
     modes, with q0' = 1) and the released static ``force`` on the sensors: then ``E_i = (C'^T f)_i / 2``
     (half the modal stiffness of Algorithm 1, eq. 34).
+
+    Parameters
+    ----------
+    energies : array_like, shape (modes,), optional
+        Modal energies ``E_i``; a finite 1-D array.  Give either ``energies`` or both ``mode_shapes`` and ``force``.
+    mode_shapes : array_like, shape (sensors, modes), optional
+        Normal-coordinate observation matrix ``C'`` scaled so that ``q0' = 1`` (used when ``energies`` is omitted).
+    force : array_like, shape (sensors,), optional
+        Static vertical forces (N) released at the sensors (used with ``mode_shapes``).
+
+    Returns
+    -------
+    ApplicabilityCheck
 
     Examples
     --------
@@ -330,8 +465,16 @@ def applicability(energies: Any = None, *, mode_shapes: Any = None, force: Any =
 class ErrorVsNoise(SymPyPrintable):
     """Relative parameter errors of an identification pipeline against the noise level (Belyakov Fig. 20).
 
-    ``errors`` has shape (levels, runs, parameters) and holds ``|estimate - truth| / |truth|`` (NaN for failed
-    runs); ``failures`` counts failed runs per level.
+    Attributes
+    ----------
+    levels : ndarray, shape (levels,)
+        Noise levels (standard deviation as a fraction of the reference amplitude).
+    names : tuple of str
+        Names of the parameters compared with the truth.
+    errors : ndarray, shape (levels, runs, parameters)
+        Relative errors ``|estimate - truth| / |truth|`` per run (NaN for failed runs).
+    failures : ndarray of int, shape (levels,)
+        Number of failed runs per level.
     """
 
     levels: np.ndarray
@@ -346,7 +489,20 @@ class ErrorVsNoise(SymPyPrintable):
             return np.nanmean(self.errors, axis=1)
 
     def threshold(self, name: str, max_error: float) -> float:
-        """Largest noise level (linearly interpolated) at which the mean error of ``name`` stays <= ``max_error``."""
+        """Largest noise level (linearly interpolated) at which the mean error of ``name`` stays <= ``max_error``.
+
+        Parameters
+        ----------
+        name : str
+            Parameter whose error is tested; must be one of ``names``.
+        max_error : float
+            Admissible mean relative error (a fraction, e.g. 0.005 for 0.5 %); a non-negative number.
+
+        Returns
+        -------
+        float
+            The noise level (0 when even the lowest level exceeds ``max_error``, the highest level when none does).
+        """
         j = self.names.index(name)
         e = self.mean[:, j]
         above = np.nonzero(e > max_error)[0]
@@ -359,7 +515,19 @@ class ErrorVsNoise(SymPyPrintable):
 
     @plot_method
     def plot(self, names: Any = None, *, ax: Any = None) -> Any:
-        """Mean relative error (%) vs noise level (%) per parameter; returns the axes."""
+        """Mean relative error (%) vs noise level (%) per parameter; returns the axes.
+
+        Parameters
+        ----------
+        names : sequence of str, optional
+            Parameters to draw, each one of ``names``; all of them when omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -422,6 +590,34 @@ def error_vs_noise(
     Errors raised by the pipeline (symosc errors, LinAlgError) count as failures.  The runs go through
     :func:`symosc.sweep` with ``executor`` (parallel executors need a picklable ``pipeline``); results do not
     depend on it.
+
+    Parameters
+    ----------
+    pipeline : callable
+        ``pipeline(noisy_signals, dt)`` returning the identified parameters as a mapping (or an object with
+        ``as_dict()``) whose keys include those of ``truth``; picklable for parallel executors.
+    signals : array_like, shape (samples,) or (channels, samples)
+        Clean sampled record: finite real numbers, at least 4 samples, not all zero.
+    dt : float
+        Sampling period (s); must be positive and finite.
+    truth : mapping of str to float
+        True values of the parameters to compare, by name; nonzero finite numbers (errors are relative).
+    levels : float or array_like
+        Noise level(s): standard deviation as a fraction of ``reference``; numbers >= 0.
+    reference : float, optional
+        Reference amplitude the levels multiply; a number >= 0 (default: the RMS of ``signals``).
+    runs : int, optional
+        Noise realisations per level; an integer >= 1 (default 10).
+    seed : int, optional
+        Base seed (an integer >= 0); run ``i`` at level index ``l`` uses ``(seed, l, i)``.
+    executor : {"auto", "serial", "processes"}, Executor or distributed.Client, optional
+        Where the runs go (see :func:`symosc.sweep`); the result does not depend on it.
+    progress : bool, optional
+        Show a progress bar (default: when stderr is a terminal).
+
+    Returns
+    -------
+    ErrorVsNoise
 
     See Also
     --------

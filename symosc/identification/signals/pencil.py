@@ -104,11 +104,17 @@ def matrix_pencil(
     Parameters
     ----------
     signals : array_like, shape (samples,) or (channels, samples)
-        Real samples at t = 0, dt, 2 dt, ...
+        Real samples at t = 0, dt, 2 dt, ...: finite, at least 4 per channel, not all zero.
     dt : float
-        Sampling period (s).
-    n_modes, n_poles, constant
-        As for :func:`~symosc.identification.era`; ``None`` for both selects the order from the singular values.
+        Sampling period (s); must be positive and finite.
+    n_modes : int, optional
+        Number of oscillatory modes, an integer >= 1.  If neither it nor ``n_poles`` is given, the order is selected
+        from the largest gap of the singular values.
+    n_poles : int, optional
+        Number of exponentials, ``2 n_modes + 1`` with the constant (offset) state, ``2 n_modes`` without; give at
+        most one of ``n_modes`` and ``n_poles``.
+    constant : bool
+        Include a constant (offset) state (default True; it is dropped again when the data do not support it).
     hankel_size : int, optional
         Pencil parameter L (default N/3, at most 300); the Hankel matrix has L + 1 columns.
     nyquist_margin : float
@@ -148,6 +154,32 @@ def esprit(
     nyquist_margin: float = 0.95,
 ) -> ModalEstimate:
     """TLS-ESPRIT estimate of damped modes (same subspace as :func:`matrix_pencil`, total-least-squares shift).
+
+    Parameters
+    ----------
+    signals : array_like, shape (samples,) or (channels, samples)
+        Real samples at t = 0, dt, 2 dt, ...: finite, at least 4 per channel, not all zero.
+    dt : float
+        Sampling period (s); must be positive and finite.
+    n_modes : int, optional
+        Number of oscillatory modes, an integer >= 1.  If neither it nor ``n_poles`` is given, the order is selected
+        from the largest gap of the singular values.
+    n_poles : int, optional
+        Number of exponentials, ``2 n_modes + 1`` with the constant (offset) state, ``2 n_modes`` without; give at
+        most one of ``n_modes`` and ``n_poles``.
+    constant : bool
+        Include a constant (offset) state (default True; it is dropped again when the data do not support it).
+    hankel_size : int, optional
+        Pencil parameter L, an integer in ``[1, N - 2]`` larger than ``n_poles`` (default N/3, at most 300); the
+        Hankel matrix has L + 1 columns.
+    nyquist_margin : float
+        A pole above this fraction (in (0, 1]) of the Nyquist frequency is reported as aliasing
+        (IdentificationError).
+
+    Returns
+    -------
+    ModalEstimate
+        ``details`` holds ``hankel_size`` and the discrete poles.
 
     See Also
     --------

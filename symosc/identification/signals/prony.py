@@ -52,6 +52,7 @@ class SamplingAdvice(SymPyPrintable):
     decimation : int
         Rule (45) as printed: use every m-th sample for the frequencies, ``m = round(ratio / 2)`` (at least 1), so
         that the decimated ratio is close to 2.  Rounding can push it just below 2 (aliasing), so prefer
+        ``safe_decimation``.
     safe_decimation : int
         ``floor(ratio / 2.2)`` (at least 1): the decimated ratio stays >= 2.2, where Prony is still most accurate
         and the fastest mode keeps clear of the Nyquist frequency.
@@ -74,6 +75,19 @@ class SamplingAdvice(SymPyPrintable):
 @validated
 def sampling_advice(dt: float, n_samples: int, omega_max: float) -> SamplingAdvice:
     """Check a sampling period against Belyakov's rules (43)–(45) for the fastest mode ``omega_max`` (rad/s).
+
+    Parameters
+    ----------
+    dt : float
+        Sampling period (s); must be positive and finite.
+    n_samples : int
+        Number of samples in the record; an integer >= 1.
+    omega_max : float
+        Angular frequency (rad/s) of the fastest mode of interest; must be positive and finite.
+
+    Returns
+    -------
+    SamplingAdvice
 
     Examples
     --------
@@ -171,7 +185,7 @@ def prony(
     signals : array_like, shape (samples,) or (channels, samples)
         Real samples at t = 0, dt, 2 dt, ...; all channels share the poles (multichannel linear prediction).
     dt : float
-        Sampling period (s).
+        Sampling period (s); must be positive and finite.
     n_modes : int, optional
         Number of oscillatory modes.  If neither it nor ``n_poles`` is given, the order is selected from the
         largest gap of the singular values of the data Hankel matrix.

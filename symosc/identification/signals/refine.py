@@ -30,8 +30,12 @@ def refine(estimate: ModalEstimate, signals: Any, *, max_nfev: int = 200, xtol: 
         Starting point, e.g. from :func:`~symosc.identification.matrix_pencil` on the same signals.
     signals : array_like
         The record the estimate was made from (same ``dt``, same channels).
-    max_nfev, xtol
-        Passed to :func:`scipy.optimize.least_squares`.
+    max_nfev : int, optional
+        Largest number of function evaluations per fitted pole parameter (an integer >= 1); times the number of
+        parameters, it is passed to :func:`scipy.optimize.least_squares`.
+    xtol : float, optional
+        Tolerance (> 0) for termination by the change of the pole parameters, passed to
+        :func:`scipy.optimize.least_squares`.
 
     Returns
     -------

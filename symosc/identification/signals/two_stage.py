@@ -102,8 +102,13 @@ def two_stage(
 
     Parameters
     ----------
-    signals, dt, n_modes
-        As for :func:`~symosc.identification.era`.
+    signals : array_like, shape (samples,) or (channels, samples)
+        Real samples at t = 0, dt, 2 dt, ...: finite, at least 4 per channel, not all zero (as for
+        :func:`~symosc.identification.era`).
+    dt : float
+        Sampling period (s); must be positive and finite.
+    n_modes : int, optional
+        Number of oscillatory modes, an integer >= 1; None lets the first stage select the order.
     first : callable
         First-stage estimator (``era`` by default; any estimator of this package, or a refined one).
     markov_terms : int, optional

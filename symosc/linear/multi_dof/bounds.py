@@ -36,6 +36,19 @@ __all__ = [
 def rayleigh_quotient(M: Any, K: Any, u: Any) -> float:
     """Rayleigh quotient ``λ(u) = uᵀKu / uᵀMu`` (Bulgakov (1954), eq. (9.97)); ``λ1 ≤ λ(u) ≤ λn``.
 
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass (inertia) matrix: finite, symmetric positive definite.
+    K : array_like, shape (n, n)
+        Stiffness matrix: finite, symmetric, the same size as ``M``.
+    u : array_like, shape (n,)
+        Trial vector (an approximate mode shape); a nonzero finite vector of length ``n``.
+
+    Returns
+    -------
+    float
+
     Examples
     --------
     >>> from symosc.linear import rayleigh_quotient
@@ -58,6 +71,20 @@ def constrained_eigenvalues(M: Any, K: Any, C: Any) -> np.ndarray:
     """Eigenvalues ``λ'`` of the pencil restricted to ``C u = 0`` (Bulgakov (1954), §9.9, Rayleigh's theorem I).
 
     With ``c`` independent constraints, ``λ_j ≤ λ'_j ≤ λ_(c+j)``.
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass (inertia) matrix: finite, symmetric positive definite.
+    K : array_like, shape (n, n)
+        Stiffness matrix: finite, symmetric, the same size as ``M``.
+    C : array_like, shape (c, n) or (n,)
+        Constraint matrix (one row per constraint ``c_i · u = 0``); finite, ``n`` columns, leaving some motion free.
+
+    Returns
+    -------
+    ndarray
+        The ``n - rank(C)`` constrained eigenvalues, ascending.
 
     Examples
     --------
@@ -153,7 +180,13 @@ class FrequencyBounds(SymPyPrintable):
         return f"FrequencyBounds({rows})"
 
     def plot(self, *, ax=None):
-        """Upper and lower bounds of ``z1`` against the power ``m``; returns the Axes."""
+        """Upper and lower bounds of ``z1`` against the power ``m``; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -179,7 +212,7 @@ def dunkerley_bounds(L: Any, *, powers: Any = (1, 2, 4, 8)) -> FrequencyBounds:
     L : array_like or sympy.Matrix
         Dynamic matrix ``ΦA`` with positive eigenvalues ``z_k = 1/ω_k²``.
     powers : sequence of int
-        Increasing positive exponents.
+        Exponents ``m``: strictly increasing positive integers.
 
     Examples
     --------
@@ -261,7 +294,13 @@ class PowerIteration(SymPyPrintable):
         return f"PowerIteration(eigenvalues={list(self.eigenvalues)}, iterations={list(self.iterations)})"
 
     def plot(self, *, ax=None):
-        """Convergence of the normalized vector of the first eigenvalue; returns the Axes."""
+        """Convergence of the normalized vector of the first eigenvalue; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -286,17 +325,18 @@ def power_iteration(
     Parameters
     ----------
     L : array_like
-        Dynamic matrix.
+        Dynamic matrix ``L = ΦA``: a finite real square matrix.
     start : array_like, optional
-        Starting vector (default all ones).  A start orthogonal to a mode never finds it (e.g. a symmetric start for
-        an antisymmetric mode); deflation uses a generic start.
+        Starting vector: finite, nonzero, of length ``n`` (default all ones).  A start orthogonal to a mode never finds
+        it (e.g. a symmetric start for an antisymmetric mode); deflation uses a generic start.
     mass : array_like, optional
-        Mass matrix ``A`` for the deflation.
+        Mass matrix ``A`` for the deflation: finite, symmetric positive definite, ``n x n`` (default identity).
     n_modes : int
-        Number of dominant eigenvalues.
+        Number of dominant eigenvalues, an integer from 1 to ``n``.
     tol : float
         Stop when the normalized vector changes by less than ``tol`` (max norm).
     max_iterations : int
+        Largest number of multiplications per eigenvalue (an integer >= 1); more raises ConvergenceError.
 
     Returns
     -------

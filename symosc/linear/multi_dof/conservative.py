@@ -50,7 +50,14 @@ class ModalAnalysis(SymPyPrintable):
         return tuple(np.sqrt(complex(lam)) if lam < 0 else float(np.sqrt(lam)) for lam in self.eigenvalues)
 
     def modal_forces(self, forces: Any) -> Any:
-        """Generalised forces of the normal coordinates, ``vᵀ x`` (9.42): ``η_l'' + λ_l η_l = (vᵀ x)_l``."""
+        """Generalised forces of the normal coordinates, ``vᵀ x`` (9.42): ``η_l'' + λ_l η_l = (vᵀ x)_l``.
+
+        Parameters
+        ----------
+        forces : sequence, sympy.Matrix or array_like, shape (n,)
+            Generalised forces ``x`` on the original coordinates, one per coordinate (numbers or SymPy expressions
+            for an exact analysis, finite numbers otherwise).
+        """
         if self.exact:
             return self.modes.T * sp.Matrix(forces)
         return np.asarray(self.modes).T @ np.asarray(forces, dtype=float)
@@ -70,7 +77,15 @@ class ModalAnalysis(SymPyPrintable):
         return f"$${sp.latex(self)}$$"
 
     def plot(self, *, ax=None, n_modes: int | None = None):
-        """Mode shapes against the coordinate index; returns the Axes."""
+        """Mode shapes against the coordinate index; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        n_modes : int, optional
+            Number of modes drawn, lowest first (an integer >= 1); all when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -86,6 +101,18 @@ class ModalAnalysis(SymPyPrintable):
 @validated
 def a_orthonormalize(V: Any, A: Any) -> sp.Matrix:
     """Gram–Schmidt in the metric ``A(x, y) = xᵀ A y`` (Bulgakov (1954), eqs. (9.37)–(9.39)), exact.
+
+    Parameters
+    ----------
+    V : sympy.Matrix, shape (n, k)
+        Columns to orthonormalize; must be a SymPy matrix with linearly independent columns.
+    A : sympy.Matrix, shape (n, n)
+        The metric (inertia matrix); must be a symmetric SymPy matrix, positive definite on the columns of ``V``.
+
+    Returns
+    -------
+    sympy.Matrix, shape (n, k)
+        Columns ``v`` with ``vᵀ A v = E``, spanning the same nested subspaces as ``V``.
 
     Examples
     --------

@@ -83,6 +83,19 @@ def compatibility(f: Any, e: Any, var: sp.Symbol) -> Compatibility:
     divided by the gcd of the ``r``-minors of ``f`` in its columns; the gcd ``c(D)`` of these modified minors gives the
     condition ``c(D) x = 0``.  Using the unmodified minors would add spurious factors (the pitfall of §8.4).
 
+    Parameters
+    ----------
+    f : matrix-like
+        The operator ``f(D)``: an ``n x m`` matrix (nested sequence or sympy.Matrix) of polynomials in ``var``.
+    e : matrix-like
+        The input operator ``e(D)``: a single column of polynomials in ``var`` with as many rows as ``f``.
+    var : sympy.Symbol
+        The operator symbol ``D``; must be a SymPy Symbol.
+
+    Returns
+    -------
+    Compatibility
+
     Examples
     --------
     >>> import sympy as sp
@@ -135,6 +148,7 @@ class FundamentalSolutions(SymPyPrintable):
     degree : int
         ``deg Δ``: the number of arbitrary constants (the order of the system).
     roots : tuple of (root, multiplicity)
+        The distinct roots of ``Δ`` (exact) with their multiplicities, by increasing real part.
     matrix : sympy.Matrix
         ``ϑ(t)``: its columns are independent solutions of ``f(D) y = 0``; the general solution is ``ϑ c``.
     """
@@ -164,6 +178,22 @@ def fundamental_solutions(
     ``k < q``, ``F = adj f``; independent ones are kept (polynomial modal columns such as ``[t + 4, -t]`` of
     Bromwich's example).  With ``real=True`` a complex pair contributes the real and imaginary parts (the real modal
     matrix and the Cayley form of §8.12).
+
+    Parameters
+    ----------
+    f : matrix-like
+        Square ``n x n`` matrix (nested sequence or sympy.Matrix) of polynomials in ``var``: the operator ``f(D)``.
+    var : sympy.Symbol
+        The operator symbol ``D``; must be a SymPy Symbol.
+    t : sympy.Symbol, optional
+        Time symbol of the result (default ``Symbol("t")``).
+    real : bool, optional
+        Give each complex pair as the real and imaginary parts of its columns (default True); False keeps the
+        complex exponentials.
+
+    Returns
+    -------
+    FundamentalSolutions
 
     Raises
     ------
@@ -238,6 +268,7 @@ class FrequencyResponse(SymPyPrintable):
     Attributes
     ----------
     omega : ndarray
+        The angular frequencies ``ω``.
     values : ndarray
         ``X(iω)``, shape ``(len(omega), n, m)``.
     """
@@ -267,7 +298,15 @@ class FrequencyResponse(SymPyPrintable):
         return f"FrequencyResponse({self.omega.size} frequencies, shape {self.values.shape[1:]})"
 
     def plot(self, *, ax=None, entry: tuple = (0, 0)):
-        """Gain in decibels of one entry against ``ω`` (log axis); returns the Axes."""
+        """Gain in decibels of one entry against ``ω`` (log axis); returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        entry : (int, int), optional
+            Row (output) and column (input) indices of the entry of ``X`` to draw; within its shape (default (0, 0)).
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -280,6 +319,22 @@ class FrequencyResponse(SymPyPrintable):
 @validated
 def frequency_response(f: Any, e: Any, var: sp.Symbol, omega: Any) -> FrequencyResponse:
     """``X(iω) = f(iω)⁻¹ e(iω)`` of ``f(D) y = e(D) x`` (Bulgakov (1954), §8.28).
+
+    Parameters
+    ----------
+    f : matrix-like
+        Square ``n x n`` matrix (nested sequence or sympy.Matrix) of polynomials in ``var``: the operator ``f(D)``.
+    e : matrix-like
+        The input operator ``e(D)``: a column (or ``n x m`` matrix) of polynomials in ``var`` with as many rows as
+        ``f``.
+    var : sympy.Symbol
+        The operator symbol ``D``; must be a SymPy Symbol.
+    omega : float or array_like
+        Angular frequencies ``ω``: finite real numbers, none at a resonance ``Δ(iω) = 0``.
+
+    Returns
+    -------
+    FrequencyResponse
 
     Raises
     ------
@@ -320,6 +375,22 @@ def worst_case_gain(numerator: Any, denominator: Any, *, t_max: float | None = N
 
     ``N`` is the impulse response of ``numerator/denominator`` (denominator Hurwitz, degrees equal or proper),
     ``S`` the direct term; ``∫|N|`` is summed between the zeros of ``N`` (sign scan + brentq), cf. (8.567)–(8.570).
+
+    Parameters
+    ----------
+    numerator : sequence of float
+        Coefficients of the numerator, highest power first; finite numbers, degree at most the denominator's.
+    denominator : sequence of float
+        Coefficients of the denominator, highest power first; finite numbers forming a Hurwitz polynomial (every
+        root with ``Re < 0``).
+    t_max : float, optional
+        End of the integration of ``|N|`` (positive); default ``(ln(1/tol) + 10)`` slowest time constants.
+    tol : float, optional
+        Absolute tolerance (> 0) of the integral; also sets the default ``t_max``.
+
+    Returns
+    -------
+    float
 
     Examples
     --------
@@ -392,6 +463,22 @@ def impulse_response(f: Any, e: Any, var: sp.Symbol, t: sp.Symbol | None = None)
     ``F(D) e(D)/Δ(D) = S(D) + v(D)`` with ``F = adj f``; ``N(t)`` is the original of the proper part ``v``, found by
     the Heaviside expansion (residues), so that ``y = S(D) x + ∫₀ᵗ N(t - τ) x(τ) dτ`` from rest.
 
+    Parameters
+    ----------
+    f : matrix-like
+        Square ``n x n`` matrix (nested sequence or sympy.Matrix) of polynomials in ``var``: the operator ``f(D)``.
+    e : matrix-like
+        The input operator ``e(D)``: a column (or ``n x m`` matrix) of polynomials in ``var`` with as many rows as
+        ``f``.
+    var : sympy.Symbol
+        The operator symbol ``D``; must be a SymPy Symbol.
+    t : sympy.Symbol, optional
+        Time symbol of the result (default ``Symbol("t")``).
+
+    Returns
+    -------
+    ImpulseResponse
+
     Examples
     --------
     >>> import sympy as sp
@@ -434,6 +521,27 @@ def resonant_particular(f: Any, e: Any, var: sp.Symbol, xi: Any, lam: Any, t: sp
     If ``λ`` is a root of ``Δ`` of multiplicity ``q``, ``y = ∂^q/∂λ^q [e^{λt} F(λ)] e(λ) ξ / Δ^(q)(λ)`` (growing
     like ``t^q``); ``q = 0`` gives the steady state ``X(λ) ξ e^{λt}``.
 
+    Parameters
+    ----------
+    f : matrix-like
+        Square ``n x n`` matrix (nested sequence or sympy.Matrix) of polynomials in ``var``: the operator ``f(D)``.
+    e : matrix-like
+        The input operator ``e(D)``: a column (or ``n x m`` matrix) of polynomials in ``var`` with as many rows as
+        ``f``.
+    var : sympy.Symbol
+        The operator symbol ``D``; must be a SymPy Symbol.
+    xi : sequence or sympy.Matrix
+        Amplitude vector ``ξ`` of the input, one entry per column of ``e`` (numbers or expressions).
+    lam : number or sympy.Expr
+        Exponent ``λ`` of the input ``e^{λt}`` (complex allowed, e.g. ``I*omega``).
+    t : sympy.Symbol, optional
+        Time symbol of the result (default ``Symbol("t")``).
+
+    Returns
+    -------
+    sympy.Matrix
+        The particular solution ``y(t)``.
+
     Examples
     --------
     >>> import sympy as sp
@@ -469,6 +577,28 @@ def mean_power(A: Any, N: Any, G: Any, H: Any, J: Any, xi: Any, omega: float) ->
     """Mean power of a harmonic force ``w = Re(ξ e^{iωt})`` on ``A ÿ + (N + G) ẏ + (H + J) y = w`` (§8.29, (8.220)).
 
     ``P̄ = ½ Re ζ̄'ᵀ (N - iJ/ω) ζ'`` with ``ζ' = iω ζ``, ``ζ = f(iω)⁻¹ ξ``; gyroscopic forces ``G`` do no work.
+
+    Parameters
+    ----------
+    A : array_like, shape (n, n)
+        Inertia matrix (symmetric); finite, square, the same size as the others.
+    N : array_like, shape (n, n)
+        Dissipation matrix (symmetric); finite, square, the same size as ``A``.
+    G : array_like, shape (n, n)
+        Gyroscopic matrix (antisymmetric); finite, square, the same size as ``A``.
+    H : array_like, shape (n, n)
+        Potential (stiffness) matrix (symmetric); finite, square, the same size as ``A``.
+    J : array_like, shape (n, n)
+        Circulatory (non-conservative positional) matrix (antisymmetric); finite, square, the same size as ``A``.
+    xi : array_like, shape (n,)
+        Complex amplitude ``ξ`` of the force; a vector of length ``n``.
+    omega : float
+        Angular frequency ``ω`` of the force; must be positive and not a resonance.
+
+    Returns
+    -------
+    float
+        The mean power ``P̄`` delivered by the force.
 
     Examples
     --------

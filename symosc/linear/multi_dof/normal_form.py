@@ -48,6 +48,19 @@ def modal_normal_form(A: Any, H: Any, *, max_condition: float = 1e12) -> NormalF
     A second-order system ``M ÿ + C ẏ + K y = x`` is first brought to this form with ``A = [[C, M], [M, 0]]``,
     ``H = [[K, 0], [0, -M]]`` on ``(y, ẏ)``.
 
+    Parameters
+    ----------
+    A : array_like, shape (n, n)
+        Coefficient of ``D``: a finite real nonsingular square matrix.
+    H : array_like, shape (n, n)
+        Coefficient of ``y``: a finite real square matrix of the same size as ``A``.
+    max_condition : float, optional
+        Largest acceptable ``cond(v)`` (> 0); a larger one means a (nearly) defective pencil and raises ModelError.
+
+    Returns
+    -------
+    NormalForm
+
     Raises
     ------
     ModelError

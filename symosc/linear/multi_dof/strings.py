@@ -28,11 +28,12 @@ def chain_matrices(masses: Any, stiffnesses: Any, *, boundary: str = "fixed-fixe
     Parameters
     ----------
     masses : array_like, shape (n,)
-        Point masses ``m_j`` (string) or disk moments of inertia ``J_j`` (shaft).
+        Point masses ``m_j`` (string) or disk moments of inertia ``J_j`` (shaft); positive numbers.
     stiffnesses : array_like
-        Segment stiffnesses ``P/h_j`` (string, tension over segment length) or ``c_j`` (shaft): ``n + 1`` values for
-        ``"fixed-fixed"`` (segment 0 joins the left support), ``n`` for ``"fixed-free"``.
+        Positive segment stiffnesses ``P/h_j`` (string, tension over segment length) or ``c_j`` (shaft): ``n + 1``
+        values for ``"fixed-fixed"`` (segment 0 joins the left support), ``n`` for ``"fixed-free"``.
     boundary : {"fixed-fixed", "fixed-free"}
+        Both ends fixed (default) or the left end fixed and the right end free.
 
     Returns
     -------
@@ -77,6 +78,24 @@ def string_frequencies(
     sin((2k-1)π / (2(2n+1)))``, ``k = 1..n``.  The same formulas hold for a uniform shaft with ``P/h → c``,
     ``m → J``.  Written with ``sin`` (not ``1 - cos``) so that the fundamental keeps full precision for long chains.
 
+    Parameters
+    ----------
+    n : int
+        Number of point masses; a positive integer.
+    boundary : {"fixed-fixed", "fixed-free"}, optional
+        Both ends fixed (default) or the left end fixed and the right end free.
+    tension : float, optional
+        String tension ``P`` (or shaft stiffness ``c`` with ``spacing = 1``); must be positive (default 1).
+    mass : float, optional
+        Each point mass ``m`` (or disk moment of inertia ``J``); must be positive (default 1).
+    spacing : float, optional
+        Segment length ``h`` between the masses; must be positive (default 1).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        ``ω_1 < ... < ω_n``.
+
     Examples
     --------
     >>> from symosc.linear import string_frequencies
@@ -100,6 +119,18 @@ def string_frequencies(
 @validated
 def string_modes(n: int, *, boundary: str = "fixed-fixed") -> np.ndarray:
     """Closed-form mode shapes (columns) ``sin(jkπ/(n+1))`` (9.68) or ``sin(j(2k-1)π/(2n+1))`` (9.91).
+
+    Parameters
+    ----------
+    n : int
+        Number of point masses; a positive integer.
+    boundary : {"fixed-fixed", "fixed-free"}, optional
+        Both ends fixed (default) or the left end fixed and the right end free.
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+        Column ``k`` is mode ``k`` (unnormalized), row ``j`` the mass ``j``.
 
     Examples
     --------

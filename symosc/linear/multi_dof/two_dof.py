@@ -38,6 +38,10 @@ class TwoDOFSystem(SymPyPrintable):
 
     Attributes
     ----------
+    L, M, N : float
+        Inertia coefficients ``2T = L y1'² + 2M y1'y2' + N y2'²``.
+    A, B, C : float
+        Stiffness coefficients ``2V = A y1² + 2B y1y2 + C y2²``.
     omega_a, omega_b : float
         Partial frequencies ``√(A/L)``, ``√(C/N)``.
     k, l : float
@@ -134,6 +138,7 @@ class TwoDOFBeats(SymPyPrintable):
     Attributes
     ----------
     system : TwoDOFSystem
+        The coupled system.
     y0 : (float, float)
         Initial displacements (zero initial velocities).
     a, b : ndarray, shape (2,)
@@ -155,13 +160,25 @@ class TwoDOFBeats(SymPyPrintable):
     limits: np.ndarray
 
     def displacement(self, t: Any) -> np.ndarray:
-        """``y_j(t)``, shape ``(2, len(t))``."""
+        """``y_j(t)``, shape ``(2, len(t))``.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) since the release; real numbers.
+        """
         t = np.atleast_1d(np.asarray(t, dtype=float))
         w1, w2 = self.system.frequencies
         return self.a[:, None] * np.cos(w1 * t) + self.b[:, None] * np.cos(w2 * t)
 
     def envelope(self, t: Any) -> np.ndarray:
-        """``A_j(t) = √(a_j² + b_j² + 2 a_j b_j cos(ω2 - ω1)t)`` (8.94)–(8.95), shape ``(2, len(t))``."""
+        """``A_j(t) = √(a_j² + b_j² + 2 a_j b_j cos(ω2 - ω1)t)`` (8.94)–(8.95), shape ``(2, len(t))``.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) since the release; real numbers.
+        """
         t = np.atleast_1d(np.asarray(t, dtype=float))
         w1, w2 = self.system.frequencies
         a, b = self.a[:, None], self.b[:, None]
@@ -174,7 +191,15 @@ class TwoDOFBeats(SymPyPrintable):
         )
 
     def plot(self, t: Any = None, *, ax=None):
-        """Both coordinates with their envelopes; returns the Axes."""
+        """Both coordinates with their envelopes; returns the Axes.
+
+        Parameters
+        ----------
+        t : array_like, optional
+            Times to plot at (real numbers); default 2000 points over two beat periods.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -193,6 +218,17 @@ class TwoDOFBeats(SymPyPrintable):
 @validated
 def two_dof_beats(system: TwoDOFSystem, y0: Any) -> TwoDOFBeats:
     """Beats after release from rest at ``y(0) = y0`` (Bulgakov (1954), §8.14, (8.92)–(8.96)).
+
+    Parameters
+    ----------
+    system : TwoDOFSystem
+        The coupled system; must be the result of :func:`two_dof_system`.
+    y0 : sequence of 2 floats
+        Initial displacements ``(y1(0), y2(0))``, two finite numbers (the velocities start at zero).
+
+    Returns
+    -------
+    TwoDOFBeats
 
     Examples
     --------
@@ -222,7 +258,17 @@ def two_dof_beats(system: TwoDOFSystem, y0: Any) -> TwoDOFBeats:
 
 @dataclass(frozen=True)
 class TuningCurves(SymPyPrintable):
-    """Result of :func:`tuning_curves`: ``z_i = ω_i/ω_a`` against the tuning ``x = ω_b/ω_a`` (8.83)–(8.84)."""
+    """Result of :func:`tuning_curves`: ``z_i = ω_i/ω_a`` against the tuning ``x = ω_b/ω_a`` (8.83)–(8.84).
+
+    Attributes
+    ----------
+    k, l : float
+        Inductive and capacitive coupling coefficients.
+    x : ndarray
+        Tuning ``ω_b/ω_a``.
+    z1, z2 : ndarray
+        Normal frequencies ``ω_1/ω_a <= ω_2/ω_a`` at each ``x``.
+    """
 
     k: float
     l: float
@@ -234,7 +280,13 @@ class TuningCurves(SymPyPrintable):
         return f"TuningCurves(k = {self.k:.6g}, l = {self.l:.6g}, {self.x.size} points)"
 
     def plot(self, *, ax=None):
-        """``z1(x)``, ``z2(x)`` and the uncoupled lines ``z = 1``, ``z = x``; returns the Axes."""
+        """``z1(x)``, ``z2(x)`` and the uncoupled lines ``z = 1``, ``z = x``; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -254,6 +306,19 @@ def tuning_curves(k: float, l: float, x: Any = None) -> TuningCurves:
     """Resonance (tuning) curves of two coupled oscillators (Bulgakov (1954), §8.13, (8.84)–(8.86)).
 
     ``z_{1,2}² = [1 + x² + 2klx ∓ √((1 + x² + 2klx)² - 4(1-k²)(1-l²)x²)]/(2(1-k²))``.
+
+    Parameters
+    ----------
+    k : float
+        Inductive (inertial) coupling coefficient ``M/√(LN)``; must satisfy ``k² < 1``.
+    l : float
+        Capacitive (elastic) coupling coefficient ``-B/√(AC)``; must satisfy ``l² < 1``.
+    x : array_like, optional
+        Tunings ``x = ω_b/ω_a``: finite non-negative numbers (default 301 points on ``[0, 3]``).
+
+    Returns
+    -------
+    TuningCurves
 
     Examples
     --------

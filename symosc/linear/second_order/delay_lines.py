@@ -45,7 +45,8 @@ class DelayStabilityLines(SymPyPrintable):
 
     Attributes
     ----------
-    model : str
+    model : {"callender-hartree-porter", "andronov-maier"}
+        The regulator model.
     s : float
         The degree of stability (0: the stability boundary).
     lam : float
@@ -68,7 +69,20 @@ class DelayStabilityLines(SymPyPrintable):
     cusp: tuple[float, float]
 
     def characteristic(self, rho: float, sigma: float):
-        """The quasi-polynomial ``f(p)`` at ``(ρ, σ)`` as a SymPy expression in ``p``."""
+        """The quasi-polynomial ``f(p)`` at ``(ρ, σ)`` as a SymPy expression in ``p``.
+
+        Parameters
+        ----------
+        rho : float
+            Value of the parameter ``ρ`` (the coefficient of ``p`` in the delayed or undelayed term of the model); a
+            finite number (kept exact where it is a short decimal).
+        sigma : float
+            Value of the parameter ``σ`` (the delayed restoring coefficient); a finite number.
+
+        Returns
+        -------
+        sympy.Expr
+        """
         import sympy as sp
 
         p = sp.Symbol("p")
@@ -85,7 +99,13 @@ class DelayStabilityLines(SymPyPrintable):
         )
 
     def plot(self, *, ax=None):
-        """Draw the real-root line, the complex-root curve and the cusp in the ``(ρ, σ)`` plane; returns the Axes."""
+        """Draw the real-root line, the complex-root curve and the cusp in the ``(ρ, σ)`` plane; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -121,6 +141,11 @@ def delay_equal_stability_lines(
         End of the complex-root curve; default: where it meets the real-root line again or runs off to infinity
         (for ``s = 0``: ``π/2`` in both models).
     n_points : int
+        Number of points on the complex-root curve and on the real-root line (an integer >= 2; default 200).
+
+    Returns
+    -------
+    DelayStabilityLines
 
     Examples
     --------

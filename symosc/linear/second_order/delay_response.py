@@ -41,7 +41,9 @@ class DelayResponseSeries(SymPyPrintable):
     roots : ndarray of complex
         Distinct roots used (all roots of ``f`` in ``region``).
     multiplicities : tuple of int
+        Multiplicity (1 or 2) of each root.
     region : (float, float, float, float)
+        The root rectangle ``(re_min, re_max, -im_max, im_max)``.
     d1, d2, d3 : ndarray of complex
         ``f'``, ``f''``, ``f'''`` at the roots.
     f0 : float
@@ -72,19 +74,43 @@ class DelayResponseSeries(SymPyPrintable):
         return out.real
 
     def impulse(self, u: Any) -> np.ndarray:
-        """Response ``N(u)`` to a unit impulse at ``u = 0`` (4.114); zero for ``u < 0``."""
+        """Response ``N(u)`` to a unit impulse at ``u = 0`` (4.114); zero for ``u < 0``.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Time(s) ``u = t/τ`` in units of the delay; real numbers.  The series converges for ``u > 0`` and is
+            accurate there only once ``tail(u)`` is small.
+        """
         u = np.atleast_1d(np.asarray(u, dtype=float))
         return np.where(u > 0, self._sum(np.maximum(u, 0), 0), 0.0)
 
     def step(self, u: Any) -> np.ndarray:
-        """Response ``A(u)`` to a unit step at ``u = 0``; zero for ``u < 0``."""
+        """Response ``A(u)`` to a unit step at ``u = 0``; zero for ``u < 0``.
+
+        Needs ``f(0) != 0``.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Time(s) ``u = t/τ`` in units of the delay; real numbers.  The series converges for ``u > 0`` and is
+            accurate there only once ``tail(u)`` is small.
+        """
         if self.f0 == 0:
             raise ParameterError("f(0) = 0: the step response grows without bound (a zero root)")
         u = np.atleast_1d(np.asarray(u, dtype=float))
         return np.where(u > 0, 1 / self.f0 + self._sum(np.maximum(u, 0), 1), 0.0)
 
     def pulse(self, u: Any, width: float) -> np.ndarray:
-        """Response to the rectangular pulse ``(1/b)[1(u) - 1(u - b)]`` of unit area (4.117)–(4.118)."""
+        """Response to the rectangular pulse ``(1/b)[1(u) - 1(u - b)]`` of unit area (4.117)–(4.118).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Time(s) ``u = t/τ`` in units of the delay; real numbers.
+        width : float
+            Length ``b`` of the pulse (in units of the delay); must be positive.
+        """
         b = float(width)
         if not b > 0:
             raise ParameterError(f"width must be positive, got {width}")
@@ -92,7 +118,13 @@ class DelayResponseSeries(SymPyPrintable):
         return (self.step(u) - self.step(u - b)) / b
 
     def tail(self, u: float) -> float:
-        """Sum of ``|terms|`` of the impulse series from the roots in the outer fifth of the rectangle at ``u``."""
+        """Sum of ``|terms|`` of the impulse series from the roots in the outer fifth of the rectangle at ``u``.
+
+        Parameters
+        ----------
+        u : float
+            Time ``u = t/τ`` in units of the delay at which to measure the tail; a positive number.
+        """
         im_max = max(abs(self.region[2]), abs(self.region[3]))
         out = 0.0
         for g, m, f1 in zip(self.roots, self.multiplicities, self.d1, strict=True):
@@ -104,7 +136,17 @@ class DelayResponseSeries(SymPyPrintable):
         return f"DelayResponseSeries({len(self.roots)} roots in {self.region}, rightmost {self.roots[0]:.6g})"
 
     def plot(self, u: Any = None, *, ax=None, kind: str = "impulse"):
-        """``N(u)`` (``kind="impulse"``) or ``A(u)`` (``"step"``) against ``u``; returns the Axes."""
+        """``N(u)`` (``kind="impulse"``) or ``A(u)`` (``"step"``) against ``u``; returns the Axes.
+
+        Parameters
+        ----------
+        u : array_like, optional
+            Times ``u = t/τ`` to plot at (positive numbers); default 400 points on ``[0.05, 10]``.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        kind : {"impulse", "step"}, optional
+            Which response to draw (default ``"impulse"``).
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)

@@ -73,6 +73,7 @@ class LinearFilter(SymPyPrintable):
     Attributes
     ----------
     k0, k1, k2 : float
+        Coefficients of ``k0 D² + k1 D + k2`` (``k0 > 0``: the mass).
     y0, v0 : float
         Initial displacement and velocity for ``M``.
     """
@@ -93,24 +94,52 @@ class LinearFilter(SymPyPrintable):
         return self.k2 / self.k0 - self.eps**2
 
     def M(self, t: Any) -> np.ndarray:
-        """Free motion from ``y0, v0`` (4.62), (4.66), (4.70)."""
+        """Free motion from ``y0, v0`` (4.62), (4.66), (4.70).
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) since the start; real numbers, any shape.
+        """
         C, S = _cs(self.d, t)
         return np.exp(-self.eps * np.asarray(t, float)) * (self.y0 * C + (self.v0 + self.eps * self.y0) * S)
 
     def N(self, t: Any) -> np.ndarray:
-        """After-effect (unit impulse) function (4.63), (4.67), (4.71)."""
+        """After-effect (unit impulse) function (4.63), (4.67), (4.71).
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) since the start; real numbers, any shape.
+        """
         _, S = _cs(self.d, t)
         return np.exp(-self.eps * np.asarray(t, float)) * S / self.k0
 
     def A(self, t: Any) -> np.ndarray:
-        """Transition (unit step) function (4.64), (4.69), (4.72); ``A(0) = 0``, ``A' = N``."""
+        """Transition (unit step) function (4.64), (4.69), (4.72); ``A(0) = 0``, ``A' = N``.
+
+        Needs ``k2 != 0``.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time(s) since the start; real numbers, any shape.
+        """
         if self.k2 == 0:
             raise ParameterError("A(t) needs k2 != 0 (a zero root makes the step response grow)")
         C, S = _cs(self.d, t)
         return (1 - np.exp(-self.eps * np.asarray(t, float)) * (C + self.eps * S)) / self.k2
 
     def plot(self, t: Any = None, *, ax=None):
-        """``M``, ``N`` and ``A`` against ``t``; returns the Axes."""
+        """``M``, ``N`` and ``A`` against ``t``; returns the Axes.
+
+        Parameters
+        ----------
+        t : array_like, optional
+            Times to plot at (real numbers); default 500 points on ``[0, 10/max(ε, 0.1)]``, ``ε = k1/(2 k0)``.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -129,6 +158,23 @@ def linear_filter(k0: float, k1: float, k2: float, *, y0: float = 0.0, v0: float
     ``y(t) = M(t) + ∫₀ᵗ N(t - u) x(u) du`` (4.55).  The three branches of the book (real, complex, double roots) are
     one formula in ``C = cos(ωt)``, ``S = sin(ωt)/ω`` continued analytically through ``ω² = 0`` (series there), so
     values stay accurate arbitrarily close to critical damping.
+
+    Parameters
+    ----------
+    k0 : float
+        Coefficient of ``D²`` (the mass); must be positive and finite.
+    k1 : float
+        Coefficient of ``D`` (the damping); a finite real number (negative: growing oscillations).
+    k2 : float
+        Coefficient of ``y`` (the stiffness); a finite real number (``A(t)`` needs ``k2 != 0``).
+    y0 : float, optional
+        Initial displacement for the free motion ``M(t)`` (default 0).
+    v0 : float, optional
+        Initial velocity for the free motion ``M(t)`` (default 0).
+
+    Returns
+    -------
+    LinearFilter
 
     Examples
     --------
@@ -209,6 +255,21 @@ def stability_coefficients(k0: float, k1: float, k2: float, *, theta: tuple = (1
 def classify_equilibrium(k0: float, k1: float, k2: float) -> str:
     """Type of the singular point of ``k0 q'' + k1 q' + k2 q = 0`` in the phase plane (§4.2, §4.9).
 
+    Parameters
+    ----------
+    k0 : float
+        Coefficient of ``q''`` (the mass); must be positive and finite.
+    k1 : float
+        Coefficient of ``q'`` (the damping); a finite real number.
+    k2 : float
+        Coefficient of ``q`` (the stiffness); a finite real number.
+
+    Returns
+    -------
+    str
+        ``"saddle"``, ``"center"``, ``"stable focus"``, ``"unstable node"``, ``"stable degenerate node"``,
+        ``"degenerate (zero root)"``, ...
+
     Examples
     --------
     >>> from symosc.linear import classify_equilibrium
@@ -245,9 +306,9 @@ def periodic_forced_response(force: Any, period: float, k0: float, omega: float,
     force : callable
         ``x(t)`` on ``[0, τ]`` (one period).
     period : float
-        ``τ``.
+        Period ``τ`` of the force; must be positive.
     k0, omega : float
-        Mass and natural angular frequency.
+        Mass and natural angular frequency; both must be positive (and ``ωτ`` not a multiple of ``2π``).
     t : array_like
         Times (any real values; reduced modulo ``τ``).
 
@@ -304,7 +365,7 @@ def volterra_march(g: Any, kernel: Any, t: Any) -> np.ndarray:
     kernel : callable
         ``K(t, τ, x)`` → array of shape ``(m,)``.
     t : array_like
-        Increasing grid, ``t[0] = t0``.
+        Time grid: a strictly increasing 1-D array of at least two points, ``t[0] = t0``.
 
     Returns
     -------

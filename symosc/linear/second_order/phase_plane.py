@@ -74,7 +74,15 @@ class PhasePortrait(SymPyPrintable):
         return rf"$\ddot y + {2 * self.h:.6g}\,\dot y + {self.k_squared:.6g}\,y = 0\quad \text{{({self.kind})}}$"
 
     def plot(self, *, ax=None, arrows: bool = True):
-        """Draw the trajectories (arrows in the direction of motion) and the invariant lines; returns the Axes."""
+        """Draw the trajectories (arrows in the direction of motion) and the invariant lines; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        arrows : bool, optional
+            Mark the direction of motion on each trajectory (default True).
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -120,7 +128,7 @@ def phase_portrait(
     t_max : float, optional
         Length of each trajectory; default ``6`` time constants or periods of the slowest motion.
     n_points : int
-        Samples per trajectory.
+        Samples per trajectory (an integer >= 2).
 
     Returns
     -------

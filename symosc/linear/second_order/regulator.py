@@ -49,7 +49,8 @@ class RegulatorOptimum(SymPyPrintable):
         The optimal coefficients.
     free : str
         ``"k1"`` or ``"k2"``, the parameter that was chosen.
-    criterion : str
+    criterion : {"alpha", "beta", "gamma1", "gamma0", "vartheta"}
+        The stability coefficient that was maximised.
     value : float
         The achieved value of the criterion.
     coefficients : StabilityCoefficients
@@ -60,6 +61,7 @@ class RegulatorOptimum(SymPyPrintable):
     interval : (float, float)
         Admissible interval of the free parameter (after the frequency limit).
     plateau : (float, float) or None
+        The interval on which the criterion is constant at its maximum (``kind == "plateau"``), else None.
     theta : (float, float)
         Weights used by γ1 and γ0.
     """
@@ -91,7 +93,15 @@ class RegulatorOptimum(SymPyPrintable):
         )
 
     def plot(self, *, ax=None, n_points: int = 400):
-        """The criterion against the free parameter over the admissible interval, optimum marked; returns the Axes."""
+        """The criterion against the free parameter over the admissible interval, optimum marked; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        n_points : int, optional
+            Number of values of the free parameter plotted (an integer >= 2; default 400).
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -138,10 +148,11 @@ def optimize_regulator(
     Parameters
     ----------
     k0 : float
-        Mass (positive).
+        Mass ``k0``; must be positive and finite.
     k1, k2 : float
-        Exactly one of them: the fixed coefficient.
+        Exactly one of them: the fixed coefficient (positive).
     criterion : {"alpha", "beta", "gamma1", "gamma0", "vartheta"}
+        The stability coefficient to maximise (see :func:`stability_coefficients`; default ``"alpha"``).
     theta : (float, float)
         Weights of ``y²`` and ``y'²`` in γ1 and γ0.
     bounds : (float, float), optional
@@ -253,9 +264,12 @@ class EqualStabilityLines(SymPyPrintable):
 
     Attributes
     ----------
-    criterion : str
+    criterion : {"alpha", "beta", "gamma1", "gamma0", "vartheta"}
+        The stability coefficient held constant.
     value : float
+        Its value.
     k0 : float
+        The mass ``k0``.
     branches : tuple of (ndarray, ndarray)
         ``(k1, k2)`` samples of each branch.
     equations : tuple of str
@@ -272,7 +286,19 @@ class EqualStabilityLines(SymPyPrintable):
         return f"EqualStabilityLines({self.criterion} = {self.value:.6g}: {', '.join(self.equations)})"
 
     def plot(self, *, ax=None, boundary: bool = True):
-        """Draw the branches (and the stability boundary ``k1 = 0``, ``k2 = 0`` and the parabola (4.74))."""
+        """Draw the branches (and the stability boundary ``k1 = 0``, ``k2 = 0`` and the parabola (4.74)).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        boundary : bool, optional
+            Also draw the stability boundary and the parabola ``k2 = k1²/(4k0)`` of critical damping (default True).
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -311,6 +337,25 @@ def equal_stability_lines(
     * ϑ: ``k2 = k0ϑ²/k1² + k1²/(4k0)`` for ``k1 < √(2k0ϑ)`` and ``k2 = ϑ`` beyond (4.92).
 
     As the value tends to 0 the lines merge with the boundary ``k1 = 0``, ``k2 = 0`` of the stability region.
+
+    Parameters
+    ----------
+    criterion : {"alpha", "beta", "gamma1", "gamma0", "vartheta"}
+        The stability coefficient held constant (see :func:`stability_coefficients`).
+    value : float
+        Its value; must be positive and finite (for γ0 also below ``1/√(θ1θ2)``).
+    k0 : float, optional
+        The mass ``k0``; must be positive and finite (default 1).
+    theta : (float, float), optional
+        Weights ``θ1, θ2`` of ``y²`` and ``y'²`` in γ1 and γ0; non-negative, not both zero (default (1, 0)).
+    k1_max : float, optional
+        Largest ``k1`` drawn on unbounded branches (a positive number; default a few times the branch's start).
+    n_points : int, optional
+        Number of points per branch (an integer >= 2; default 200).
+
+    Returns
+    -------
+    EqualStabilityLines
 
     Examples
     --------

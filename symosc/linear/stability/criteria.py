@@ -88,6 +88,15 @@ class StabilityVerdict(SymPyPrintable):
 def hurwitz_matrix(coefficients: Any) -> sp.ImmutableMatrix:
     """The ``s x s`` Hurwitz matrix, entry ``(i, j) = k_(2i-j)`` (1-based) (Bulgakov (1954), eq. (8.117)).
 
+    Parameters
+    ----------
+    coefficients : sequence or sympy.Poly
+        Coefficients ``k0, ..., ks`` highest power first (numbers or SymPy expressions, ``k0 != 0``, at least two).
+
+    Returns
+    -------
+    sympy.ImmutableMatrix
+
     Examples
     --------
     >>> from symosc.linear import hurwitz_matrix
@@ -181,9 +190,10 @@ def hurwitz(coefficients: Any, *, tol: float = 1e-9) -> StabilityVerdict:
     Parameters
     ----------
     coefficients : sequence or sympy.Poly
-        Highest power first.  Numbers give a verdict (floats are taken exactly); expressions give inequalities.
+        Coefficients ``k0, ..., ks`` highest power first (real, ``k0 != 0``, at least two).  Numbers give a verdict
+        (floats are taken exactly); expressions give inequalities.
     tol : float
-        Relative tolerance for flagging a numeric verdict as ``near_boundary``.
+        Relative tolerance (> 0 and < 1) for flagging a numeric verdict as ``near_boundary``.
 
     Returns
     -------
@@ -232,11 +242,12 @@ def lienard_chipart(coefficients: Any, *, form: int = 1, tol: float = 1e-9) -> S
     Parameters
     ----------
     coefficients : sequence or sympy.Poly
-        Highest power first.
+        Coefficients ``k0, ..., ks`` highest power first (real, ``k0 != 0``, at least two).
     form : {1, 2, 3, 4}
         Which of the four equivalent forms.
     tol : float
-        As in :func:`hurwitz`.
+        Relative tolerance (> 0 and < 1) for flagging a numeric verdict as ``near_boundary`` (as in
+        :func:`hurwitz`).
 
     Returns
     -------

@@ -23,6 +23,18 @@ def shifted_coefficients(coefficients: Any, delta: Any) -> tuple:
     ``K_j = Δ^(s-j)(-δ)/(s-j)!``; all roots of the original polynomial lie left of ``Re λ = -δ`` iff the shifted
     polynomial is Hurwitz.
 
+    Parameters
+    ----------
+    coefficients : sequence or sympy.Poly
+        Coefficients ``k0, ..., ks`` highest power first (numbers or SymPy expressions, ``k0 != 0``, at least two).
+    delta : number or sympy.Expr
+        The shift ``δ`` (the degree of stability to test); a real number or a symbol.
+
+    Returns
+    -------
+    tuple of sympy.Expr
+        ``K0, ..., Ks`` highest power first.
+
     Examples
     --------
     >>> import sympy as sp
@@ -46,6 +58,19 @@ def shifted_coefficients(coefficients: Any, delta: Any) -> tuple:
 @validated
 def hurwitz_at_degree(coefficients: Any, delta: Any, *, tol: float = 1e-9) -> StabilityVerdict:
     """Hurwitz conditions for the shifted polynomial: every root has ``Re λ < -δ`` (Tsypkin–Bromberg, §8.22).
+
+    Parameters
+    ----------
+    coefficients : sequence or sympy.Poly
+        Coefficients ``k0, ..., ks`` highest power first (numbers or SymPy expressions, ``k0 != 0``, at least two).
+    delta : number or sympy.Expr
+        The required degree of stability ``δ``; a real number or a symbol.
+    tol : float, optional
+        Relative tolerance (> 0 and < 1) for flagging a numeric verdict as ``near_boundary``.
+
+    Returns
+    -------
+    StabilityVerdict
 
     Examples
     --------
@@ -85,7 +110,13 @@ class StabilityDegree(SymPyPrintable):
         return f"StabilityDegree(degree={self.degree:.12g}, dominant_roots={list(self.dominant_roots)})"
 
     def plot(self, *, ax=None):
-        """Roots in the complex plane with the line ``Re λ = -δ``; returns the Axes."""
+        """Roots in the complex plane with the line ``Re λ = -δ``; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -103,6 +134,17 @@ def stability_degree(coefficients: Any, *, tol: float = 1e-12) -> StabilityDegre
     """Degree of stability ``δ = -max Re λ`` of a numeric polynomial (Bulgakov (1954), §8.22).
 
     Roots by mpmath ``polyroots`` with extra precision; raises ConvergenceError when ``tol`` is not reached.
+
+    Parameters
+    ----------
+    coefficients : sequence or sympy.Poly
+        Coefficients ``k0, ..., ks`` highest power first; real numbers (no symbols), ``k0 != 0``, at least two.
+    tol : float, optional
+        Largest acceptable error bound of the roots (> 0); a larger error raises ConvergenceError.
+
+    Returns
+    -------
+    StabilityDegree
 
     Examples
     --------
@@ -149,7 +191,17 @@ def stability_degree(coefficients: Any, *, tol: float = 1e-12) -> StabilityDegre
 
 @dataclass(frozen=True)
 class CubicOptimum(SymPyPrintable):
-    """Result of :func:`max_stability_degree_cubic`: the best degree of stability and where it is attained."""
+    """Result of :func:`max_stability_degree_cubic`: the best degree of stability and where it is attained.
+
+    Attributes
+    ----------
+    degree : float
+        The largest degree of stability ``δ*``.
+    coefficients : tuple of float
+        ``(k1, k2, k3) = (3δ*k0, 3δ*²k0, δ*³k0)``, the coefficients of the optimal triple root ``-δ*``.
+    binding : {"k1", "k2", "k3"}
+        The coefficient whose bound limits ``δ*``.
+    """
 
     degree: float
     coefficients: tuple
@@ -167,6 +219,18 @@ def max_stability_degree_cubic(
 
     The optimum is the triple root ``-δ`` at ``L = (3δk0, 3δ²k0, δ³k0)``, with ``δ* = min(k1*/(3k0),
     sqrt(k2*/(3k0)), (k3*/k0)^(1/3))`` over the bounds given.
+
+    Parameters
+    ----------
+    k0 : float
+        Leading coefficient ``k0``; must be positive.
+    k1_max, k2_max, k3_max : float, optional
+        Upper bounds ``k1*, k2*, k3*`` on the other coefficients; each given bound must be positive, and at least
+        one must be given.
+
+    Returns
+    -------
+    CubicOptimum
 
     Examples
     --------

@@ -94,7 +94,18 @@ class DPartition(SymPyPrintable):
         return sp.Symbol("omega", real=True)
 
     def curve(self, omega: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(μ, ν, Δ)`` at the given frequencies (NaN where ``Δ = 0``)."""
+        """``(μ, ν, Δ)`` at the given frequencies (NaN where ``Δ = 0``).
+
+        Parameters
+        ----------
+        omega : float or array_like
+            Frequencies ``ω`` (the boundary point is ``λ = ε + iω``); real numbers, any shape.
+
+        Returns
+        -------
+        mu, nu, Delta : ndarray
+            Same shape as ``omega``.
+        """
         w = np.asarray(omega, dtype=float)
         f = sp.lambdify(self.omega, (self.mu, self.nu, self.Delta), "numpy")
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -102,7 +113,19 @@ class DPartition(SymPyPrintable):
         return mu, nu, d
 
     def roots_right(self, mu: float, nu: float = 0.0) -> int:
-        """Number of roots with ``Re λ > ε`` at the parameter point (numpy.roots): the region label ``C_ε(j)``."""
+        """Number of roots with ``Re λ > ε`` at the parameter point (numpy.roots): the region label ``C_ε(j)``.
+
+        Parameters
+        ----------
+        mu : float
+            Value of the first parameter (``Re μ`` for one complex parameter); a finite number.
+        nu : float, optional
+            Value of the second parameter (``Im μ`` for one complex parameter); a finite number (default 0).
+
+        Returns
+        -------
+        int
+        """
         deg = max(sp.degree(e, self.var) if e != 0 else 0 for e in (self.P, self.Q, self.R))
         c = _coeffs(self.P, self.var, deg) * mu + _coeffs(self.Q, self.var, deg) * nu + _coeffs(self.R, self.var, deg)
         nz = np.flatnonzero(np.abs(c) > 0)
@@ -112,7 +135,17 @@ class DPartition(SymPyPrintable):
         return int(np.sum(np.roots(c).real > self.epsilon)) if c.size > 1 else 0
 
     def shaded_normal(self, omega: float) -> tuple[np.ndarray, np.ndarray]:
-        """Point of ``T_ε`` at ``ω`` and the unit normal pointing to its shaded side (the rule of §8.25)."""
+        """Point of ``T_ε`` at ``ω`` and the unit normal pointing to its shaded side (the rule of §8.25).
+
+        Parameters
+        ----------
+        omega : float
+            Frequency ``ω`` of the boundary point; a finite number where ``Δ(ω) != 0`` and the curve is regular.
+
+        Returns
+        -------
+        point, normal : ndarray, shape (2,)
+        """
         h = 1e-6 * max(1.0, abs(omega))
         mu, nu, d = self.curve(np.array([omega - h, omega, omega + h]))
         tangent = np.array([mu[2] - mu[0], nu[2] - nu[0]])
@@ -130,7 +163,25 @@ class DPartition(SymPyPrintable):
         return f"$${sp.latex(self)}$$"
 
     def plot(self, *, ax=None, xlim=(-5, 5), ylim=(-5, 5), n_omega: int = 4001, grid: int = 60, hatch_every: int = 80):
-        """Boundary ``T_ε`` with its shading ticks, singular lines and region labels ``C_ε(j)`` from root counts."""
+        """Boundary ``T_ε`` with its shading ticks, singular lines and region labels ``C_ε(j)`` from root counts.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        xlim, ylim : pair of float, optional
+            Range ``(low, high)`` of the first and second parameter shown, ``low < high`` (default (-5, 5)).
+        n_omega : int, optional
+            Number of frequencies sampled along the boundary (an integer >= 3; ``ω = tan θ`` with ``θ`` uniform).
+        grid : int, optional
+            Number of grid points per axis at which the roots are counted for the region labels (an integer >= 2).
+        hatch_every : int, optional
+            A shading tick every ``hatch_every`` boundary samples (an integer >= 1).
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -177,7 +228,7 @@ def d_partition(F: Any, var: sp.Symbol, params: Any, *, epsilon: Any = 0) -> DPa
     F : sympy.Expr
         Characteristic polynomial in ``var``, affine in the parameters (numbers otherwise).
     var : sympy.Symbol
-        The root variable ``λ``.
+        The root variable ``λ``; must be a SymPy Symbol.
     params : Symbol or pair of Symbols
         Two real parameters ``(μ, ν)``, or one parameter ``μ`` treated as complex (the plane of ``Re μ, Im μ``).
     epsilon : number
@@ -246,6 +297,15 @@ class DiscriminantCurve(SymPyPrintable):
     """Result of :func:`discriminant_curve`: ``μ(e) = Γμ/Γ``, ``ν(e) = Γν/Γ`` (8.177)–(8.179), a double root ``e``.
 
     Crossing it changes the number of complex pairs by one; the aperiodic-stability region is ``E(0) ∩ C_0(0)``.
+
+    Attributes
+    ----------
+    mu, nu : sympy.Expr
+        The curve ``μ(e) = Γμ/Γ``, ``ν(e) = Γν/Γ`` as functions of the double root ``e``.
+    Gamma : sympy.Expr
+        The determinant ``Γ(e) = P(e) Q'(e) - P'(e) Q(e)``.
+    e : sympy.Symbol
+        The double root ``e`` (real), the curve's parameter.
     """
 
     mu: sp.Expr
@@ -254,6 +314,18 @@ class DiscriminantCurve(SymPyPrintable):
     e: sp.Symbol
 
     def curve(self, e: Any) -> tuple[np.ndarray, np.ndarray]:
+        """``(μ, ν)`` at the given double roots (NaN where ``Γ = 0``).
+
+        Parameters
+        ----------
+        e : float or array_like
+            Values of the double root ``e``; real numbers, any shape.
+
+        Returns
+        -------
+        mu, nu : ndarray
+            Same shape as ``e``.
+        """
         f = sp.lambdify(self.e, (self.mu, self.nu), "numpy")
         ev = np.asarray(e, dtype=float)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -264,7 +336,21 @@ class DiscriminantCurve(SymPyPrintable):
         return f"DiscriminantCurve(mu={self.mu}, nu={self.nu})"
 
     def plot(self, *, ax=None, e_range=(-10.0, 10.0), n: int = 4001):
-        """The discriminant curve (dotted); returns the Axes."""
+        """The discriminant curve (dotted); returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        e_range : pair of float, optional
+            Range ``(low, high)`` of the double root ``e`` traced (default (-10, 10)).
+        n : int, optional
+            Number of points along the curve (an integer >= 2; default 4001).
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -277,6 +363,25 @@ class DiscriminantCurve(SymPyPrintable):
 @validated
 def discriminant_curve(F: Any, var: sp.Symbol, params: Any) -> DiscriminantCurve:
     """Curve of double real roots ``λ = e`` (Bulgakov (1954), §8.27, eqs. (8.177)–(8.179)), real coefficients.
+
+    Parameters
+    ----------
+    F : sympy.Expr
+        Characteristic polynomial in ``var`` with real coefficients, affine in the two parameters (numbers
+        otherwise).
+    var : sympy.Symbol
+        The root variable ``λ``; must be a SymPy Symbol.
+    params : pair of Symbols
+        The two real parameters ``(μ, ν)``; exactly two Symbols.
+
+    Returns
+    -------
+    DiscriminantCurve
+
+    Raises
+    ------
+    ParameterError
+        When a parameter enters nonlinearly, other symbols remain or ``P`` and ``Q`` are proportional.
 
     Examples
     --------

@@ -23,6 +23,17 @@ __all__ = ["chain_transmittance", "closed_loop_characteristic", "return_differen
 def chain_transmittance(*links: Any) -> sp.Expr | sp.Matrix:
     """Transmittance of links in cascade, ``X_n … X_2 X_1`` (signal flows from ``X_1``) (§10.1).
 
+    Parameters
+    ----------
+    links : sympy.Expr or sympy.Matrix
+        The transmittances ``X_1, ..., X_n`` in the order the signal flows; at least one, scalar expressions or
+        matrices of compatible sizes (``X_(j+1)`` has as many columns as ``X_j`` has rows).
+
+    Returns
+    -------
+    sympy.Expr or sympy.Matrix
+        The simplified product.
+
     Examples
     --------
     >>> import sympy as sp
@@ -49,6 +60,18 @@ def chain_transmittance(*links: Any) -> sp.Expr | sp.Matrix:
 @validated
 def return_difference(X: Any, *, expand_minors: bool = False) -> sp.Expr:
     """``det(E + X)`` of a square transmittance matrix (10.16); with ``expand_minors`` the sum (10.17).
+
+    Parameters
+    ----------
+    X : sympy.Matrix
+        Open-chain transmittance matrix; must be a square SymPy matrix.
+    expand_minors : bool, optional
+        Compute ``1 + Σ X_ii + Σ (2x2 principal minors) + ... + det X`` (10.17) instead of the determinant
+        (default False; the result is the same).
+
+    Returns
+    -------
+    sympy.Expr
 
     Examples
     --------
@@ -77,6 +100,18 @@ def return_difference(X: Any, *, expand_minors: bool = False) -> sp.Expr:
 @validated
 def closed_loop_characteristic(open_loop: Any, var: sp.Symbol) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """``(Δ0, M, Δ = Δ0 + M)`` of a scalar loop ``K = M/Δ0`` closed by negative feedback (10.19)–(10.20).
+
+    Parameters
+    ----------
+    open_loop : sympy.Expr
+        Open-loop transmittance ``K``: a proper rational function of ``var`` (``deg M <= deg Δ0``).
+    var : sympy.Symbol
+        The operator or Laplace variable ``D``; must be a SymPy Symbol.
+
+    Returns
+    -------
+    tuple of sympy.Expr
+        ``(Δ0, M, Δ)`` with ``Δ0`` made monic.
 
     Examples
     --------

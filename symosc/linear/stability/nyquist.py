@@ -80,7 +80,15 @@ class NyquistResult(SymPyPrintable):
         )
 
     def plot(self, *, ax=None, clip: float = 1e3):
-        """Nyquist plot ``K(D)`` along the contour with the critical point ``-1``; returns the Axes."""
+        """Nyquist plot ``K(D)`` along the contour with the critical point ``-1``; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        clip : float, optional
+            Largest modulus drawn (positive): values with ``|K| > clip`` are drawn at radius ``clip``.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -146,6 +154,9 @@ def nyquist(
         ``None`` or ``0`` forbids indentation and raises if a pole lies on the contour.
     n_points : int
         Initial samples per contour piece (refined adaptively until each step turns by < 0.2 rad).
+    max_refinements : int
+        Largest number of adaptive refinement rounds (an integer >= 1); ConvergenceError when the plot is still
+        unresolved.
 
     Returns
     -------
@@ -285,6 +296,17 @@ def stability_margins(numerator: Any, denominator: Any) -> StabilityMargins:
 
     Phase crossovers solve ``Im[M(iω) conj Δ0(iω)] = 0`` with ``Re K < 0``; gain crossovers solve
     ``|M(iω)|² = |Δ0(iω)|²``.  The smallest margins are returned.
+
+    Parameters
+    ----------
+    numerator : sequence or sympy.Poly
+        Coefficients of ``M`` (highest power first); finite numbers, not all zero.
+    denominator : sequence or sympy.Poly
+        Coefficients of ``Δ0`` (highest power first); finite numbers, not all zero.
+
+    Returns
+    -------
+    StabilityMargins
 
     Examples
     --------

@@ -30,6 +30,7 @@ class StabilityRegion(SymPyPrintable):
     coefficients : tuple
         ``k0 ... ks`` as expressions in the parameters.
     params : tuple of Symbol
+        The parameter symbols spanning the space.
     conditions : tuple
         Expressions that must all be positive (Hurwitz, with ``ks`` for the last minor).
     zero_root_boundary : sympy.Expr
@@ -49,7 +50,14 @@ class StabilityRegion(SymPyPrintable):
         return sp.And(*[c > 0 for c in self.conditions])
 
     def contains(self, values: dict) -> bool:
-        """Hurwitz verdict at a parameter point (exact on the given numbers)."""
+        """Hurwitz verdict at a parameter point (exact on the given numbers).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to number
+            Value of every parameter (keys are the symbols or their names); a missing parameter raises
+            ParameterError.
+        """
         vals = {sp.Symbol(k) if isinstance(k, str) else k: v for k, v in values.items()}
         missing = [p for p in self.params if p not in vals]
         if missing:
@@ -66,7 +74,19 @@ class StabilityRegion(SymPyPrintable):
         return f"$${sp.latex(self)}$$"
 
     def plot(self, *, ax=None, xlim=(-1.0, 5.0), ylim=(-1.0, 5.0), grid: int = 200):
-        """Shade the region in the plane of two parameters; draw ``T1`` and ``Δ_(s-1) = 0``; returns the Axes."""
+        """Shade the region in the plane of two parameters; draw ``T1`` and ``Δ_(s-1) = 0``; returns the Axes.
+
+        Needs exactly two parameters.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        xlim, ylim : pair of float, optional
+            Range ``(low, high)`` of the first and second parameter shown, ``low < high`` (default (-1, 5)).
+        grid : int, optional
+            Number of grid points per axis (an integer >= 2; default 200).
+        """
         from .._util import figure_axes
 
         if len(self.params) != 2:
@@ -93,6 +113,18 @@ class StabilityRegion(SymPyPrintable):
 @validated
 def stability_region(coefficients: Any, params: Any) -> StabilityRegion:
     """Stability region of ``k0 λ^s + … + ks`` in the space of the parameters (Bulgakov (1954), §8.19).
+
+    Parameters
+    ----------
+    coefficients : sequence or sympy.Poly
+        Coefficients ``k0, ..., ks`` highest power first, expressions in ``params`` only (``k0 != 0``, at least
+        two).
+    params : Symbol or sequence of Symbols
+        The parameters spanning the space; every free symbol of the coefficients must be among them.
+
+    Returns
+    -------
+    StabilityRegion
 
     Examples
     --------
@@ -127,6 +159,20 @@ def robust_boundary(boundary: Any, params: Any, unreliable: sp.Symbol) -> tuple:
     The boundary ``F(x, y, z) = 0`` moves with the unreliable ``z``; regions of *reliable* stability (or instability)
     are bounded by its envelope ``F = ∂F/∂z = 0``, found here as the resultant in ``z`` (factors free of the
     parameters and monomial factors dropped).
+
+    Parameters
+    ----------
+    boundary : sympy.Expr
+        The boundary ``F(x, y, z)`` (the curve is ``F = 0``); must be polynomial in ``unreliable`` and depend on it.
+    params : sequence of Symbols
+        The reliable parameters (the plane of the diagram); factors free of them are dropped.
+    unreliable : sympy.Symbol
+        The unreliable parameter ``z`` the envelope is taken over; must be a SymPy Symbol.
+
+    Returns
+    -------
+    tuple of sympy.Expr
+        The factors of the envelope (each ``= 0`` is a branch).
 
     Examples
     --------

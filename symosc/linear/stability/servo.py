@@ -39,11 +39,13 @@ class ServoStabilityLines(SymPyPrintable):
     Attributes
     ----------
     z, delta : float
+        The constant term ``z`` and the degree of stability ``δ``.
     line : (ndarray, ndarray)
         The real-root line from ``A`` to ``B``.
     hyperbola : (ndarray, ndarray)
         The complex-pair hyperbola from ``A`` to ``B``.
     corner_a, corner_b : (float, float)
+        The corners ``A = (3δ, 2δ² + z/δ)`` and ``B = (2δ + z/δ², δ² + 2z/δ)`` where line and hyperbola meet.
     """
 
     z: float
@@ -60,7 +62,13 @@ class ServoStabilityLines(SymPyPrintable):
         )
 
     def plot(self, *, ax=None):
-        """Draw the boundary of ``C_δ`` and its corners; returns the Axes."""
+        """Draw the boundary of ``C_δ`` and its corners; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         from .._util import figure_axes
 
         ax = figure_axes(ax)
@@ -76,6 +84,19 @@ class ServoStabilityLines(SymPyPrintable):
 @validated
 def servo_stability_lines(z: float, delta: float, *, n_points: int = 100) -> ServoStabilityLines:
     """Boundary of the region of degree of stability ``≥ δ`` of ``λ³ + k1λ² + k2λ + z`` (Bulgakov (1954), §8.24).
+
+    Parameters
+    ----------
+    z : float
+        Constant term ``z`` of the characteristic polynomial; must be positive and finite.
+    delta : float
+        Required degree of stability ``δ``; must be positive with ``δ³ <= z`` (else the region is empty).
+    n_points : int, optional
+        Number of points on each boundary curve (an integer >= 2; default 100).
+
+    Returns
+    -------
+    ServoStabilityLines
 
     Examples
     --------
@@ -108,6 +129,10 @@ class ServoOptimum(SymPyPrintable):
 
     Attributes
     ----------
+    z : float
+        The servo's constant term ``z``.
+    k : float
+        The servo's parameter ``k`` (in ``k2 = y z + k``).
     delta : float
         The largest degree of stability, ``z^{1/3}``.
     k1, k2 : float
@@ -128,6 +153,17 @@ class ServoOptimum(SymPyPrintable):
 @validated
 def servo_optimum(z: float, k: float = 0.0) -> ServoOptimum:
     """Best degree of stability of the servo ``λ³ + (xz + 1)λ² + (yz + k)λ + z`` (Bulgakov (1954), §8.24).
+
+    Parameters
+    ----------
+    z : float
+        Constant term ``z`` of the characteristic polynomial; must be positive and finite.
+    k : float, optional
+        The servo's parameter ``k`` in ``k2 = y z + k``; a finite number (default 0).
+
+    Returns
+    -------
+    ServoOptimum
 
     Examples
     --------
