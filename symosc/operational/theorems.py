@@ -260,10 +260,14 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
 
     Parameters
     ----------
-    image, tau, m
-        As in :func:`multiple_advance` (``tau > 0``).
+    image : Expr
+        ``X(p)``, as in :func:`multiple_advance`.
     p : Symbol
         The image variable.
+    tau : Expr
+        Step, ``tau > 0``.
+    m : int
+        Order of the difference, ``m >= 0`` (``m = 0`` returns ``X``).
     heads : sequence of Expr, optional
         ``[beta_0, ..., beta_{m-1}]``.
     original : tuple (x, t), optional
