@@ -251,9 +251,9 @@ def mathieu_series_value(
     Parameters
     ----------
     kind : {"a", "b"}
-        Which characteristic value.
+        Which characteristic value: ``"a"`` (``a_n``, even solutions) or ``"b"`` (``b_n``, odd solutions).
     n : int
-        Index.
+        Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
     q : float
         Point (any real; the series is a polynomial in q, valid for ``|q|`` below the radius of convergence).
     order : int, optional

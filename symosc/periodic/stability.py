@@ -527,10 +527,11 @@ def stability_region(
     Parameters
     ----------
     system : LagrangianSystem or LinearModel
-        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
+        Inverted system with a vertically vibrating pivot, such as
+        ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
     values : mapping
         Parameter values (keyed by Symbol or name) except the excitation amplitude and frequency.
-    method : str
+    method : {"modified-ince-strutt", "floquet", "otterbein", "acheson", "chelomei"}
         ``"modified-ince-strutt"`` (Gribkov & Khokhlov 2015: two Mathieu curves, exact within the linear
         model); ``"floquet"`` (monodromy matrix of the full coupled 2N-dimensional system, boundaries by root
         finding on the multipliers; slow reference); ``"otterbein"``, ``"acheson"``, ``"chelomei"`` (the
