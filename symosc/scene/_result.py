@@ -244,7 +244,7 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def markdown(self, figures: dict[str, str] | None = None) -> str:
-        """The report as Markdown.
+        """This scene's results as a Markdown document.
 
         Parameters
         ----------
@@ -274,7 +274,7 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def html(self, figures: dict[str, str] | None = None) -> str:
-        """The report as a standalone HTML page.
+        """This scene's results as a standalone HTML page.
 
         Parameters
         ----------
@@ -323,7 +323,7 @@ class SceneResult(SymPyPrintable):
         outdir : str or PathLike
             Output folder, created when missing; files of the same names in it are replaced.
         fmt : {"md", "html", "json"}
-            Format of the report: ``"md"`` writes ``report.md``, ``"html"`` writes ``report.html``, ``"json"``
+            Output format: ``"md"`` writes ``report.md``, ``"html"`` writes ``report.html``, ``"json"``
             writes no report (only ``results.json`` and the figures).
 
         Returns
