@@ -317,19 +317,6 @@ class SceneResult(SymPyPrintable):
 
         Everything is written to a temporary folder first and moved in at the end: a failure leaves nothing
         half-written.  Figures need matplotlib; without it the scene report says so and the rest is written.
-
-        Parameters
-        ----------
-        outdir : str or PathLike
-            Output folder, created when missing; files of the same names in it are replaced.
-        fmt : {"md", "html", "json"}
-            Output format: ``"md"`` writes ``report.md``, ``"html"`` writes ``report.html``, ``"json"``
-            writes no report (only ``results.json`` and the figures).
-
-        Returns
-        -------
-        list of Path
-            The files written, sorted by name.
         """
         outdir = Path(outdir)
         outdir.mkdir(parents=True, exist_ok=True)
