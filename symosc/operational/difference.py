@@ -50,6 +50,31 @@ def step_image(h, n: sp.Symbol = _n, gamma: sp.Symbol = _gamma) -> sp.Expr:
     ``(1 - 1/gamma) sum_{n>=0} h(n) gamma**(-n)`` (Bulgakov 2.104), summed in closed form by SymPy (valid for
     ``|gamma|`` beyond the radius of convergence).
 
+    Parameters
+    ----------
+    h : Expr
+        The values ``x_n = h(n)``: an expression in the index ``n`` whose z-transform SymPy sums in closed form.
+    n : Symbol
+        The integer index of the sequence (default: a nonnegative integer symbol ``n``).
+    gamma : Symbol
+        The image variable ``gamma = exp(p tau)`` (default ``Symbol("gamma")``).
+
+    Returns
+    -------
+    Expr
+        The image as a factored function of ``gamma``.
+
+    Raises
+    ------
+    ModelError
+        If a term of ``h`` has no closed-form z-transform.
+
+    See Also
+    --------
+    inverse_step_image
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> n, g, l = sp.symbols("n gamma lambda")
     >>> sp.factor(step_image(l**n, n, g))
@@ -74,6 +99,20 @@ def inverse_step_image(image, gamma: sp.Symbol = _gamma, n: sp.Symbol = _n) -> s
 
     Writes ``image = (gamma - 1) H(gamma)``, expands ``H`` in partial fractions and inverts term by term with
     ``(gamma - 1)/(gamma - l)**(m+1) <-> binomial(n, m) l**(n-m)`` (Bulgakov 2.117–2.118, §2.25).
+
+    Parameters
+    ----------
+    image : Expr
+        The image: a rational function of ``gamma`` with ``deg numerator <= deg denominator``.
+    gamma : Symbol
+        The image variable ``gamma = exp(p tau)`` (default ``Symbol("gamma")``).
+    n : Symbol
+        The integer index of the returned sequence (default: a nonnegative integer symbol ``n``).
+
+    Returns
+    -------
+    Expr
+        ``x_n`` as an expression in ``n``.
 
     Raises
     ------
@@ -126,8 +165,10 @@ class DifferenceSolution(SymPyPrintable):
     ----------
     response : Matrix
         ``y_n`` (may contain an unevaluated ``Sum``; :meth:`values` evaluates it for concrete ``n``).
-    free, impulse : Matrix
-        ``M_n`` and ``N_n``.
+    free : Matrix
+        ``M_n``, the response to the initial values (free motion).
+    impulse : Matrix
+        ``N_n``, the response to a unit input pulse (its entries convolve with the inputs).
     feedthrough : Matrix
         ``S(gamma)``, acting as ``S(T)``.
     delta : Expr
@@ -136,6 +177,8 @@ class DifferenceSolution(SymPyPrintable):
         When ``deg delta`` is below the number of initial values (leading matrix singular), the relations that the
         initial values ``y1_0, y1_1, ...`` (``y_k(j)``) must satisfy, solved for the highest ones; the solution
         satisfies them whatever is given (as in §2.21b for differential systems).
+    n : Symbol
+        The integer index of the sequences.
     initial_values : dict
         The given values of those symbols (substituted into ``response`` and ``free``).
     """
@@ -156,7 +199,18 @@ class DifferenceSolution(SymPyPrintable):
         return f"$$y_n = {sp.latex(self.response)}$$"
 
     def values(self, count: int) -> list[sp.Matrix]:
-        """Exact values ``y_k`` for ``k < count`` (needs numeric initial values)."""
+        """Exact values ``y_k`` for ``k < count`` (needs numeric initial values).
+
+        Parameters
+        ----------
+        count : int
+            Number of values wanted (>= 0): ``y_0, ..., y_(count-1)``.
+
+        Returns
+        -------
+        list of Matrix
+            The column vectors ``y_k``, simplified.
+        """
         return [self.response.subs(self.n, k).doit().applyfunc(sp.simplify) for k in range(count)]
 
 
@@ -173,6 +227,15 @@ def solve_difference(f, e, inputs=None, initial=None, *, T: sp.Symbol | None = N
     initial : sequence of sequences, optional
         ``initial[k] = [y_k(0), y_k(1), ..., y_k(m_k - 1)]`` (``m_k`` the highest advance of ``y_k``); default:
         symbols ``y1_0, y1_1, ...``.
+    T : Symbol, optional
+        The advance operator's symbol in ``f`` and ``e`` (default ``Symbol("T")``).
+    n : Symbol
+        The integer index of the sequences (default: a nonnegative integer symbol ``n``); ``inputs`` are
+        expressions in it.
+
+    Returns
+    -------
+    DifferenceSolution
 
     Examples
     --------
@@ -284,8 +347,16 @@ class IndefiniteSum(SymPyPrintable):
         ``A(t)``.
     piece : Expr
         ``a(t)``, the values on ``(0, tau)``.
-    x, t, tau, p
-        The data.
+    x : Expr
+        The given difference ``x(t)``.
+    t : Symbol
+        The independent variable.
+    tau : Expr
+        The step, ``tau > 0``.
+    p : Symbol
+        The variable of the images.
+    given_image : Expr or None
+        The Carson image of ``x`` when it was given to :func:`indefinite_sum`; None to compute it lazily.
     """
 
     x: sp.Expr
@@ -368,6 +439,7 @@ def indefinite_sum(x, t: sp.Symbol, tau, piece=None, *, p: sp.Symbol | None = No
     x : Expr
         The given difference, an expression in ``t``.
     t : Symbol
+        The independent variable; it must be a SymPy Symbol.
     tau : Expr
         Step, ``tau > 0``.
     piece : Expr, optional

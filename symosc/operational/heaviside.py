@@ -180,6 +180,32 @@ def residue_inverse(image, p: sp.Symbol, t: sp.Symbol = _t, *, real: bool = True
     ``exp(a*p)`` with ``a <= 0`` is *not* allowed: Jordan's lemma fails for ``t`` below the delay; use
     :func:`~symosc.operational.delay` instead).  For rational images this equals :func:`heaviside_expand`.
 
+    Parameters
+    ----------
+    image : Expr or Matrix
+        Carson image ``A(p)/B(p)`` whose denominator must be a polynomial in ``p`` (a Matrix is inverted entry by
+        entry).
+    p : Symbol
+        The image variable.
+    t : Symbol
+        Time, the variable of the original (default ``symosc.t``).
+    real : bool
+        Combine conjugate complex poles into ``exp(a t) (A cos(b t) + B sin(b t))`` (Bulgakov 2.89–2.91).
+
+    Returns
+    -------
+    Expr or Matrix
+        The original for ``t > 0``.
+
+    Raises
+    ------
+    ModelError
+        If the denominator is not a polynomial in ``p`` or the image has exponential factors ``exp(c p)``.
+
+    See Also
+    --------
+    heaviside_expand, invert_numeric
+
     Examples
     --------
     >>> import sympy as sp
@@ -220,6 +246,31 @@ def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, 
     Returns the partial sum ``a0 + a1 t + ... + a_{order-1} t**(order-1)/(order-1)!``, an entire-function series in
     ``t``.  With ``tol`` (and ``t`` a number) the call raises :class:`ConvergenceError` when the last retained term
     exceeds ``tol``.
+
+    Parameters
+    ----------
+    image : Expr
+        Carson image, analytic at ``p = oo`` (a series in ``1/p`` without positive powers of ``p``).
+    p : Symbol
+        The image variable.
+    t : Symbol or number
+        Time, the variable of the original (default ``symosc.t``); a number gives the numeric partial sum.
+    order : int
+        Number of terms kept (>= 1).
+    tol : float, optional
+        Largest acceptable magnitude (> 0) of the last term kept; checked only when that term is a number.
+
+    Returns
+    -------
+    Expr
+        The partial sum, a polynomial of degree ``order - 1`` in ``t``.
+
+    Raises
+    ------
+    ModelError
+        If the image grows at ``p -> oo``.
+    ConvergenceError
+        If the last term exceeds ``tol``.
 
     Examples
     --------

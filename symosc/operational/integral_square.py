@@ -59,16 +59,28 @@ def pairwise_root_sum_product(polynomial, p: sp.Symbol) -> sp.Expr:
     ``(s-1) x (s-1)`` minor of the Hurwitz matrix; it vanishes exactly when two roots are symmetric about the
     imaginary axis (a stability boundary), which is why it is the denominator of the integral square estimates.
 
+    Parameters
+    ----------
+    polynomial : Expr or Poly
+        Polynomial ``A0 p**s + ... + As`` in ``p`` of degree s >= 1 (numeric or symbolic coefficients).
+    p : Symbol
+        The polynomial's variable.
+
+    Returns
+    -------
+    Expr
+        The product, factored (1 for degree 1).
+
+    See Also
+    --------
+    symosc.linear.hurwitz_matrix, integral_square
+
     Examples
     --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> pairwise_root_sum_product((p + 1) * (p + 2) * (p + 3), p)    # roots -1, -2, -3: (-3) * (-4) * (-5)
     -60
-
-    See Also
-    --------
-    symosc.linear.hurwitz_matrix, integral_square
     """
     poly = sp.Poly(polynomial, p)
     s = poly.degree()
@@ -172,7 +184,9 @@ def integral_square(numerator, denominator, p: sp.Symbol, *, image: str = "lapla
         Polynomials in ``p``.  By default ``numerator/denominator`` is the **Laplace** image ``X(p)/p`` (the
         book's ``U/H``); with ``image="carson"`` it is the Carson image ``X(p)``.
     p : Symbol
+        The image variable.
     image : {"laplace", "carson"}
+        What ``numerator/denominator`` is: the Laplace image ``X(p)/p`` or the Carson image ``X(p)``.
     method : {"auto", "hurwitz", "closed", "residues"}
         ``"hurwitz"`` (default of ``"auto"``): the Hurwitz-determinant formula, any order; ``"closed"``: the
         book's ``I1..I4``; ``"residues"``: sum of residues at the roots of ``H``.
@@ -240,6 +254,33 @@ def cross_integral(
 
     Both images are put over a common denominator ``H`` and the even polynomial
     ``G = (U_x(-p) U_y(p) + U_x(p) U_y(-p))/2`` replaces ``U(-p) U(p)`` in the formulas.
+
+    Parameters
+    ----------
+    numerator_x : Expr
+        Numerator of the image of ``x``, a polynomial in ``p``.
+    denominator_x : Expr
+        Denominator of the image of ``x``, a Hurwitz polynomial in ``p`` (roots with ``Re p < 0``).
+    numerator_y : Expr
+        Numerator of the image of ``y``, a polynomial in ``p``.
+    denominator_y : Expr
+        Denominator of the image of ``y``, a Hurwitz polynomial in ``p`` (roots with ``Re p < 0``).
+    p : Symbol
+        The image variable.
+    image : {"laplace", "carson"}
+        What each ratio is: the Laplace image ``X(p)/p`` (each ratio strictly proper) or the Carson image ``X(p)``.
+    method : {"auto", "hurwitz", "closed", "residues"}
+        Formula, as for :func:`integral_square`: Hurwitz determinants (``"auto"``), the closed forms ``I1..I4``
+        or residues.
+
+    Returns
+    -------
+    Expr
+        The integral (a Float for floating-point input).
+
+    See Also
+    --------
+    integral_square
 
     Examples
     --------

@@ -68,6 +68,10 @@ class OperationalSolution(SymPyPrintable):
         ``y1_0, y1_1, ...`` (``y_k^(j)(0)``), solved for the highest derivatives.
     initial_values : dict
         The numbers given for those symbols (substituted into ``response`` and ``free``).
+    p : Symbol
+        The image variable of ``feedthrough``, ``transfer``, ``delta`` and ``adjugate``.
+    t : Symbol
+        Time, the variable of ``response``, ``free``, ``impulse`` and ``step``.
     """
 
     response: sp.Matrix
@@ -101,7 +105,18 @@ class OperationalSolution(SymPyPrintable):
         return self.degree == sum(self.orders)
 
     def is_consistent(self, values: dict | None = None) -> bool:
-        """True if the given initial data (plus ``values``, keyed by symbol or name) satisfy every constraint."""
+        """True if the given initial data (plus ``values``, keyed by symbol or name) satisfy every constraint.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or name to number, optional
+            Values of initial-value symbols (``y1_0``, ...) or parameters, added to the given initial data.
+
+        Returns
+        -------
+        bool
+            True when every relation in :attr:`constraints` holds (always True in normal form).
+        """
         sub = dict(self.initial_values)
         for k, v in (values or {}).items():
             sub[k if isinstance(k, sp.Basic) else sp.Symbol(str(k))] = v
@@ -109,7 +124,22 @@ class OperationalSolution(SymPyPrintable):
 
     @plot_method
     def plot(self, values: dict | None = None, t_max: float = 10.0, *, ax: Any = None) -> Any:
-        """Plot the response components for numeric ``values`` of the symbols in it."""
+        """Plot the response components for numeric ``values`` of the symbols in it.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or name to number, optional
+            Values of every symbol in ``response`` other than ``t`` (initial values, parameters).
+        t_max : float
+            End of the plotted time interval ``(0, t_max]``; a positive number.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import numpy as np
 
         from .. import numeric

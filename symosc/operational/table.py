@@ -30,7 +30,24 @@ _tau0 = sp.Symbol("tau0", positive=True)
 
 @dataclass(frozen=True)
 class TableEntry(SymPyPrintable):
-    """One row of the table of images: ``original(t) <-> image(p)`` (Carson: image = p * Laplace[original])."""
+    """One row of the table of images: ``original(t) <-> image(p)`` (Carson: image = p * Laplace[original]).
+
+    Attributes
+    ----------
+    name : str
+        Short name of the pair, such as ``"damped sine"``.
+    equation : str
+        Equation number in Bulgakov (1954), ch. 2, such as ``"(2.55)"``.
+    original : Expr
+        The original ``x(t)``, valid for ``t > 0`` (in ``symosc.t``).
+    image : Expr
+        Its Carson image ``X(p)``.
+    params : tuple of Symbol
+        The parameters of the pair (``m``, ``lambda``, ``omega``, ``tau``, ...), with the assumptions the book
+        makes (positive, real, non-negative integer).
+    note : str
+        Conditions or remarks (empty when none).
+    """
 
     name: str
     equation: str
@@ -46,7 +63,18 @@ class TableEntry(SymPyPrintable):
         return f"$${sp.latex(self.original)} \\;\\risingdotseq\\; {sp.latex(self.image)}$$"
 
     def substitute(self, values: dict) -> tuple[sp.Expr, sp.Expr]:
-        """``(original, image)`` with parameter values substituted (keys: Symbol or name)."""
+        """``(original, image)`` with parameter values substituted (keys: Symbol or name).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or name to number or Expr
+            Values of some or all of :attr:`params` (keys are the symbols or their names; other keys are ignored).
+
+        Returns
+        -------
+        (original, image) : tuple of Expr
+            The pair with the values substituted.
+        """
         sub = {}
         for k, v in values.items():
             name = k.name if isinstance(k, sp.Symbol) else str(k)
@@ -169,6 +197,18 @@ CARSON_TABLE: tuple[TableEntry, ...] = (
 def table_entry(name: str) -> TableEntry:
     """The entry of :data:`CARSON_TABLE` called ``name`` (or with equation number ``name``, e.g. ``"(2.52)"``).
 
+    Parameters
+    ----------
+    name : str
+        Name of an entry of CARSON_TABLE (such as ``"sine"`` or ``"damped cosine"``) or its equation number
+        (such as ``"(2.52)"``); it must be one of them.
+
+    Returns
+    -------
+    TableEntry
+
+    Examples
+    --------
     >>> table_entry("sine").image
     omega*p/(omega**2 + p**2)
     """
@@ -193,6 +233,21 @@ def carson_by_table(x, t: sp.Symbol = _t, p: sp.Symbol = _p):
     ``x(t - tau) 1(t - tau) <-> exp(-p tau) X(p)``, and the rational part is put over a common denominator.
 
     Raises ``_Unsupported`` (private) for anything else; :func:`symosc.operational.carson` then asks SymPy.
+
+    Parameters
+    ----------
+    x : Expr or Matrix
+        Original: a quasi-polynomial in ``t``, possibly with delayed steps ``Heaviside(t - tau)``, ``tau >= 0`` (a
+        Matrix is transformed entry by entry).
+    t : Symbol
+        Time, the variable of ``x`` (default ``symosc.t``).
+    p : Symbol
+        The image variable (default ``Symbol("p")``).
+
+    Returns
+    -------
+    Expr or Matrix
+        The Carson image.
 
     Examples
     --------
@@ -278,6 +333,20 @@ def _clear_imaginary_unit(result, p):
 def carson_matrix_exp(a, p: sp.Symbol = _p):
     """Carson image of the matrix exponential, ``exp(a t) <-> p (E p - a)**-1`` (Bulgakov 2.53).
 
+    Parameters
+    ----------
+    a : Matrix or nested list
+        Square constant matrix (exact or symbolic entries).
+    p : Symbol
+        The image variable (default ``Symbol("p")``).
+
+    Returns
+    -------
+    Matrix
+        ``p (E p - a)**-1`` with each entry factored in ``p``.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> carson_matrix_exp(sp.Matrix([[0, 1], [-1, 0]]), p).tolist()

@@ -43,6 +43,17 @@ __all__ = [
 def shift(image, p: sp.Symbol, lam) -> sp.Expr:
     """Damping theorem (2.38): ``p/(p + lam) X(p + lam) <-> exp(-lam t) x(t)``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    lam : number or Expr
+        The damping exponent λ of ``exp(-λ t)`` (any sign; complex for a modulation ``exp(-i ω t)``).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, a = sp.symbols("p a")
     >>> sp.factor(shift(1 / p, p, a))     # t  ->  t exp(-a t)
@@ -55,6 +66,17 @@ def shift(image, p: sp.Symbol, lam) -> sp.Expr:
 def delay(image, p: sp.Symbol, tau) -> sp.Expr:
     """Delay theorem (2.26a): ``exp(-p tau) X(p) <-> x(t - tau) 1(t - tau)`` for ``tau >= 0``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    tau : number or Expr
+        The delay, which must be >= 0 (a symbol not known to be negative is accepted).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> delay(1 / p, p, 2)
@@ -73,6 +95,19 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     ``head`` is ``alpha(p) = p Integral(x(t) exp(-p t), (t, 0, tau))``, the Carson image of the piece of ``x`` on
     ``(0, tau)`` that the advance removes; pass it as an expression in ``p``, or pass ``(x, t)`` to have it integrated.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    tau : number or Expr
+        The advance, which must be >= 0.
+    head : Expr or tuple (x, t)
+        ``alpha(p)`` as an expression in ``p``, or the original ``x`` with its time symbol ``t`` (then integrated).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, t = sp.symbols("p t", positive=True)
     >>> sp.simplify(advance(p / (p + 1), p, 1, (sp.exp(-t), t)))    # exp(-(t+1))
@@ -90,6 +125,17 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
 def finite_sum(image, p: sp.Symbol, tau) -> sp.Expr:
     """Image of ``sum_{j=1}^{floor(t/tau)} x(t - j tau)`` (2.31): ``X(p)/(exp(p tau) - 1)``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    tau : number or Expr
+        The step, which must be > 0.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, tau = sp.symbols("p tau", positive=True)
     >>> finite_sum(sp.Integer(1), p, tau)       # floor(t/tau), (2.62)
@@ -108,6 +154,19 @@ def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
     ``head`` is ``alpha(p) = p Integral(x exp(-p t), (t, 0, tau))`` or ``(x, t)`` to have it integrated (as in
     :func:`advance`).
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    tau : number or Expr
+        The step, which must be > 0.
+    head : Expr or tuple (x, t)
+        ``alpha(p)`` as an expression in ``p``, or the original ``x`` with its time symbol ``t`` (then integrated).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, t = sp.symbols("p t", positive=True)
     >>> sp.simplify(finite_difference(1 / p, p, 1, (t, t)))     # Delta t = 1
@@ -164,6 +223,8 @@ def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = 
     ----------
     image : Expr
         ``X(p)``.
+    p : Symbol
+        The image variable.
     tau : Expr
         Step, ``tau >= 0``.
     m : int
@@ -199,8 +260,14 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
 
     Parameters
     ----------
-    image, tau, m
-        As in :func:`multiple_advance` (``tau > 0``).
+    image : Expr
+        ``X(p)``, as in :func:`multiple_advance`.
+    p : Symbol
+        The image variable.
+    tau : Expr
+        Step, ``tau > 0``.
+    m : int
+        Order of the difference, ``m >= 0`` (``m = 0`` returns ``X``).
     heads : sequence of Expr, optional
         ``[beta_0, ..., beta_{m-1}]``.
     original : tuple (x, t), optional
@@ -236,6 +303,17 @@ def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
     ``Re p`` beyond the abscissa of convergence, uniformly in ``s``); this is what lets operational calculus treat
     partial differential equations.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p, s)`` depending on the parameter ``s``.
+    s : Symbol
+        The parameter, independent of ``t`` and ``p``; it must be a SymPy Symbol.
+    n : int
+        Order of the derivative, an integer >= 0 (``0`` returns the image unchanged).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, s = sp.symbols("p s")
     >>> sp.factor(differentiate_parameter(p / (p - s), s))      # d/ds exp(s t) = t exp(s t)
@@ -253,6 +331,19 @@ def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
     """Integration with respect to a parameter (2.41): ``Integral(X(p, s), (s, s0, s1)) <-> Integral(x(t, s), (s, s0,
     s1))``; ``s1`` defaults to ``s`` itself (the book's variable upper limit).
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p, s)`` depending on the parameter ``s``.
+    s : Symbol
+        The parameter of integration, independent of ``t`` and ``p``; it must be a SymPy Symbol.
+    s0 : number or Expr
+        Lower limit of the integral.
+    s1 : number or Expr, optional
+        Upper limit of the integral; ``s`` itself (a variable upper limit) when omitted.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p, s, u = sp.symbols("p s u", positive=True)
     >>> integrate_parameter(p / (p + u), u, 0, s)     # Integral(exp(-u t), (u, 0, s)) = (1 - exp(-s t))/t
@@ -271,6 +362,17 @@ def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
 def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     """Similarity theorem (2.46): ``X(p/a) <-> x(a t)``, ``a > 0``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    a : number or Expr
+        The time scale factor, which must be > 0.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> similarity(p / (p**2 + 1), p, 3)     # sin t -> sin 3t
@@ -290,6 +392,19 @@ def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int |
     ``initial`` holds ``x(0+), x'(0+), ..., x^(m-1)(0+)``; ``n`` defaults to ``len(initial)`` (with zero data
     pass ``n`` alone, giving (2.20)).
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    initial : sequence of number or Expr
+        Initial values ``[x(0+), x'(0+), ..., x^(k-1)(0+)]`` with ``k <= n`` (missing ones are zero).
+    n : int, optional
+        Order m of the derivative, an integer >= 0; ``len(initial)`` when omitted.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> sp.cancel(differentiate_original(p**2 / (p**2 + 1), p, [1]))   # (cos t)' = -sin t
@@ -309,6 +424,19 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
     """Image of the ``m``-fold integral from 0 (2.11–2.12): ``X(p)/p**m``; with ``constant`` = value at 0 of an
     indefinite (single) integral, ``X/p + constant`` (2.14).
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    times : int
+        Number m of integrations, an integer >= 1.
+    constant : number or Expr
+        Value at ``t = 0`` of an indefinite integral; only with ``times=1`` (0: the integral from 0).
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> integrate_original(sp.Integer(1), p, 2)    # 1 -> t**2/2
@@ -326,6 +454,17 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
 def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     """Image of ``t**m x(t)`` (2.23): ``(-1)**m p d^m/dp^m [X(p)/p]``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+    n : int
+        The power m of ``t``, an integer >= 0.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> sp.factor(differentiate_image(p / (p + 1), p, 2))    # t**2 exp(-t)
@@ -340,6 +479,21 @@ def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
 def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     """Image of ``Integral(x(u) y(t - u), (u, 0, t))`` (2.43): ``X(p) Y(p)/p``.
 
+    Parameters
+    ----------
+    image_x : Expr
+        Carson image ``X(p)`` of the first original.
+    image_y : Expr
+        Carson image ``Y(p)`` of the second original.
+    p : Symbol
+        The image variable.
+
+    See Also
+    --------
+    duhamel, product_of_originals
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> convolution(sp.Integer(1), sp.Integer(1), p)      # 1 * 1 = t
@@ -359,6 +513,8 @@ def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     p : Symbol
         The image variable.
 
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> duhamel(p / (p + 1), sp.Integer(1), p)      # x = exp(-t), y = 1: d/dt of the convolution is exp(-t)
@@ -371,6 +527,25 @@ def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
 def initial_value(image, p: sp.Symbol) -> sp.Expr:
     """``x(0+) = lim_{p -> oo} X(p)`` (2.47).
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, an expression in ``p``.
+    p : Symbol
+        The image variable.
+
+    Returns
+    -------
+    Expr
+        The finite limit.
+
+    Raises
+    ------
+    ModelError
+        If ``X(p)`` has no finite limit at ``p -> oo``.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> initial_value(p**2 / (p**2 + 4), p)
@@ -396,6 +571,13 @@ def final_value(image, p: sp.Symbol) -> sp.Expr:
     The theorem holds when every pole of ``X(p)/p`` lies in the open left half-plane except a simple pole at
     ``p = 0``.  Otherwise (a pole with ``Re >= 0`` other than a simple one at 0: growth, undamped oscillation, a
     ramp) :class:`ModelError` is raised instead of returning the meaningless ``X(0)``.
+
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, a rational function of ``p``.
+    p : Symbol
+        The image variable.
 
     Examples
     --------
@@ -433,6 +615,15 @@ def final_value(image, p: sp.Symbol) -> sp.Expr:
 def integral_to_infinity(image, p: sp.Symbol) -> sp.Expr:
     """``Integral(x, (t, 0, oo)) = [X(p)/p]_{p=0}`` (2.48), when every pole of ``X/p`` is in ``Re p < 0``.
 
+    Parameters
+    ----------
+    image : Expr
+        Carson image ``X(p)``, a rational function of ``p``.
+    p : Symbol
+        The image variable.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> integral_to_infinity(p / (p + 2), p)     # exp(-2 t)
@@ -457,6 +648,21 @@ def product_of_originals(image_x, image_y, p: sp.Symbol) -> sp.Expr:
 
     ``X`` may be any image analytic for ``Re p`` large enough.
 
+    Parameters
+    ----------
+    image_x : Expr
+        Carson image ``X(p)`` of ``x``, analytic for ``Re p`` large enough.
+    image_y : Expr
+        Carson image ``Y(p)`` of ``y``, which must be a rational function of ``p``.
+    p : Symbol
+        The image variable.
+
+    See Also
+    --------
+    convolution
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> p = sp.Symbol("p")
     >>> sp.factor(product_of_originals(1 / p, p / (p + 1), p))     # t * exp(-t)

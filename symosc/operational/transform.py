@@ -95,13 +95,34 @@ def inverse_carson(
     ``sympy.inverse_laplace_transform(X/p)`` for anything else.  For images without a closed-form original use
     :func:`invert_numeric`.
 
+    Parameters
+    ----------
+    image : Expr or Matrix
+        Carson image ``X(p)``, an expression in ``p`` (a Matrix is inverted entry by entry).
+    p : Symbol
+        The image variable; it must be a SymPy Symbol.
+    t : Symbol
+        Time, the variable of the original (default ``symosc.t``); it must be a SymPy Symbol.
+    method : {"auto", "heaviside", "sympy"}
+        ``"heaviside"``: the expansion theorem and the delay theorem only (rational images times ``exp(-p tau)``);
+        ``"sympy"``: ``sympy.inverse_laplace_transform(X/p)``; ``"auto"``: the first where it applies, else the
+        second.
+    real : bool
+        Combine conjugate complex poles into ``exp(a t) (A cos(b t) + B sin(b t))`` (Bulgakov 2.89–2.91).
+    roots : {"exact", "numeric"}
+        Poles of rational images: ``"exact"`` (radicals or ``CRootOf``) or ``"numeric"`` (30-digit numbers, see
+        :func:`heaviside_expand`).
+
+    Returns
+    -------
+    Expr or Matrix
+        The original for ``t > 0`` (delayed parts carry ``Heaviside(t - tau)``).
+
     Raises
     ------
     ModelError
         For an improper rational image (``deg numerator > deg denominator``: the original is not an ordinary
         function) and when no closed form is found.
-
-    ``roots="numeric"`` uses 30-digit numeric poles (see :func:`heaviside_expand`).
 
     See Also
     --------
@@ -252,7 +273,10 @@ class NumericInversion(SymPyPrintable):
         (``t max|Im s| > 10`` over the singularities s) the difference to the same method with 20 more digits
         instead, since the methods share a blind spot there.
     method : str
+        The Bromwich method that produced ``values`` (``"dehoog"``, ``"talbot"``, ``"stehfest"``), or
+        ``"residues"`` for a rational image inverted exactly by partial fractions.
     converged : bool
+        True when every value met the tolerance (otherwise :func:`invert_numeric` raises).
     """
 
     t: np.ndarray
@@ -269,7 +293,18 @@ class NumericInversion(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Plot ``x(t)``."""
+        """Plot ``x(t)``.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
 
         ax = new_axes(ax)
         ax.plot(self.t, self.values)
@@ -298,11 +333,14 @@ def invert_numeric(
     ----------
     image : Expr
         Carson image; any analytic expression in ``p`` (exponentials, square roots, ...).
+    p : Symbol
+        The image variable; it must be a SymPy Symbol.
     times : float or array_like
         Times ``t > 0``.
     values : dict, optional
         Numbers for the other free symbols (keyed by Symbol or name).
     method : {"talbot", "dehoog", "stehfest"}
+        The Bromwich method of mpmath's ``invertlaplace`` whose values are returned (the others check them).
     dps : int
         Working precision of mpmath.  It is raised automatically where the image has singularities near the
         imaginary axis and ``t`` is long (the methods otherwise return ~0 for an undamped original, and agree on
@@ -398,6 +436,33 @@ def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *
     Returns ``control.TransferFunction`` when python-control is installed, else ``scipy.signal.TransferFunction``;
     ``values`` gives numbers for the other symbols.  Delays (``exp(-p tau)``) do not convert.
 
+    Parameters
+    ----------
+    image : Expr
+        The transfer function, which must be rational in ``p`` with real coefficients once ``values`` are
+        substituted.
+    p : Symbol
+        The image (Laplace) variable.
+    values : mapping of Symbol or name to number, optional
+        Numbers for the other symbols of ``image`` (keys are symbols or their names).
+    backend : {"auto", "control", "scipy"}
+        ``"control"``: a ``control.TransferFunction`` (python-control required); ``"scipy"``: a
+        ``scipy.signal.TransferFunction``; ``"auto"``: python-control when installed, else SciPy.
+
+    Returns
+    -------
+    control.TransferFunction or scipy.signal.TransferFunction
+        Coefficients normalised to a monic denominator.
+
+    Raises
+    ------
+    ModelError
+        If ``image`` is not rational in ``p`` (a delay) or has complex coefficients.
+
+    See Also
+    --------
+    symosc.mechanics.LinearModel.to_transfer_function
+
     Examples
     --------
     >>> import sympy as sp
@@ -405,10 +470,6 @@ def to_transfer_function(image: Any, p: sp.Symbol, values: dict | None = None, *
     >>> H = to_transfer_function(k / (T * p + 1), p, {"k": 2, "T": 0.5}, backend="scipy")
     >>> H.num.tolist(), H.den.tolist()
     ([4.0], [1.0, 2.0])
-
-    See Also
-    --------
-    symosc.mechanics.LinearModel.to_transfer_function
     """
     from .._control import transfer_function_from_expr
 

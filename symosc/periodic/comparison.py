@@ -55,6 +55,7 @@ class MethodComparison(SymPyPrintable):
     q : ndarray
         First-tone amplitude parameters.
     regions : dict[str, StabilityRegion]
+        The region of each method, keyed by the method's name.
     lower, upper : dict[str, ndarray]
         Boundary values ``a^1`` per method on ``q``.
     """
@@ -65,7 +66,19 @@ class MethodComparison(SymPyPrintable):
     upper: dict
 
     def table(self, reference: str = "modified-ince-strutt") -> str:
-        """Text table of the boundaries and their differences from ``reference``."""
+        """Text table of the boundaries and their differences from ``reference``.
+
+        Parameters
+        ----------
+        reference : str
+            Name of the method the others are compared with, one of the compared methods (such as
+            ``"modified-ince-strutt"``); no differences are listed when it was not compared.
+
+        Returns
+        -------
+        str
+            One row per ``q^1`` with the lower and upper boundary of every method, then the largest differences.
+        """
         names = list(self.regions)
         head = f"{'q1':>8} | " + " | ".join(f"{n + ' lo':>22} {n + ' up':>22}" for n in names)
         lines = [head, "-" * len(head)]
@@ -91,7 +104,20 @@ class MethodComparison(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, a_range: tuple[float, float] | None = None) -> Any:
-        """All regions in first-tone axes (``a^1`` horizontal, ``q^1`` vertical), like the paper's Fig. 5."""
+        """All regions in first-tone axes (``a^1`` horizontal, ``q^1`` vertical), like the paper's Fig. 5.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        a_range : tuple of float, optional
+            Limits ``(a_min, a_max)`` of the horizontal ``a^1`` axis; Matplotlib's choice when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -132,6 +158,31 @@ def compare_methods(
     chelomei_order: int = 1,
 ) -> MethodComparison:
     """Stability boundaries of ``system`` by several methods on a common ``q^1`` grid.
+
+    Parameters
+    ----------
+    system : LagrangianSystem or LinearModel
+        Inverted system with a vertically vibrating pivot, such as
+        ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (see :func:`stability_region`).
+    values : mapping of Symbol or name to float
+        Values of every parameter except the excitation amplitude and frequency (keys are symbols or their
+        names).
+    methods : sequence of method names
+        Methods to compare, each one of ``"modified-ince-strutt"``, ``"floquet"``, ``"otterbein"``,
+        ``"acheson"``, ``"chelomei"`` (``"floquet"`` is slow).
+    q : array_like, optional
+        First-tone amplitude parameters ``q^1`` (finite real numbers) at which the boundaries are compared;
+        25 points on ``[0.01, 0.5]`` when omitted.
+    chelomei_order : int
+        Approximation order of the ``"chelomei"`` method, 1 or 2.
+
+    Returns
+    -------
+    MethodComparison
+
+    See Also
+    --------
+    stability_region
 
     Examples
     --------

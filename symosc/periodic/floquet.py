@@ -62,6 +62,9 @@ class FloquetResult(SymPyPrintable):
         Whether the half-period construction ``X(T) = R X(T/2)^{-1} R X(T/2)`` was used.
     integration_rtol : float
         The integrator's relative tolerance.
+    _mult : ndarray or None
+        Internal cache of :attr:`floquet_multipliers` (the eigenvalues of ``monodromy`` by decreasing modulus);
+        computed from ``monodromy`` when None.
     """
 
     monodromy: np.ndarray
@@ -178,7 +181,18 @@ class FloquetResult(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Multipliers in the complex plane with the unit circle."""
+        """Multipliers in the complex plane with the unit circle.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -406,14 +420,32 @@ def monodromy(
 def floquet_multipliers(A: Any, period: float, **kwargs: Any) -> np.ndarray:
     """Floquet multipliers of ``x' = A(t) x`` (shortcut for ``monodromy(...).floquet_multipliers``).
 
-    >>> import numpy as np
-    >>> rho = floquet_multipliers(lambda t: np.array([[-1.0, 0.0], [0.0, -2.0]]), 1.0)
-    >>> np.allclose(rho, [np.exp(-1), np.exp(-2)])
-    True
+    Parameters
+    ----------
+    A : sympy.Matrix or callable
+        ``n x n`` matrix in ``symosc.symbols.t`` and parameters, or a function ``A(t, *args) -> ndarray (n, n)``;
+        it must be square and ``period``-periodic (as for :func:`monodromy`).
+    period : float
+        The period ``T > 0``.
+    **kwargs
+        Options of :func:`monodromy` (``args``, ``values``, ``rtol``, ``atol``, ``method``, ``reversor``,
+        ``unit_tol``, ``check_periodic``).
+
+    Returns
+    -------
+    ndarray
+        The eigenvalues ``rho`` of ``X(T)``, by decreasing modulus.
 
     See Also
     --------
     monodromy
     stability_region
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> rho = floquet_multipliers(lambda t: np.array([[-1.0, 0.0], [0.0, -2.0]]), 1.0)
+    >>> np.allclose(rho, [np.exp(-1), np.exp(-2)])
+    True
     """
     return monodromy(A, period, **kwargs).floquet_multipliers

@@ -67,6 +67,29 @@ def mathieu_stable(a: Any, q: Any) -> np.ndarray:
     Exact band test: stable iff ``a_n(|q|) < a < b_{n+1}(|q|)`` for some ``n >= 0`` (boundaries count as
     unstable).  Vectorised (broadcasts ``a`` against ``q``).
 
+    Parameters
+    ----------
+    a : float or array_like
+        Characteristic parameter(s) ``a``, finite real numbers.
+    q : float or array_like
+        Amplitude parameter(s) ``q``, finite real numbers broadcastable against ``a`` (the sign is ignored).
+
+    Returns
+    -------
+    ndarray of bool
+        True where the solutions are bounded, with the broadcast shape.
+
+    Raises
+    ------
+    ConvergenceError
+        If ``a`` lies above the first 400 stability bands.
+
+    See Also
+    --------
+    mathieu_a, mathieu_b, ince_strutt_diagram
+
+    Examples
+    --------
     >>> mathieu_stable([-0.1, -0.5, 0.5, 2.0], 0.5).tolist()
     [True, False, False, True]
     """
@@ -99,6 +122,23 @@ def series_boundary(kind: str, n: int, terms: int) -> Callable[[Any], np.ndarray
 
     Gribkov & Khokhlov 2015, eq. (8)–(9) and Fig. 4 keep 1–4 terms of ``a_0`` and 2, 3, 5 terms of ``b_1``.
 
+    Parameters
+    ----------
+    kind : {"a", "b"}
+        Which characteristic value: ``"a"`` (even solutions, ``a_n``) or ``"b"`` (odd solutions, ``b_n``).
+    n : int
+        Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
+    terms : int
+        Number of non-zero terms kept, a positive integer.
+
+    Returns
+    -------
+    callable
+        ``f(q) -> ndarray``; it warns (SeriesWarning) beyond the series' radius of convergence.  ``f.expr`` holds
+        the truncated polynomial.
+
+    Examples
+    --------
     >>> f = series_boundary("a", 0, 1)      # a_0 ~ -q**2/2
     >>> round(float(f(0.2)), 15)
     -0.02
@@ -156,8 +196,10 @@ class InceStruttDiagram(SymPyPrintable):
     ----------
     q : ndarray
         Grid of ``q >= 0``.
-    a_curves, b_curves : dict[int, ndarray]
-        ``a_n(q)`` for ``n = 0..n_max`` and ``b_n(q)`` for ``n = 1..n_max``.
+    a_curves : dict[int, ndarray]
+        ``a_n(q)`` on ``q`` for ``n = 0..n_max``.
+    b_curves : dict[int, ndarray]
+        ``b_n(q)`` on ``q`` for ``n = 1..n_max``.
     """
 
     q: np.ndarray
@@ -172,7 +214,20 @@ class InceStruttDiagram(SymPyPrintable):
     orders = _deprecated_attribute("n_max")
 
     def is_stable(self, a: Any, q: Any) -> np.ndarray:
-        """Exact stability of ``(a, q)`` (see :func:`mathieu_stable`)."""
+        """Exact stability of ``(a, q)`` (see :func:`mathieu_stable`).
+
+        Parameters
+        ----------
+        a : float or array_like
+            Characteristic parameter(s) ``a``, finite real numbers.
+        q : float or array_like
+            Amplitude parameter(s) ``q``, finite real numbers broadcastable against ``a`` (the sign is ignored).
+
+        Returns
+        -------
+        ndarray of bool
+            True where the solutions are bounded.
+        """
         return mathieu_stable(a, q)
 
     def __repr__(self) -> str:
@@ -183,7 +238,22 @@ class InceStruttDiagram(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
-        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``."""
+        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        a_range : tuple of float
+            Limits ``(a_min, a_max)`` of the horizontal axis, ``a_min < a_max``.
+        shade : bool
+            Shade the stable bands ``a_n < a < b_(n+1)`` in grey.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -214,17 +284,32 @@ class InceStruttDiagram(SymPyPrintable):
 def ince_strutt_diagram(n_max: int = 3, q_max: float = 8.0, num: int = 201) -> InceStruttDiagram:
     """Characteristic curves ``a_0..a_n_max``, ``b_1..b_n_max`` on ``q in [0, q_max]``.
 
-    >>> d = ince_strutt_diagram(n_max=2, q_max=1.0, num=3)
-    >>> sorted(d.a_curves), sorted(d.b_curves)
-    ([0, 1, 2], [1, 2])
-    >>> [round(float(d.a_curves[n][0]), 12) for n in range(3)]   # a_n(0) = n**2
-    [0.0, 1.0, 4.0]
+    Parameters
+    ----------
+    n_max : int
+        Largest index of the characteristic curves, a non-negative integer.
+    q_max : float
+        End of the grid ``[0, q_max]``, positive and finite.
+    num : int
+        Number of grid points in ``q`` (>= 2).
+
+    Returns
+    -------
+    InceStruttDiagram
 
     See Also
     --------
     modified_ince_strutt
     mathieu_a
     mathieu_b
+
+    Examples
+    --------
+    >>> d = ince_strutt_diagram(n_max=2, q_max=1.0, num=3)
+    >>> sorted(d.a_curves), sorted(d.b_curves)
+    ([0, 1, 2], [1, 2])
+    >>> [round(float(d.a_curves[n][0]), 12) for n in range(3)]   # a_n(0) = n**2
+    [0.0, 1.0, 4.0]
     """
     if isinstance(n_max, bool) or not isinstance(n_max, int) or n_max < 0:
         raise ParameterError(f"n_max must be a non-negative integer, got {n_max!r}")
@@ -255,9 +340,12 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
     ----------
     ratios : tuple of float
         ``r_i = (p_1/p_i)**2``, descending, ``r_1 = 1``.
-    lower_terms, upper_terms : int or None
-        ``None``: exact characteristic values; an integer: that many non-zero terms of the power series
-        (8) of ``a_0`` / (9) of ``b_1`` (Fig. 4 of the paper).
+    lower_terms : int or None
+        ``None``: exact characteristic values for the lower boundary; an integer: that many non-zero terms of the
+        power series (8) of ``a_0`` (Fig. 4 of the paper).
+    upper_terms : int or None
+        ``None``: exact characteristic values for the upper boundary; an integer: that many non-zero terms of the
+        power series (9) of ``b_1``.
     """
 
     ratios: tuple
@@ -266,7 +354,24 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
 
     def curve(self, kind: str, n: int, mode: int, q: Any) -> np.ndarray:
         """Boundary ``a = f(q)`` (``f`` = ``a_n`` or ``b_n``) of mode ``mode`` (1-based) in first-tone axes:
-        ``r_i f(q / r_i)``."""
+        ``r_i f(q / r_i)``.
+
+        Parameters
+        ----------
+        kind : {"a", "b"}
+            Which characteristic value: ``"a"`` (``a_n``) or ``"b"`` (``b_n``).
+        n : int
+            Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
+        mode : int
+            1-based index of the mode, between 1 and the number of ratios.
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored).
+
+        Returns
+        -------
+        ndarray
+            ``a^1`` on the curve, shaped like ``q``.
+        """
         if not 1 <= mode <= len(self.ratios):
             raise ParameterError(f"mode must be in 1..{len(self.ratios)}, got {mode}")
         r = self.ratios[mode - 1]
@@ -285,6 +390,16 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         affinely on ``q``, hence concave with ``a_0(0) = 0``, so ``d/dr [r a_0(q/r)] = a_0(x) - x a_0'(x) >= 0``
         (``x = q/r``): the largest ratio (``r_1 = 1``) gives the highest curve.  (The series truncations keep
         the same choice, as the paper does.)  :meth:`lower_mode` checks it by evaluating every mode.
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray
+            ``a^1`` on the lower boundary, shaped like ``q``.
         """
         q = np.abs(_as_float_array(q, "q"))
         r = self.ratios[0]
@@ -296,18 +411,50 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         Only mode N is evaluated: ``b_1`` is the lowest eigenvalue in its symmetry class, concave in ``q`` with
         ``b_1(0) = 1``, so ``d/dr [r b_1(q/r)] = b_1(x) - x b_1'(x) >= 1 > 0``: the smallest ratio gives the lowest
         curve.  :meth:`upper_mode` checks it by evaluating every mode.
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray
+            ``a^1`` on the upper boundary, shaped like ``q``.
         """
         q = np.abs(_as_float_array(q, "q"))
         r = self.ratios[-1]
         return r * self._f("b", self.upper_terms, q / r)
 
     def lower_mode(self, q: Any) -> np.ndarray:
-        """1-based index of the mode whose ``a_0`` curve is the lower boundary (the paper: always 1)."""
+        """1-based index of the mode whose ``a_0`` curve is the lower boundary (the paper: always 1).
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray of int
+            The mode index at each ``q``.
+        """
         q = np.abs(_as_float_array(q, "q"))
         return 1 + np.argmax([r * self._f("a", self.lower_terms, q / r) for r in self.ratios], axis=0)
 
     def upper_mode(self, q: Any) -> np.ndarray:
-        """1-based index of the mode whose ``b_1`` curve is the upper boundary (the paper: always N)."""
+        """1-based index of the mode whose ``b_1`` curve is the upper boundary (the paper: always N).
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray of int
+            The mode index at each ``q``.
+        """
         q = np.abs(_as_float_array(q, "q"))
         return 1 + np.argmin([r * self._f("b", self.upper_terms, q / r) for r in self.ratios], axis=0)
 
@@ -317,6 +464,20 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         With exact boundaries and ``principal=False``: every mode ``(a/r_i, q/r_i)`` must lie in a stable
         band of the Mathieu equation (exact, includes the higher stability bands at large q).  Otherwise:
         inside the principal region ``lower(q) < a < upper(q)``.
+
+        Parameters
+        ----------
+        a : float or array_like
+            First-tone frequency parameter(s) ``a^1``, finite real numbers.
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers broadcastable against ``a``.
+        principal : bool
+            Test only the principal region ``lower(q) < a < upper(q)`` even with exact boundaries.
+
+        Returns
+        -------
+        ndarray of bool or bool
+            True where stable, with the broadcast shape (a NumPy bool for scalar input).
         """
         a = _as_float_array(a, "a")
         q = _as_float_array(q, "q")
@@ -350,7 +511,28 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         shade: bool = True,
     ) -> Any:
         """Boundary curves of resonances ``0..n_max`` for every mode (mode 1 solid, higher modes dashed) in
-        first-tone axes, the principal stability region shaded (the paper's Fig. 3)."""
+        first-tone axes, the principal stability region shaded (the paper's Fig. 3).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        n_max : int
+            Largest index of the curves ``a_n``, ``b_n`` drawn, a non-negative integer.
+        q_max : float
+            Top of the ``q^1`` axis, a positive number.
+        a_range : tuple of float, optional
+            Limits ``(a_min, a_max)`` of the horizontal ``a^1`` axis; fitted to the curves when omitted.
+        num : int
+            Number of points (>= 2) on each curve.
+        shade : bool
+            Shade the principal stability region in grey.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:

@@ -251,9 +251,9 @@ def mathieu_series_value(
     Parameters
     ----------
     kind : {"a", "b"}
-        Which characteristic value.
+        Which characteristic value: ``"a"`` (``a_n``, even solutions) or ``"b"`` (``b_n``, odd solutions).
     n : int
-        Index.
+        Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
     q : float
         Point (any real; the series is a polynomial in q, valid for ``|q|`` below the radius of convergence).
     order : int, optional
@@ -337,6 +337,25 @@ def mathieu_series_radius(kind: str, n: int, order: int = 60) -> float:
     with i, j the largest coefficients in (order/2, 3 order/4] and (3 order/4, order], corrected for the
     j^(-3/2) law of square-root branch points.  An estimate: good to ~1 % for a_0 (1.4688, the branch point
     q = 1.4688i where a_0 meets a_2), a few per cent when complex branch points make the coefficients oscillate.
+
+    Parameters
+    ----------
+    kind : {"a", "b"}
+        Which characteristic value: ``"a"`` (``a_n``, even solutions) or ``"b"`` (``b_n``, odd solutions).
+    n : int
+        Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
+    order : int
+        Highest power of ``q`` whose coefficient is used, an integer between 0 and 150; below about 8 there are
+        too few non-zero coefficients for the estimate and ``inf`` is returned.
+
+    Returns
+    -------
+    float
+        The estimated radius of convergence in ``q`` (``inf`` when the estimate is not possible).
+
+    See Also
+    --------
+    mathieu_series_a, mathieu_series_b
 
     Examples
     --------

@@ -210,6 +210,21 @@ class StabilityRegion(SymPyPrintable):
         The modified diagram behind the region (methods other than ``"floquet"``).
     notes : str
         What the method assumes / reconstructs.
+    _lower : callable
+        Internal (set by :func:`stability_region`): ``q^1 -> a^1`` of the lower boundary, behind :meth:`lower`.
+    _upper : callable
+        Internal: ``q^1 -> a^1`` of the upper boundary, behind :meth:`upper`.
+    _classify : callable
+        Internal: ``(a^1, q^1) -> bool array``, behind :meth:`contains`.
+    _model : object
+        Internal: the numeric model (mass and stiffness matrices, natural frequencies, excitation factor) the
+        region was computed from; pickling keeps it and rebuilds the rest.
+    _q_bounds : callable or None
+        Internal: ``a^1 -> (q_lo, q_hi)`` in closed form (approximate methods, Floquet); None to solve the
+        boundaries for ``q^1`` numerically.
+    _options : dict
+        Internal: the options of :func:`stability_region` (order, series terms, tolerance), used to rebuild the
+        region on unpickling.
     """
 
     method: str
@@ -230,30 +245,102 @@ class StabilityRegion(SymPyPrintable):
 
     # ---------------------------------------------------------------- first-tone coordinates
     def lower(self, q: Any) -> np.ndarray:
-        """Lower boundary ``a^1(q^1)`` in first-tone coordinates (``-inf``: none)."""
+        """Lower boundary ``a^1(q^1)`` in first-tone coordinates (``-inf``: none).
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray
+            ``a^1`` on the lower boundary, shaped like ``q``.
+        """
         return np.asarray(self._lower(np.abs(_as_float_array(q, "q"))), dtype=float)
 
     def upper(self, q: Any) -> np.ndarray:
-        """Upper boundary ``a^1(q^1)`` in first-tone coordinates (``+inf``: none)."""
+        """Upper boundary ``a^1(q^1)`` in first-tone coordinates (``+inf``: none).
+
+        Parameters
+        ----------
+        q : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored: ``|q^1|`` is used).
+
+        Returns
+        -------
+        ndarray
+            ``a^1`` on the upper boundary, shaped like ``q``.
+        """
         return np.asarray(self._upper(np.abs(_as_float_array(q, "q"))), dtype=float)
 
     def contains(self, a1: Any, q1: Any) -> np.ndarray:
-        """Classification of first-tone points ``(a^1, q^1)`` by this method."""
+        """Classification of first-tone points ``(a^1, q^1)`` by this method.
+
+        Parameters
+        ----------
+        a1 : float or array_like
+            First-tone frequency parameter(s) ``a^1 = -4 (p_1/p)^2``, finite real numbers (broadcast with ``q1``).
+        q1 : float or array_like
+            First-tone amplitude parameter(s) ``q^1``, finite real numbers (the sign is ignored).
+
+        Returns
+        -------
+        ndarray of bool
+            True inside the stability region, with the broadcast shape.
+        """
         a1, q1 = np.broadcast_arrays(_as_float_array(a1, "a1"), _as_float_array(q1, "q1"))
         return np.asarray(self._classify(a1, np.abs(q1)), dtype=bool)
 
     # ---------------------------------------------------------------- dimensional coordinates
     def first_tone(self, p: Any, a: Any) -> tuple[np.ndarray, np.ndarray]:
-        """``(a^1, q^1)`` of excitation frequency ``p`` (rad/s) and amplitude ``a`` (m)."""
+        """``(a^1, q^1)`` of excitation frequency ``p`` (rad/s) and amplitude ``a`` (m).
+
+        Parameters
+        ----------
+        p : float or array_like
+            Excitation frequency (rad/s), finite and positive.
+        a : float or array_like
+            Pivot amplitude (m), finite and non-negative (broadcast with ``p``).
+
+        Returns
+        -------
+        (a1, q1) : tuple of ndarray
+            The first-tone coordinates.
+        """
         return self._model.first_tone(p, a)
 
     def is_stable(self, p: Any, a: Any) -> np.ndarray:
-        """Stability at excitation frequency ``p`` (rad/s) and amplitude ``a``; vectorised (broadcasts)."""
+        """Stability at excitation frequency ``p`` (rad/s) and amplitude ``a``; vectorised (broadcasts).
+
+        Parameters
+        ----------
+        p : float or array_like
+            Excitation frequency (rad/s), finite and positive.
+        a : float or array_like
+            Pivot amplitude (m), finite and non-negative (broadcast with ``p``).
+
+        Returns
+        -------
+        ndarray of bool
+            True where the inverted equilibrium is stable by this method.
+        """
         a1, q1 = self.first_tone(p, a)
         return self.contains(a1, q1)
 
     def amplitude_bounds(self, p: Any) -> tuple[np.ndarray, np.ndarray]:
-        """``(a_min, a_max)``: the principal region at frequency ``p`` is ``a_min < a < a_max`` (nan if empty)."""
+        """``(a_min, a_max)``: the principal region at frequency ``p`` is ``a_min < a < a_max`` (nan if empty).
+
+        Parameters
+        ----------
+        p : float or array_like
+            Excitation frequency (rad/s), finite and positive; arrays give the bounds elementwise.
+
+        Returns
+        -------
+        (a_min, a_max) : tuple of ndarray
+            Amplitude bounds (m), nan where the region is empty at that frequency.
+        """
         p = _as_float_array(p, "p")
         a1, _ = self._model.first_tone(p, np.zeros_like(p))
         if self._q_bounds is not None:
@@ -278,16 +365,54 @@ class StabilityRegion(SymPyPrintable):
         return _solve_decreasing(self.upper, a1)
 
     def lower_dimensional(self, p: Any) -> np.ndarray:
-        """Minimum stabilising amplitude (m) at excitation frequency ``p`` (rad/s)."""
+        """Minimum stabilising amplitude (m) at excitation frequency ``p`` (rad/s).
+
+        Parameters
+        ----------
+        p : float or array_like
+            Excitation frequency (rad/s), finite and positive; arrays give the bounds elementwise.
+
+        Returns
+        -------
+        ndarray
+            ``a_min`` of :meth:`amplitude_bounds` (nan where the region is empty).
+        """
         return self.amplitude_bounds(p)[0]
 
     def upper_dimensional(self, p: Any) -> np.ndarray:
-        """Maximum stable amplitude (m) at excitation frequency ``p`` (rad/s)."""
+        """Maximum stable amplitude (m) at excitation frequency ``p`` (rad/s).
+
+        Parameters
+        ----------
+        p : float or array_like
+            Excitation frequency (rad/s), finite and positive; arrays give the bounds elementwise.
+
+        Returns
+        -------
+        ndarray
+            ``a_max`` of :meth:`amplitude_bounds` (nan where the region is empty).
+        """
         return self.amplitude_bounds(p)[1]
 
     def frequency_bounds(self, a: Any) -> tuple[np.ndarray, np.ndarray]:
         """``(p_min, p_max)`` in rad/s at amplitude ``a`` (``p_max = inf`` when the upper boundary is at
-        ``a^1 >= 0``; nan when the region is empty).  Needs ``q^1`` independent of ``p`` (true for the pendulum)."""
+        ``a^1 >= 0``; nan when the region is empty).  Needs ``q^1`` independent of ``p`` (true for the pendulum).
+
+        Parameters
+        ----------
+        a : float or array_like
+            Pivot amplitude (m), finite and non-negative; arrays give the bounds elementwise.
+
+        Returns
+        -------
+        (p_min, p_max) : tuple of ndarray
+            Frequency bounds (rad/s).
+
+        Raises
+        ------
+        ModelError
+            If ``q^1`` depends on the excitation frequency for this model.
+        """
         if not self._model.q_independent_of_p:
             raise ModelError("q^1 depends on the excitation frequency for this model; use amplitude_bounds(p)")
         amp = _as_float_array(a, "a")
@@ -327,7 +452,28 @@ class StabilityRegion(SymPyPrintable):
         **style: Any,
     ) -> Any:
         """Boundaries in first-tone axes (``a^1`` horizontal, ``q^1`` vertical, as the paper's Fig. 3–5) or in
-        dimensional axes (``coords="dimensional"``: excitation frequency ``p`` in rad/s vs amplitude ``a``)."""
+        dimensional axes (``coords="dimensional"``: excitation frequency ``p`` in rad/s vs amplitude ``a``).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        coords : {"first-tone", "dimensional"}
+            Axes of the plot: ``(a^1, q^1)``, or excitation frequency vs amplitude on log scales.
+        q_max : float, optional
+            First-tone axes: largest ``q^1`` drawn (> 0); ``1.2 r_N`` when omitted.
+        p_range : tuple of float, optional
+            Dimensional axes: ``(p_min, p_max)`` in rad/s, both positive; ``(2 p_1, 40 p_N)`` when omitted.
+        num : int
+            Number of points (>= 2) on each boundary curve.
+        **style
+            Matplotlib line properties (``label``, ``color``, ``ls``, ...).
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -381,10 +527,11 @@ def stability_region(
     Parameters
     ----------
     system : LagrangianSystem or LinearModel
-        E.g. ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
+        Inverted system with a vertically vibrating pivot, such as
+        ``n_link_pendulum(N, inverted=True, pivot="vertical")`` (linearized at ``q = 0``).
     values : mapping
         Parameter values (keyed by Symbol or name) except the excitation amplitude and frequency.
-    method : str
+    method : {"modified-ince-strutt", "floquet", "otterbein", "acheson", "chelomei"}
         ``"modified-ince-strutt"`` (Gribkov & Khokhlov 2015: two Mathieu curves, exact within the linear
         model); ``"floquet"`` (monodromy matrix of the full coupled 2N-dimensional system, boundaries by root
         finding on the multipliers; slow reference); ``"otterbein"``, ``"acheson"``, ``"chelomei"`` (the

@@ -16,6 +16,17 @@ __all__ = ["DerivationLog", "LogEntry"]
 class LogEntry(SymPyPrintable):
     """One derivation or evaluation step: its name, wall time in seconds and a short detail.
 
+    Attributes
+    ----------
+    step : str
+        Name of the step, such as ``"linearize at q = 0"``.
+    seconds : float
+        Wall time the step took, in seconds (>= 0).
+    detail : str
+        A short description of what was derived (empty when none).
+
+    Examples
+    --------
     >>> LogEntry("linearize at q = 0", 0.0123)
     LogEntry('linearize at q = 0', 12.3 ms)
     """
@@ -49,7 +60,20 @@ class DerivationLog(SymPyPrintable):
 
     @contextmanager
     def step(self, name: str, detail: str = "") -> Iterator[None]:
-        """Time the body of the ``with`` block and record it as ``name``."""
+        """Time the body of the ``with`` block and record it as ``name``.
+
+        Parameters
+        ----------
+        name : str
+            Name of the step, recorded as :attr:`LogEntry.step`.
+        detail : str
+            A short description of what the step derives (empty when none).
+
+        Yields
+        ------
+        None
+            The entry is appended when the block ends without an exception.
+        """
         t0 = time.perf_counter()
         yield
         self.entries.append(LogEntry(name, time.perf_counter() - t0, detail))

@@ -19,6 +19,15 @@ __all__ = ["Figure", "QuestionResult", "SceneResult", "Table"]
 class Table(SymPyPrintable):
     """A small table: column headers, rows of formatted cells and an optional caption.
 
+    Attributes
+    ----------
+    headers : tuple of str
+        Column headers.
+    rows : tuple of tuple of str
+        The rows, each with one formatted cell per header.
+    caption : str
+        Caption shown above the table (empty for none).
+
     Examples
     --------
     >>> print(Table(("mode", "f, Hz"), (("1", "2.3276"),)).markdown())
@@ -80,6 +89,17 @@ class Figure(SymPyPrintable):
     Figures are drawn only by :meth:`SceneResult.write` (matplotlib is imported there), so a result stays
     picklable and cheap.
 
+    Attributes
+    ----------
+    filename : str
+        Name of the PNG file written into the output folder, such as ``"ince.png"``.
+    caption : str
+        Caption of the figure in the reports.
+    drawer : str
+        Name of the drawing function, such as ``"ince_strutt"``; it is called with a Matplotlib Axes and ``data``.
+    data : dict
+        Keyword arguments of the drawing function (plain numbers, lists and strings, so the figure pickles).
+
     Examples
     --------
     >>> Figure("ince.png", "Ince–Strutt diagram", "ince_strutt", {"orders": 2, "q_max": 5.0}).drawer
@@ -99,6 +119,21 @@ class Figure(SymPyPrintable):
 @dataclass(frozen=True)
 class QuestionResult(SymPyPrintable):
     """The answer to one question: text lines, tables, figures and JSON-ready ``data``.
+
+    Attributes
+    ----------
+    kind : str
+        The question's kind, such as ``"natural_frequencies"`` (a key of ``symosc.scene.QUESTIONS``).
+    title : str
+        Heading of the answer in the reports.
+    lines : tuple of str
+        Text lines of the answer.
+    tables : tuple of Table
+        Tables of the answer.
+    figures : tuple of Figure
+        Figures of the answer (drawn by :meth:`SceneResult.write`).
+    data : dict
+        JSON-ready numbers of the answer (written to ``results.json``).
 
     Examples
     --------
@@ -135,6 +170,21 @@ class SceneResult(SymPyPrintable):
 
     ``report()`` is the plain-text report, ``markdown()``/``html()`` the written ones, ``to_json()`` the data;
     ``result["natural_frequencies"]`` is the first answer of that kind.
+
+    Attributes
+    ----------
+    title : str
+        Title of the scene.
+    source : str
+        Free-text source of the scene (empty when none).
+    system : str
+        Description of the system (empty for a scene without ``[system]``).
+    parameters : dict
+        Parameter values in SI units, keyed by name.
+    results : tuple of QuestionResult
+        One answer per question, in the order of the scene file.
+    log : tuple of LogEntry
+        The derivation log: every step derived or evaluated for the scene.
 
     Examples
     --------
@@ -193,6 +243,18 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def markdown(self, figures: dict[str, str] | None = None) -> str:
+        """This scene's results as a Markdown document.
+
+        Parameters
+        ----------
+        figures : dict of str to str, optional
+            ``{Figure.filename: path or URL}`` of the figures already written; only those are embedded (none
+            when omitted).
+
+        Returns
+        -------
+        str
+        """
         out = [f"# {self.title}", ""]
         if self.source:
             out.append(f"Source: {self.source}  ")
@@ -211,6 +273,18 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def html(self, figures: dict[str, str] | None = None) -> str:
+        """This scene's results as a standalone HTML page.
+
+        Parameters
+        ----------
+        figures : dict of str to str, optional
+            ``{Figure.filename: path or URL}`` of the figures already written; only those are embedded (none
+            when omitted).
+
+        Returns
+        -------
+        str
+        """
         e = html.escape
         out = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{e(self.title)}</title></head><body>"]
         out.append(f"<h1>{e(self.title)}</h1><p>Source: {e(self.source)}<br>System: {e(self.system)}<br>")

@@ -234,7 +234,11 @@ class Scene(SymPyPrintable):
     excitation : dict
         ``amplitude`` / ``frequency`` in SI units (frequencies in rad/s).
     questions : list of (kind, options)
+        The validated questions in file order: each ``kind`` (a key of :data:`QUESTIONS`) with its options.
     log : DerivationLog
+        The steps derived so far for this scene (filled by validation and by :meth:`run`).
+    _ctx : object
+        Internal: the scene's text and name, used to locate keys in error messages and to pickle the scene.
 
     See Also
     --------
@@ -367,6 +371,25 @@ def loads(text: str, *, name: str = "<string>", overrides: Mapping[str, Any] | N
 
     ``overrides`` replaces parameter values (``{"m1": 0.002}``) before validation, as ``symosc double-pendulum
     --set`` does.
+
+    Parameters
+    ----------
+    text : str
+        The scene as TOML text (tables ``[system]``, ``[parameters]``, ``[excitation]``, ``[[questions]]``).
+    name : str
+        Name of the scene in error messages and the default title (a file name, or ``"<string>"``).
+    overrides : mapping of str to number or str, optional
+        Parameter values replacing those of ``[parameters]`` before validation, keyed by parameter name; numbers
+        in SI units or strings with units such as ``"200 N/m"``.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneError
+        One paragraph naming the key (and its line), what was expected and the fix.
 
     Examples
     --------

@@ -65,6 +65,31 @@ def _inv(m: sp.Matrix, name: str) -> sp.Matrix:
 def block_inverse(a11: Any, a12: Any, a21: Any, a22: Any) -> sp.Matrix:
     """Inverse of ``[[a11, a12], [a21, a22]]`` by Bulgakov (1.67) (or (1.64) when ``a11`` is singular).
 
+    Parameters
+    ----------
+    a11 : Matrix, nested list or ndarray
+        Square top-left block (m x m, exact or symbolic entries); it or ``a22`` must be invertible.
+    a12 : Matrix, nested list or ndarray
+        Top-right block, which must be m x k (the rows of ``a11`` by the columns of ``a22``).
+    a21 : Matrix, nested list or ndarray
+        Bottom-left block, which must be k x m (the rows of ``a22`` by the columns of ``a11``).
+    a22 : Matrix, nested list or ndarray
+        Square bottom-right block (k x k, exact or symbolic entries); it or ``a11`` must be invertible.
+
+    Returns
+    -------
+    Matrix
+        The (m + k) x (m + k) inverse, simplified entry by entry.
+
+    Raises
+    ------
+    ModelError
+        If the blocks do not fit together, or the matrix (a Schur complement) is singular.
+
+    See Also
+    --------
+    block_determinant, bordering_inverse
+
     Examples
     --------
     >>> import sympy as sp
@@ -73,10 +98,6 @@ def block_inverse(a11: Any, a12: Any, a21: Any, a22: Any) -> sp.Matrix:
     [ 3/7, -3/7,  1/7],
     [ 1/7,  6/7, -2/7],
     [-1/7,  1/7,  2/7]])
-
-    See Also
-    --------
-    block_determinant, bordering_inverse
     """
     a11, a12, a21, a22 = _blocks(a11, a12, a21, a22)
     if not _is_zero(a11.det()):
@@ -98,16 +119,34 @@ def block_inverse(a11: Any, a12: Any, a21: Any, a22: Any) -> sp.Matrix:
 def block_determinant(a11: Any, a12: Any, a21: Any, a22: Any) -> sp.Expr:
     """``det [[a11, a12], [a21, a22]] = det a11 det beta2`` (1.76), or ``det beta1 det a22`` (1.77).
 
+    When both diagonal blocks are singular the determinant of the assembled matrix is returned.
+
+    Parameters
+    ----------
+    a11 : Matrix, nested list or ndarray
+        Square top-left block (m x m, exact or symbolic entries).
+    a12 : Matrix, nested list or ndarray
+        Top-right block, which must be m x k (the rows of ``a11`` by the columns of ``a22``).
+    a21 : Matrix, nested list or ndarray
+        Bottom-left block, which must be k x m (the rows of ``a22`` by the columns of ``a11``).
+    a22 : Matrix, nested list or ndarray
+        Square bottom-right block (k x k, exact or symbolic entries).
+
+    Returns
+    -------
+    Expr
+        The determinant, simplified.
+
+    See Also
+    --------
+    block_inverse
+
     Examples
     --------
     >>> import sympy as sp
     >>> x = sp.Symbol("x")
     >>> block_determinant(sp.Matrix([[x]]), sp.Matrix([[1, 2]]), sp.Matrix([[3], [4]]), sp.eye(2))
     x - 11
-
-    See Also
-    --------
-    block_inverse
     """
     a11, a12, a21, a22 = _blocks(a11, a12, a21, a22)
     d11 = a11.det()
@@ -152,6 +191,25 @@ def bordering_inverse(a: Any) -> BorderingInverse:
     with a scalar ``beta2 = d - c a_k^-1 b`` and multiplies the determinant by ``beta2`` (1.76).  When ``beta2 = 0``
     a later row is swapped in (``b = u a``); finally ``a^-1 = b^-1 u``.
 
+    Parameters
+    ----------
+    a : Matrix, nested list or ndarray
+        Square, non-empty, invertible matrix (exact or symbolic entries).
+
+    Returns
+    -------
+    BorderingInverse
+        The inverse, the determinant, the leading minors and the row order used.
+
+    Raises
+    ------
+    ModelError
+        If ``a`` is singular (no row gives a non-zero bordering pivot).
+
+    See Also
+    --------
+    block_inverse, block_determinant
+
     Examples
     --------
     >>> import sympy as sp
@@ -160,10 +218,6 @@ def bordering_inverse(a: Any) -> BorderingInverse:
     (Matrix([
     [-3/2, 1/2],
     [   1,   0]]), -2, (1, 0))
-
-    See Also
-    --------
-    block_inverse, block_determinant
     """
     a = as_square_matrix(a)
     n = a.rows
@@ -217,15 +271,28 @@ def cyclic_block_determinant(g: Sequence[Any], d: Sequence[Any]) -> sp.Expr:
 
         det a = det gn ... det g2 * det(g1 + d1 gn^-1 dn g(n-1)^-1 d(n-1) ... g2^-1 d2)
 
+    Parameters
+    ----------
+    g : sequence of Matrix
+        The n >= 2 square diagonal blocks ``[g1, ..., gn]`` (a list or tuple); ``g2, ..., gn`` must be invertible.
+    d : sequence of Matrix
+        The n off-diagonal blocks ``[d1, ..., dn]`` (same length as ``g``): ``d1`` in the top-right corner, ``dk``
+        (k >= 2) below ``g(k-1)`` with a minus sign.
+
+    Returns
+    -------
+    Expr
+        ``det a``, simplified.
+
+    See Also
+    --------
+    block_determinant
+
     Examples
     --------
     >>> import sympy as sp
     >>> cyclic_block_determinant([sp.Matrix([[1]]), sp.Matrix([[2]])], [sp.Matrix([[3]]), sp.Matrix([[4]])])
     14
-
-    See Also
-    --------
-    block_determinant
     """
     if not isinstance(g, Sequence) or not isinstance(d, Sequence):
         raise ParameterError(f"g and d must be sequences of matrices, got {type(g).__name__} and {type(d).__name__}")
@@ -259,6 +326,15 @@ def triangular_inverse_series(c: Any) -> sp.Matrix:
 
     ``c = a E + gamma`` upper triangular with equal diagonal ``a != 0``; ``gamma^n = 0`` ends the series.
 
+    Parameters
+    ----------
+    c : Matrix, nested list or ndarray
+        Square upper triangular matrix whose diagonal entries all equal the same non-zero ``a``.
+
+    See Also
+    --------
+    triangular_adjugate_series
+
     Examples
     --------
     >>> import sympy as sp
@@ -267,10 +343,6 @@ def triangular_inverse_series(c: Any) -> sp.Matrix:
     [1, -2,  5],
     [0,  1, -4],
     [0,  0,  1]])
-
-    See Also
-    --------
-    triangular_adjugate_series
     """
     c, a, gamma = _equal_diagonal(c)
     if _is_zero(a):
@@ -287,6 +359,15 @@ def triangular_inverse_series(c: Any) -> sp.Matrix:
 def triangular_adjugate_series(c: Any) -> sp.Matrix:
     """``adj c = E a^(n-1) - a^(n-2) gamma + … + (-1)^(n-1) gamma^(n-1)`` (Bulgakov (1.74)), valid also for a = 0.
 
+    Parameters
+    ----------
+    c : Matrix, nested list or ndarray
+        Square upper triangular matrix whose diagonal entries all equal the same ``a`` (zero allowed).
+
+    See Also
+    --------
+    triangular_inverse_series
+
     Examples
     --------
     >>> import sympy as sp
@@ -295,10 +376,6 @@ def triangular_adjugate_series(c: Any) -> sp.Matrix:
     [0, 0, 1],
     [0, 0, 0],
     [0, 0, 0]])
-
-    See Also
-    --------
-    triangular_inverse_series
     """
     c, a, gamma = _equal_diagonal(c)
     n = c.rows

@@ -187,6 +187,18 @@ def danilevsky(A: sp.Matrix, lam: sp.Symbol) -> sp.Poly:
     degenerate case).  Float matrices use partial pivoting (the largest entry of the row left of the diagonal)
     and treat entries below ``1e-13 max|a_ij|`` as zero.
 
+    Parameters
+    ----------
+    A : Matrix
+        Square, non-empty matrix (exact, symbolic or float entries).
+    lam : Symbol
+        The variable of the polynomial; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    Poly
+        Monic polynomial ``det(λE - A)`` of degree n in ``lam``.
+
     Examples
     --------
     >>> import sympy as sp
@@ -204,6 +216,23 @@ def danilevsky(A: sp.Matrix, lam: sp.Symbol) -> sp.Poly:
 def charpoly(A: sp.Matrix, lam: sp.Symbol, method: str = "leverrier") -> sp.Poly:
     """``det(λE - A)`` by ``method`` in {"leverrier", "krylov", "danilevsky", "berkowitz"} (the last is SymPy's).
 
+    Parameters
+    ----------
+    A : Matrix
+        Square, non-empty matrix (exact or symbolic entries).
+    lam : Symbol
+        The variable of the polynomial; it must be a SymPy Symbol.
+    method : {"leverrier", "krylov", "danilevsky", "berkowitz"}
+        Method, one of the four names: :func:`leverrier`, :func:`krylov`, :func:`danilevsky` or SymPy's
+        Berkowitz algorithm.
+
+    Returns
+    -------
+    Poly
+        Monic polynomial ``det(λE - A)`` of degree n in ``lam``.
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> charpoly(sp.Matrix([[0, 1], [-4, 0]]), sp.Symbol("l"), method="danilevsky").as_expr()
     l**2 + 4
@@ -223,6 +252,18 @@ def adjugate_poly(A: sp.Matrix, lam: sp.Symbol) -> sp.Matrix:
 
     ``F(λ) = E λ^(n-1) + (A + k_1 E) λ^(n-2) + ... + (A^(n-1) + k_1 A^(n-2) + ... + k_(n-1) E)`` where
     ``det(λE - A) = λ^n + k_1 λ^(n-1) + ... + k_n``.
+
+    Parameters
+    ----------
+    A : Matrix
+        Square, non-empty n x n matrix (exact or symbolic entries).
+    lam : Symbol
+        The variable λ of ``F(λ)``; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    Matrix
+        n x n matrix whose entries are polynomials of degree <= n - 1 in ``lam`` (expanded).
 
     Examples
     --------

@@ -240,6 +240,18 @@ def pencil_modal_matrix(a: Any, b: Any) -> ModalMatrix:
     ``W a V = diag((q - 1)! D_sig(l_sig) E_q)`` with ``Delta = det(a l + b)``; for simple roots
     ``W_k a V_k = Delta'(l_k)`` (1.312).  :func:`modal_matrix` is the case ``a = E``, ``b = -A``.
 
+    Parameters
+    ----------
+    a : Matrix, nested list or ndarray
+        Nonsingular square coefficient of ``l`` in the pencil ``a l + b``.
+    b : Matrix, nested list or ndarray
+        Square constant term of the pencil, of the same shape as ``a``.
+
+    Returns
+    -------
+    ModalMatrix
+        Unpacks as ``V, W``; also ``eigenvalues``, ``norms`` (= ``W a V``), ``Lambda``, ``inverse``.
+
     Examples
     --------
     >>> import sympy as sp
@@ -269,6 +281,8 @@ class TriangularForm(SymPyPrintable):
     pivots : tuple of int
         Pivot columns; ``(0, 1, ..., rank - 1)`` is Luzin's case (a non-vanishing rank-``r`` minor in the first
         ``r`` columns), where ``H`` is upper triangular.
+    lam : Symbol
+        The variable of the polynomial entries of ``f``, ``H`` and ``U``.
     """
 
     H: sp.Matrix
@@ -305,6 +319,18 @@ def luzin_form(f: Any, lam: sp.Symbol) -> TriangularForm:
 
     What is reconstructed: the book's displayed matrices are illegible in the available copy; the statement above
     and the example below are a reconstruction of §1.22 Ex. 1.
+
+    Parameters
+    ----------
+    f : Matrix or nested list
+        Rectangular m x n matrix whose entries must be polynomials in ``lam``.
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    TriangularForm
+        ``H``, the unimodular ``U`` with ``U f = H``, and the pivot columns.
 
     Examples
     --------

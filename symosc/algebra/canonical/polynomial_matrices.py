@@ -67,6 +67,22 @@ def _gcd(exprs: list[sp.Expr], lam: sp.Symbol) -> sp.Expr:
 def determinantal_divisors(f: Any, lam: sp.Symbol) -> list[sp.Expr]:
     """``[D_1, ..., D_r]``: monic gcd of all k-th order minors, k = 1..rank (Bulgakov §1.17).
 
+    Parameters
+    ----------
+    f : Matrix or nested list
+        Rectangular matrix whose entries must be polynomials in ``lam`` (other symbols are constants).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    list of Expr
+        The monic divisors ``D_1, ..., D_r`` (r the rank of ``f``), each dividing the next.
+
+    See Also
+    --------
+    invariant_factors, elementary_divisors, smith_form
+
     Examples
     --------
     Bulgakov §1.18:
@@ -131,6 +147,24 @@ def _divisors_by_minors(M: sp.Matrix, lam: sp.Symbol) -> list[sp.Expr]:
 def invariant_factors(f: Any, lam: sp.Symbol) -> list[sp.Expr]:
     """``[E_1, ..., E_r]`` with ``E_k = D_k/D_(k-1)``; each divides the next (1.158).
 
+    Parameters
+    ----------
+    f : Matrix or nested list
+        Rectangular matrix whose entries must be polynomials in ``lam`` (other symbols are constants).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    list of Expr
+        The monic invariant factors ``E_1, ..., E_r`` (r the rank of ``f``), expanded.
+
+    See Also
+    --------
+    determinantal_divisors, elementary_divisors, smith_form
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> l = sp.Symbol("l")
     >>> f = sp.Matrix([[l**2 - 2*l + 1, l - 1, l - 1], [l - 1, l**2 - 2*l + 1, l - 1]])
@@ -167,6 +201,22 @@ def elementary_divisors(f: Any, lam: sp.Symbol) -> dict[sp.Expr, list[int]]:
     When an invariant factor has roots SymPy cannot express in radicals, its irreducible factors are used as
     keys instead of roots.
 
+    Parameters
+    ----------
+    f : Matrix or nested list
+        Rectangular matrix whose entries must be polynomials in ``lam`` (other symbols are constants).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    dict
+        ``{root (or monic irreducible factor): sorted list of exponents}``.
+
+    See Also
+    --------
+    invariant_factors, pencil_divisors
+
     Examples
     --------
     >>> import sympy as sp
@@ -187,7 +237,12 @@ class SmithForm(SymPyPrintable):
 
     Attributes
     ----------
-    S, U, V : Matrix
+    S : Matrix
+        The diagonal Smith form ``U f V`` (same shape as ``f``).
+    U : Matrix
+        Unimodular row transform (square, constant non-zero determinant).
+    V : Matrix
+        Unimodular column transform (square, constant non-zero determinant).
     invariant_factors : list of Expr
         The non-zero diagonal entries of S.
     """
@@ -217,6 +272,18 @@ def smith_form(f: Any, lam: sp.Symbol) -> SmithForm:
 
     Elementary operations over the polynomials in ``lam`` (Euclid's algorithm on the pivot's row and column)
     give ``U f V = S = diag(E_1, ..., E_r, 0, ...)`` with ``det U`` and ``det V`` non-zero constants.
+
+    Parameters
+    ----------
+    f : Matrix or nested list
+        Rectangular matrix whose entries must be polynomials in ``lam`` (other symbols are constants).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    SmithForm
+        ``S``, ``U``, ``V`` and the invariant factors.
 
     See Also
     --------
@@ -287,6 +354,18 @@ def minimal_polynomial(A: Any, lam: sp.Symbol) -> sp.Expr:
 
     ``D_(n-1)`` is the gcd of the entries of the adjugate ``F(λ) = adj(λE - A)`` (computed by (1.219)).
 
+    Parameters
+    ----------
+    A : Matrix, nested list or ndarray
+        Square, non-empty constant matrix (exact or symbolic entries, no ``lam`` in them).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    Expr
+        The monic minimal polynomial in ``lam``, expanded.
+
     Examples
     --------
     >>> import sympy as sp
@@ -314,6 +393,23 @@ def polymatrix_divmod(f: Any, g: Any, lam: sp.Symbol, side: str = "left") -> tup
     ``side="left"``: ``g = f S + T`` with ``f^-1 T`` strictly proper (S = polynomial part of ``f^-1 g``, 1.168–1.171);
     ``side="right"``: ``g = S f + T`` with ``T f^-1`` strictly proper (1.172).  When the leading coefficient of f is
     non-singular this is ordinary long division and ``deg T < deg f``.
+
+    Parameters
+    ----------
+    f : Matrix or nested list
+        The divisor: a square polynomial matrix in ``lam`` with ``det f`` not identically zero.
+    g : Matrix or nested list
+        The dividend: a polynomial matrix in ``lam`` with as many rows as ``f`` (``side="left"``) or as many
+        columns (``side="right"``).
+    lam : Symbol
+        The polynomial variable; it must be a SymPy Symbol.
+    side : {"left", "right"}
+        Which division: ``"left"`` gives ``g = f S + T``, ``"right"`` gives ``g = S f + T``.
+
+    Returns
+    -------
+    (S, T) : tuple of Matrix
+        Quotient and remainder.
 
     Examples
     --------
@@ -356,7 +452,17 @@ def polymatrix_divmod(f: Any, g: Any, lam: sp.Symbol, side: str = "left") -> tup
 
 @dataclass(frozen=True)
 class PencilDivisors(SymPyPrintable):
-    """Elementary divisors of a regular pencil ``λB - A``: finite ``{a: [e...]}`` and infinite ``[e...]``."""
+    """Elementary divisors of a regular pencil ``λB - A``: finite ``{a: [e...]}`` and infinite ``[e...]``.
+
+    Attributes
+    ----------
+    finite : dict
+        ``{root a: sorted exponents [e...]}``, meaning the finite divisors ``(λ - a)^e``.
+    infinite : list of int
+        Exponents ``e`` of the infinite divisors ``μ^e`` (those of ``B - μA`` at μ = 0).
+    determinant : Expr
+        ``det(λB - A)``, expanded (not identically zero: the pencil is regular).
+    """
 
     finite: dict
     infinite: list[int]
@@ -369,6 +475,20 @@ def pencil_divisors(A: Any, B: Any, lam: sp.Symbol) -> PencilDivisors:
 
     Two regular pencils are strictly equivalent (``u(λB - A)v = λB1 - A1`` with constant u, v) iff these agree.
     The infinite divisors are the divisors ``μ^e`` at μ = 0 of the reversed pencil ``B - μA``.
+
+    Parameters
+    ----------
+    A : Matrix, nested list or ndarray
+        Square constant term of the pencil ``λB - A``.
+    B : Matrix, nested list or ndarray
+        Square coefficient of ``λ``, of the same shape as ``A``; ``det(λB - A)`` must not vanish identically.
+    lam : Symbol
+        The pencil's variable λ; it must be a SymPy Symbol.
+
+    Returns
+    -------
+    PencilDivisors
+        Finite and infinite elementary divisors and ``det(λB - A)``.
 
     Examples
     --------

@@ -86,7 +86,18 @@ class AnalyticContinuation(SymPyPrintable):
         return rf"$f(A) = {body},\quad \text{{{len(self.disks)} disk(s), error}} \approx {self.error_estimate:.2g}$"
 
     def plot(self, *, ax: Any = None) -> Any:
-        """Draw the path of centers, the disks of convergence used and the eigenvalues in the complex plane."""
+        """Draw the path of centers, the disks of convergence used and the eigenvalues in the complex plane.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+            The axes drawn on.
+        """
         import matplotlib.pyplot as plt
         from matplotlib.patches import Circle
 

@@ -47,6 +47,7 @@ def interpolation_basis(roots: Any, lam: sp.Symbol) -> dict[sp.Expr, list[sp.Exp
     roots : dict or sequence
         ``{node: multiplicity}`` or a sequence of distinct simple nodes.
     lam : Symbol
+        The variable λ of the cardinal polynomials.
 
     Examples
     --------
@@ -74,6 +75,28 @@ def interpolation_basis(roots: Any, lam: sp.Symbol) -> dict[sp.Expr, list[sp.Exp
 def interpolation_polynomial(f: Any, roots: Any, lam: sp.Symbol, *, var: sp.Symbol | None = None) -> sp.Expr:
     """The Lagrange–Sylvester polynomial of f on the nodes: it matches ``f^(p)(λ_σ)`` for ``p < q_σ``.
 
+    Parameters
+    ----------
+    f : Lambda, function class, callable or Expr
+        Scalar function, analytic at every node: ``sympy.Lambda(x, ...)``, ``sympy.exp``, ``lambda x: ...`` or an
+        expression in ``var``.
+    roots : dict or sequence
+        Interpolation nodes: ``{node: multiplicity}`` (multiplicities positive integers) or a sequence of distinct
+        simple nodes.
+    lam : Symbol
+        The variable λ of the returned polynomial.
+    var : Symbol, optional
+        The variable of ``f`` when ``f`` is an expression with more than one free symbol.
+
+    Returns
+    -------
+    Expr
+        The polynomial ``r(λ)`` of degree < Σ q_σ, expanded.
+
+    See Also
+    --------
+    interpolation_basis, matrix_function
+
     Examples
     --------
     >>> import sympy as sp
@@ -99,6 +122,25 @@ def interpolation_polynomial(f: Any, roots: Any, lam: sp.Symbol, *, var: sp.Symb
 @validated
 def function_elementary_divisors(A: Any, f: Any, *, var: sp.Symbol | None = None) -> dict[sp.Expr, list[int]]:
     """Elementary divisors ``{μ: [sizes]}`` of ``f(A)`` predicted from the Jordan structure of A (§1.34–1.36).
+
+    Parameters
+    ----------
+    A : Matrix, nested list or ndarray
+        Square, non-empty matrix with exact or symbolic entries.
+    f : Lambda, function class, callable or Expr
+        Scalar function, analytic at every eigenvalue of ``A``: ``sympy.Lambda(x, ...)``, ``sympy.exp``,
+        ``lambda x: ...`` or an expression in ``var``.
+    var : Symbol, optional
+        The variable of ``f`` when ``f`` is an expression with more than one free symbol.
+
+    Returns
+    -------
+    dict
+        ``{μ = f(λ): sorted list of block sizes}``.
+
+    See Also
+    --------
+    elementary_divisors, matrix_function
 
     Examples
     --------

@@ -34,7 +34,19 @@ _METHODS = ("auto", "sylvester", "confluent")
 
 @dataclass(frozen=True)
 class MatrixFunction(SymPyPrintable):
-    """``f(A)`` together with the spectral data it was built from (returned when ``spectral=True``)."""
+    """``f(A)`` together with the spectral data it was built from (returned when ``spectral=True``).
+
+    Attributes
+    ----------
+    value : Matrix or ndarray
+        ``f(A)`` (an ndarray when ``A`` was given as an ndarray).
+    spectral : SpectralDecomposition
+        The roots, projectors and nilpotents of ``A`` used (clusters in floating point).
+    method : str
+        The method requested: ``"auto"``, ``"sylvester"`` or ``"confluent"``.
+    f : Expr
+        The scalar function as an expression in a dummy variable.
+    """
 
     value: sp.Matrix
     spectral: SpectralDecomposition
@@ -220,6 +232,27 @@ def series_converges(A: Any, radius: Any, *, center: Any = 0, inner_radius: Any 
     scalar disk ``|λ - center| < radius`` (for a Laurent series, inside the annulus
     ``inner_radius < |λ - center| < radius``) and diverges if one lies outside.  On the boundary the test says
     nothing: ``None`` is returned.
+
+    Parameters
+    ----------
+    A : Matrix, nested list or ndarray
+        Square, non-empty matrix (exact, symbolic or float entries).
+    radius : number or Expr
+        Radius of convergence R > 0 of the scalar series (``sympy.oo`` for an entire function).
+    center : number or Expr
+        Center β of the expansion (the series is in ``A - βE``).
+    inner_radius : number or Expr
+        Inner radius (>= 0) of the annulus of a Laurent series; 0 for a power series.
+
+    Returns
+    -------
+    bool or None
+        True when the series converges, False when it diverges, None when an eigenvalue lies on the boundary (or
+        the test cannot decide for symbolic entries).
+
+    See Also
+    --------
+    matrix_function, matrix_power_series
 
     Examples
     --------

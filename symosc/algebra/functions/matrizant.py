@@ -67,6 +67,14 @@ class Matrizant(SymPyPrintable):
 
     Attributes
     ----------
+    A : Matrix
+        The square coefficient matrix ``A(t)``.
+    t : Symbol
+        The independent variable.
+    t0 : Expr
+        Initial point, where ``Ω(t0) = E``.
+    order : int
+        Number of iterated integrals kept (>= 0).
     series : Matrix
         The truncated sum, a symbolic matrix in ``t``.
     terms : tuple of Matrix
@@ -81,7 +89,22 @@ class Matrizant(SymPyPrintable):
     terms: tuple[sp.Matrix, ...] = field(repr=False)
 
     def sup_norm(self, t1: float, values: Mapping | None = None, samples: int = 2049) -> float:
-        """``U ≈ max |a_jk(s)|`` on ``[t0, t1]``, estimated on a grid of ``samples`` points (plus 5 % margin)."""
+        """``U ≈ max |a_jk(s)|`` on ``[t0, t1]``, estimated on a grid of ``samples`` points (plus 5 % margin).
+
+        Parameters
+        ----------
+        t1 : float
+            End of the interval ``[t0, t1]``; a finite real number.
+        values : mapping of Symbol or name to number, optional
+            Values of the parameters in ``A`` other than ``t`` (keys are symbols or their names).
+        samples : int
+            Number of grid points (>= 2) on which ``|a_jk|`` is sampled.
+
+        Returns
+        -------
+        float
+            The estimate of ``U``, 5 % above the largest sampled ``|a_jk|``.
+        """
         A = bind(self.A, values or {})
         f = _compile(A, [self.t])
         grid = np.linspace(float(self.t0), float(t1), samples)
@@ -93,6 +116,20 @@ class Matrizant(SymPyPrintable):
 
         ``Σ_(k>order) U^k n^(k-1) |t1 - t0|^k / k!``; ``U`` bounds ``|a_jk|`` on the interval (estimated on a grid
         when not given).
+
+        Parameters
+        ----------
+        t1 : float
+            End of the interval ``[t0, t1]``; a finite real number.
+        U : float, optional
+            Bound (>= 0) on every ``|a_jk(s)|`` for s in ``[t0, t1]``; estimated by :meth:`sup_norm` when omitted.
+        values : mapping of Symbol or name to number, optional
+            Values of the parameters in ``A`` other than ``t`` (keys are symbols or their names).
+
+        Returns
+        -------
+        float
+            The bound on every entry of ``Ω(t1) - series(t1)``.
         """
         n = self.A.rows
         if U is None:
@@ -107,6 +144,26 @@ class Matrizant(SymPyPrintable):
         above ``1e-8`` of the value warns (:class:`~symosc.errors.AccuracyWarning`), one above the value itself
         raises ConvergenceError.
 
+        Parameters
+        ----------
+        t1 : float
+            Time at which ``Ω`` is evaluated; a finite real number.
+        values : mapping of Symbol or name to number, optional
+            Values of the parameters in ``A`` other than ``t`` (keys are symbols or their names);
+            every parameter needs a value.
+        tol : float, optional
+            Largest acceptable a-priori bound (> 0) on the truncation error (:meth:`bound`); not checked when omitted.
+        fallback : bool
+            When the bound exceeds ``tol``: True integrates numerically (:func:`matrizant_numeric`), False raises
+            ConvergenceError.
+
+        Returns
+        -------
+        ndarray
+            The n x n matrix ``Ω(t1)``.
+
+        Examples
+        --------
         >>> import sympy as sp
         >>> t = sp.Symbol("t")
         >>> M = matrizant(sp.Matrix([[0, 1], [-1, 0]]), t, 0, order=25)
@@ -225,6 +282,34 @@ def matrizant_numeric(
 
     ``A`` is compiled with :func:`symosc.numeric.compile`; ``values`` supplies other parameters.
 
+    Parameters
+    ----------
+    A : Matrix
+        Square matrix whose entries are functions of ``t`` (and of the parameters named in ``values``).
+    t : Symbol
+        The independent variable.
+    t0 : float
+        Initial time, where ``Ω(t0) = E``; a finite real number.
+    t1 : float
+        Final time at which ``Ω`` is returned; a finite real number (``t1 < t0`` integrates backwards).
+    values : mapping of Symbol or name to number, optional
+        Values of every parameter in ``A`` other than ``t`` (keys are symbols or their names).
+    rtol : float
+        Relative tolerance (> 0) of the integrator.
+    atol : float
+        Absolute tolerance (> 0) of the integrator.
+
+    Returns
+    -------
+    ndarray
+        The n x n matrix ``Ω(t1)``.
+
+    See Also
+    --------
+    matrizant, matrizant_product
+
+    Examples
+    --------
     >>> import sympy as sp
     >>> t = sp.Symbol("t")
     >>> matrizant_numeric(sp.Matrix([[0, 1], [-1, 0]]), t, 0.0, 1.0).round(10).tolist()

@@ -88,8 +88,10 @@ def matrizant_product(
         ``A(t)``, square, entries that SymPy integrates in closed form (polynomials, exponentials, sines, ...).
     t : Symbol
         Time variable.
-    t0, t1 : float
-        Interval.
+    t0 : float
+        Start of the interval, where ``Ω(t0) = E``; a finite real number.
+    t1 : float
+        End of the interval, at which ``Ω`` is returned; a finite real number.
     order : int
         Series order on each piece.
     tol : float

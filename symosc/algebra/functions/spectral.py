@@ -51,6 +51,11 @@ class SpectralComponent(SymPyPrintable):
         ``(η_σ, η_σ^2, ..., η_σ^(e_σ-1))`` with ``η_σ = (A - λ_σE) ε_σ``.
     nodes : tuple
         Floating point only: the computed eigenvalues of the cluster.
+    _family : tuple or None
+        Internal, set by :func:`spectral_decomposition` (None when built by hand): ``(p, ρ, matrices)`` with ``p``
+        the irreducible factor (a Poly) of the characteristic polynomial this root belongs to, ``ρ`` a generic root
+        of ``p`` and the projector and nilpotents as polynomials in ``ρ``; it lets :meth:`SpectralDecomposition.apply`
+        sum over all roots of ``p`` at once.
     """
 
     root: sp.Expr
@@ -72,6 +77,15 @@ class SpectralDecomposition(SymPyPrintable):
     """Spectral data of a matrix: ``A = Σ_σ (λ_σ ε_σ + η_σ)`` and ``Σ ε_σ = E``.
 
     Use :meth:`apply` for ``f(A)`` (exact case only), :attr:`roots` and :attr:`projectors` to inspect it.
+
+    Attributes
+    ----------
+    matrix : Matrix
+        The decomposed square matrix ``A``.
+    components : tuple of SpectralComponent
+        One component per distinct root (floating point: per cluster of nearly equal roots).
+    exact : bool
+        True for an exact or symbolic decomposition (1.284–1.285); False for floating-point clusters.
     """
 
     matrix: sp.Matrix = field(repr=False)
@@ -91,6 +105,27 @@ class SpectralDecomposition(SymPyPrintable):
     def apply(self, f, var: sp.Symbol | None = None) -> sp.Matrix:
         """``f(A)`` by (1.287) from these components (exact decompositions only).
 
+        Parameters
+        ----------
+        f : Lambda, function class, callable or Expr
+            Scalar function, analytic at every root: ``sympy.Lambda(x, ...)``, ``sympy.exp``, ``lambda x: ...`` or
+            an expression in ``var``.
+        var : Symbol, optional
+            The variable of ``f`` when ``f`` is an expression with more than one free symbol.
+
+        Returns
+        -------
+        Matrix
+            ``f(A)``.
+
+        Raises
+        ------
+        ModelError
+            If the decomposition is not exact, or ``f`` (or a derivative the Jordan structure needs) is not defined
+            at a root.
+
+        Examples
+        --------
         >>> import sympy as sp
         >>> S = spectral_decomposition(sp.Matrix([[1, 1], [0, 1]]))
         >>> S.apply(sp.Lambda(sp.Symbol("x"), sp.Symbol("x")**3))
