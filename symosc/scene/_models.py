@@ -15,6 +15,7 @@ import sympy as sp
 
 from ._log import DerivationLog
 from ._parse import Ctx, parse_sympy
+from ._units import check_lagrangian_units
 
 __all__ = ["MODELS", "ModelSpec", "build_model"]
 
@@ -148,6 +149,13 @@ def _lagrangian(ctx: Ctx, opts: Mapping[str, Any], log: DerivationLog) -> Mechan
     vibrating = t in (T.free_symbols | V.free_symbols)
     model = MechanicalModel(log, lambda: system, f"Lagrangian system in {', '.join(coords)}", vibrating=vibrating)
     model.__dict__["system"] = system  # already built (and logged)
+
+    def check_units(given: dict) -> None:
+        by_name = {s.name: s for s in system.parameters}
+        velocities = {dot(q): q for q in qs}
+        check_lagrangian_units(T, V, R, Q, qs, velocities, t, {by_name[k]: v for k, v in given.items()})
+
+    model.check_units = check_units
     return model
 
 

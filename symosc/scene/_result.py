@@ -308,13 +308,17 @@ class SceneResult(SymPyPrintable):
             "source": self.source,
             "system": self.system,
             "parameters": dict(self.parameters),
-            "questions": [{"kind": r.kind, "title": r.title, **r.data} for r in self.results],
+            "questions": [{"kind": r.kind, "title": r.title, **_split_timings(r.data)[0]} for r in self.results],
             "derivation_log": [{"step": e.step, "detail": e.detail} for e in self.log],
         }
 
     def timings(self) -> dict[str, Any]:
-        """The derivation log with the seconds each step took (written to ``timings.json``)."""
-        return {"derivation_log": [{"step": e.step, "seconds": e.seconds} for e in self.log]}
+        """The derivation log with the seconds each step took, and the timings inside the answers (keys ending in
+        ``_time`` or ``seconds``), written to ``timings.json``."""
+        return {
+            "derivation_log": [{"step": e.step, "seconds": e.seconds} for e in self.log],
+            "questions": [{"kind": r.kind, **_split_timings(r.data)[1]} for r in self.results],
+        }
 
     def write(self, outdir: str | os.PathLike, fmt: str = "md") -> list[Path]:
         """Write ``report.<fmt>``, ``results.json``, ``timings.json`` and the figures (PNG) as the folder ``outdir``.
@@ -322,7 +326,7 @@ class SceneResult(SymPyPrintable):
         The folder is written whole or not at all: everything goes into a fresh hidden sibling folder that then
         replaces ``outdir`` (no figures of an earlier run stay behind; a failure or a kill leaves ``outdir`` as it
         was).  ``outdir`` must be new, empty, or an earlier run's output.  ``results.json`` holds no timings, so two
-        runs of a scene give byte-identical files.  Figures need matplotlib; without it the report says so and the
+        runs of a scene give byte-identical files.  Figures need matplotlib; without it ``report.<fmt>`` says so and the
         rest is written.
 
         Parameters
@@ -330,15 +334,17 @@ class SceneResult(SymPyPrintable):
         outdir : str or PathLike
             The output folder.
         fmt : {"md", "html", "json"}
-            Format of the report (``"json"``: no report file, only ``results.json``).
+            Format of ``report.<fmt>`` (``"json"``: no report file, only ``results.json``).
 
         Returns
         -------
         list of Path
             The files written, as paths inside ``outdir``.
         """
+        from .._validate import check_choice
         from ._output import replacing_folder
 
+        check_choice("fmt", fmt, ("md", "html", "json"))
         outdir = Path(outdir)
         figs: dict[str, str] = {}
         notes: list[str] = []
@@ -376,6 +382,30 @@ class SceneResult(SymPyPrintable):
         for n in notes:
             print(n)
         return [outdir / name for name in names]
+
+
+def _is_timing(key: Any) -> bool:
+    return isinstance(key, str) and (key.endswith("_time") or key.endswith("seconds"))
+
+
+def _split_timings(data: Any) -> tuple[Any, Any]:
+    """``(data without timings, the timings)``: wall-clock numbers differ between runs, so they are kept out of
+    ``results.json``."""
+    if isinstance(data, dict):
+        kept, timed = {}, {}
+        for k, v in data.items():
+            if _is_timing(k):
+                timed[k] = v
+                continue
+            kept[k], sub = _split_timings(v)
+            if sub:
+                timed[k] = sub
+        return kept, timed
+    if isinstance(data, list | tuple):
+        parts = [_split_timings(v) for v in data]
+        timed = [t for _, t in parts]
+        return [k for k, _ in parts], (timed if any(timed) else {})
+    return data, {}
 
 
 def _json_default(obj: Any) -> Any:

@@ -65,6 +65,8 @@ _EXAMPLES = {
 class UnitError(ValueError):
     """A unit that is unknown or has the wrong dimension (message says which units are accepted)."""
 
+    parameter: str | None = None  # the parameter at fault, when one is
+
 
 def _dim_name(dim: tuple[int, int, int]) -> str:
     for name, d in DIMENSIONS.items():
@@ -84,7 +86,7 @@ _MAX_UNIT_EXPONENT = 12
 _TOKEN = re.compile(r"\s*([*/])?\s*([A-Za-zµ0-9]+)(?:\s*(?:\^|\*\*)\s*(-?\d+))?")
 
 
-def _parse_unit(text: str) -> tuple[float, tuple[int, int, int]]:
+def parse_unit(text: str) -> tuple[float, tuple[int, int, int]]:
     factor, dim = 1.0, [0, 0, 0]
     pos, first = 0, True
     text = text.strip()
@@ -109,6 +111,16 @@ def _parse_unit(text: str) -> tuple[float, tuple[int, int, int]]:
             dim[i] += sign * exp * d[i]
         pos, first = m.end(), False
     return factor, tuple(dim)
+
+
+def parse_quantity_unit(value: object) -> tuple[int, int, int] | None:
+    """The (kg, m, s) exponents of the unit in a ``"VALUE UNIT"`` string (None for a bare number, in SI)."""
+    if not isinstance(value, str):
+        return None
+    m = re.fullmatch(r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(.*?)\s*", value)
+    if not m or not m.group(1):
+        return None
+    return parse_unit(m.group(1))[1]
 
 
 def parse_quantity(value: object, dimension: str | None) -> float:
@@ -145,7 +157,7 @@ def parse_quantity(value: object, dimension: str | None) -> float:
         raise UnitError(f"{value!r}: the number is beyond the range of floating point")
     if not unit:
         return number
-    factor, dim = _parse_unit(unit)
+    factor, dim = parse_unit(unit)
     if dimension is not None and dim != DIMENSIONS[dimension]:
         raise UnitError(
             f"{value!r} is {_article(_dim_name(dim))}, expected {_article(dimension)} "
@@ -155,3 +167,156 @@ def parse_quantity(value: object, dimension: str | None) -> float:
     if not math.isfinite(out) or (out == 0 and number != 0):
         raise UnitError(f"{value!r} is beyond the range of floating point in SI units")
     return out
+
+
+# ------------------------------------------------------------------------------------- dimensions of a Lagrangian
+#: (kg, m, s) exponents of the quantities a Lagrangian's parts must have
+_ENERGY, _POWER = (1, 2, -2), (1, 2, -3)
+
+
+class _Dims:
+    """Dimensional analysis of a Lagrangian system: every symbol's dimension is an unknown vector of exponents;
+    each additive term of T and V is an energy, of R a power, ``Q_i q_i`` an energy, a velocity is its coordinate
+    per second, function arguments are dimensionless.  The constraints are linear in the unknowns."""
+
+    def __init__(self, coordinates, velocities: dict, t) -> None:
+        self.rows: list[tuple[dict, tuple]] = []  # (coefficients by symbol, constant vector) == 0
+        self.velocities, self.t, self.coordinates = velocities, t, list(coordinates)
+
+    def dim(self, e) -> tuple[dict, tuple]:
+        import sympy as sp
+
+        if e.is_Number or e is sp.pi or e is sp.E or e is sp.I:
+            return {}, (0, 0, 0)
+        if e == self.t:
+            return {}, (0, 0, 1)
+        if e.is_Symbol:
+            if e in self.velocities:
+                return {self.velocities[e]: 1}, (0, 0, -1)
+            return {e: 1}, (0, 0, 0)
+        if e.is_Add:
+            first, *rest = (self.dim(a) for a in e.args)
+            for other in rest:
+                self.equal(other, first)
+            return first
+        if e.is_Mul:
+            coeffs: dict = {}
+            const = (0, 0, 0)
+            for a in e.args:
+                c, k = self.dim(a)
+                for s, v in c.items():
+                    coeffs[s] = coeffs.get(s, 0) + v
+                const = tuple(x + y for x, y in zip(const, k, strict=True))
+            return coeffs, const
+        if e.is_Pow:
+            base, exp = e.args
+            if exp.is_Rational:
+                c, k = self.dim(base)
+                return {s: v * exp for s, v in c.items()}, tuple(x * exp for x in k)
+            self.equal(self.dim(base), ({}, (0, 0, 0)))
+            self.equal(self.dim(exp), ({}, (0, 0, 0)))
+            return {}, (0, 0, 0)
+        if isinstance(e, sp.Abs):
+            return self.dim(e.args[0])
+        for a in e.args:  # sin, cos, exp, log, ...: dimensionless arguments and value
+            self.equal(self.dim(a), ({}, (0, 0, 0)))
+        return {}, (0, 0, 0)
+
+    def equal(self, a: tuple[dict, tuple], b: tuple[dict, tuple]) -> None:
+        coeffs = dict(a[0])
+        for s, v in b[0].items():
+            coeffs[s] = coeffs.get(s, 0) - v
+        const = tuple(x - y for x, y in zip(a[1], b[1], strict=True))
+        self.rows.append(({s: v for s, v in coeffs.items() if v != 0}, const))
+
+    def solve(self, known: dict) -> tuple[bool, dict]:
+        """Consistency of the constraints with ``known`` dimensions, and every symbol's dimension when determined."""
+        import sympy as sp
+
+        symbols = sorted({s for c, _ in self.rows for s in c} | set(known) | set(self.coordinates), key=str)
+        index = {s: i for i, s in enumerate(symbols)}
+        rows = [(c, k) for c, k in self.rows] + [({s: 1}, tuple(-x for x in vec)) for s, vec in known.items()]
+        A = sp.zeros(len(rows), len(symbols))
+        B = sp.zeros(len(rows), 3)
+        for r, (c, k) in enumerate(rows):
+            for s, v in c.items():
+                A[r, index[s]] = sp.Rational(v)
+            for j in range(3):
+                B[r, j] = -sp.Rational(k[j])
+        aug = A.row_join(B)
+        rank_a, rank_aug = A.rank(), aug.rank()
+        if rank_aug > rank_a:
+            return False, {}
+        red, pivots = aug.rref()
+        out = {}
+        for r, col in enumerate(pivots):
+            if col >= len(symbols):
+                continue
+            others = [j for j in range(len(symbols)) if j != col and red[r, j] != 0]
+            if not others:
+                out[symbols[col]] = tuple(red[r, len(symbols) + j] for j in range(3))
+        return True, out
+
+
+def check_lagrangian_units(T, V, R, forces, coordinates, velocities: dict, t, given: dict) -> None:
+    """Check the units of the parameters of a Lagrangian system against the dimensions their places in T, V, R and
+    the forces imply.
+
+    Parameters
+    ----------
+    T, V, R : sympy.Expr
+        Kinetic energy, potential energy and Rayleigh dissipation function.
+    forces : sequence of sympy.Expr or None
+        Generalised forces, one per coordinate.
+    coordinates : sequence of Symbol
+        The coordinates.
+    velocities : dict
+        Velocity symbol -> its coordinate.
+    t : Symbol
+        Time.
+    given : dict
+        Parameter symbol -> ``(text, (kg, m, s) exponents)`` for each parameter the file gives with a unit.
+
+    Raises
+    ------
+    UnitError
+        A parameter whose unit contradicts its place; the message names it, its unit's dimension and the implied one.
+    """
+    dims = _Dims(coordinates, velocities, t)
+    for part, target in ((T, _ENERGY), (V, _ENERGY), (R, _POWER)):
+        if part != 0:
+            dims.equal(dims.dim(part), ({}, target))
+    for q, Q in zip(coordinates, forces or (), strict=False):
+        if Q != 0:
+            c, k = dims.dim(Q)
+            dims.equal(({**c, q: c.get(q, 0) + 1}, k), ({}, _ENERGY))
+    known = {s: vec for s, (_, vec) in given.items()}
+    consistent, _ = dims.solve(known)
+    if consistent:
+        return
+    suspects = []  # parameters whose unit alone, changed, would make the whole consistent
+    for s, (text, vec) in given.items():
+        others = {o: v for o, v in known.items() if o != s}
+        ok, solved = dims.solve(others)
+        if ok and s in solved:
+            implied = tuple(int(x) if x == int(x) else x for x in solved[s])
+            expected = _dim_name(implied) if all(isinstance(x, int) for x in implied) else str(implied)
+            examples = _EXAMPLES.get(expected)
+            suspects.append(
+                (
+                    str(s),
+                    f"{s} = {text!r} is {_article(_dim_name(vec))}, but its place in T, V, R and the forces makes "
+                    f"it {_article(expected)}" + (f" (units such as {examples})" if examples else ""),
+                )
+            )
+    if suspects:
+        text = suspects[0][1] if len(suspects) == 1 else "; or ".join(m for _, m in suspects)
+        if len(suspects) > 1:
+            text = f"the units of {', '.join(n for n, _ in suspects)} contradict each other: {text}"
+        error = UnitError(text)
+        error.parameter = suspects[0][0]
+        raise error
+    raise UnitError(
+        "the units of the parameters are not consistent with T, V, R and the forces (no single parameter is at "
+        f"fault; check the units of {', '.join(sorted(str(s) for s in given))})"
+    )

@@ -461,11 +461,26 @@ def _parameters(ctx: Ctx, model: Any, params: Mapping[str, Any]) -> dict[str, fl
             f"missing parameter(s) {', '.join(missing)} of the {model.describe}",
             f"add {missing[0]} = <value> under [parameters]",
         )
-    return {
+    values = {
         k: ctx.quantity(params[k], f"parameters.{k}", model.dimension(k), positive=model.positive(k))
         for k in valid
         if k in params
     }
+    check = getattr(model, "check_units", None)
+    if check is not None:  # a user Lagrangian: the units the file gives against their places in T, V, R, forces
+        from ._units import UnitError, parse_quantity_unit
+
+        given = {}
+        for k in values:
+            unit = parse_quantity_unit(params[k])
+            if unit is not None:
+                given[k] = (params[k], unit)
+        try:
+            check(given)
+        except UnitError as exc:
+            key = f"parameters.{exc.parameter}" if exc.parameter else "parameters"
+            raise ctx.error(key, str(exc), "give the unit its place implies, or fix T, V, R or the forces") from None
+    return values
 
 
 def _excitation(ctx: Ctx, model: Any, exc: Mapping[str, Any]) -> dict[str, float]:
