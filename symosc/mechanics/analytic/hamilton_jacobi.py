@@ -319,6 +319,7 @@ def separate_hamilton_jacobi(
     H : Expr
         Hamiltonian (no explicit time).
     coordinates, momenta : sequence of Symbol
+        The canonical coordinates ``q`` and their conjugate momenta ``p``, as many of each (paired in order).
     energy : Symbol, optional
         The energy constant ``h`` (default ``Symbol("h")``).
     factor : Expr, optional

@@ -40,6 +40,7 @@ class SteadyMotion(SymPyPrintable):
     Attributes
     ----------
     point, momenta : dict
+        The values of the non-cyclic coordinates and of the cyclic momenta at the steady motion.
     hessian : sympy.Matrix
         Hessian of the reduced potential at the point.
     stable : bool or None

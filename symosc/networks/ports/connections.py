@@ -311,6 +311,7 @@ def chain_power(section: Any, n: Any) -> sp.Matrix:
     Parameters
     ----------
     section : FourPole or 2x2 matrix
+        The repeated section (a four-pole, or its chain matrix).
     n : int or SymPy symbol
         Number of sections (a symbol gives the formula for general ``n``).
 

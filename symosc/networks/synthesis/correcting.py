@@ -497,6 +497,7 @@ def constant_resistance_bridged_t(link: CorrectingLink, R1: Any = None, *, metho
     Parameters
     ----------
     link : CorrectingLink
+        The constant-resistance lattice to convert (from :func:`correcting_link`).
     R1 : positive number, optional
         Series resistors (default ``W``).
     method : {"auto", "bott-duffin", "brune"}

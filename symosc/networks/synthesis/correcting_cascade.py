@@ -144,6 +144,7 @@ def correcting_cascade(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "a
         Rational transfer with numeric coefficients, regular in ``Re p >= 0`` and at infinity; its numerator and
         denominator must split into factors of degree at most 2 over the rationals.
     W : positive number
+        The common constant resistance of the links, which must be positive (default 1).
     p : sympy.Symbol, optional
         Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     method : {"auto", "bott-duffin", "brune"}
