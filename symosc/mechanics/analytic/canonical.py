@@ -198,7 +198,7 @@ def canonical_transformation(
         The new coordinates ``u``, as many as the coordinates.
     new_momenta : sequence of Symbol
         The new momenta ``v``, as many as the coordinates.
-    kind : {1, 2, 3, 4}
+    kind : int
         Kind of the generating function, which must be 1, 2, 3 or 4 (the table above).
     branch : int, optional
         Index (>= 0) of the solution of the relations to keep when SymPy finds several; an index past the last

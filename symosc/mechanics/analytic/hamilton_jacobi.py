@@ -188,7 +188,7 @@ def action_variable_numeric(
     energy : float
         The energy ``h`` of the libration, a finite number between the minimum of ``U`` and the level where the motion
         stops being a libration.
-    values : mapping of Symbol or str to float
+    values : mapping of Symbol or name to float
         Numbers for every parameter of ``H`` (keys are symbols or their names; ``{}`` when there are none).
     turning_points : (float, float)
         Guesses of the two ends of the libration, where ``U(q) = h``; refined with ``mpmath.findroot``.
