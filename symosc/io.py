@@ -58,6 +58,12 @@ def _srepr_or_none(value: Any) -> Any:
 def summary(obj: Any) -> dict[str, Any]:
     """The JSON-ready summary :func:`save` writes: class, version and the symbolic content in ``srepr``.
 
+    Parameters
+    ----------
+    obj : model or result
+        Any symosc object (or SymPy object); the symbolic attributes it has (coordinates, parameters, matrices,
+        energies, dataclass fields) are written as ``srepr`` strings, the others skipped.
+
     Examples
     --------
     >>> from symosc.models import n_link_pendulum
@@ -135,9 +141,25 @@ def load(path: str | Path) -> Any:
 
     Only load files from sources you trust: unpickling can run code.
 
+    Parameters
+    ----------
+    path : str or Path
+        The path given to :func:`save`, with or without the ``.pkl`` (or ``.json``) suffix; the ``.pkl`` file
+        must exist.
+
     See Also
     --------
     save, load_summary
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> import sympy as sp
+    >>> from symosc import load, save
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     _ = save(sp.Matrix([[1, 2]]), pathlib.Path(d) / "row")
+    ...     load(pathlib.Path(d) / "row.pkl")
+    Matrix([[1, 2]])
     """
     pkl, _ = _paths(path)
     if not pkl.exists():
@@ -175,6 +197,16 @@ def load_summary(path: str | Path) -> dict[str, Any]:
     See Also
     --------
     save, load
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> import sympy as sp
+    >>> from symosc.io import load_summary, save
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     _ = save(sp.Matrix([[1, 2]]), pathlib.Path(d) / "row")
+    ...     load_summary(pathlib.Path(d) / "row")["class"]
+    'sympy.matrices.dense.MutableDenseMatrix'
     """
     from ._parsing import ExpressionError, parse_srepr
 

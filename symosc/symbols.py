@@ -31,13 +31,36 @@ t = sp.Symbol("t")
 
 @validated
 def dot(q: sp.Symbol) -> sp.Symbol:
-    """Velocity symbol of the coordinate ``q`` (named ``<q>_dot``)."""
+    """Velocity symbol of the coordinate ``q`` (named ``<q>_dot``).
+
+    Parameters
+    ----------
+    q : sympy.Symbol
+        The coordinate, a plain Symbol; the velocity symbol keeps its assumptions (``real=True``, ...).
+
+    Examples
+    --------
+    >>> phi = sp.Symbol("phi", real=True)
+    >>> dot(phi), dot(phi).is_real
+    (phi_dot, True)
+    """
     return sp.Symbol(f"{q.name}_dot", **q.assumptions0)
 
 
 @validated
 def ddot(q: sp.Symbol) -> sp.Symbol:
-    """Acceleration symbol of the coordinate ``q`` (named ``<q>_ddot``)."""
+    """Acceleration symbol of the coordinate ``q`` (named ``<q>_ddot``).
+
+    Parameters
+    ----------
+    q : sympy.Symbol
+        The coordinate, a plain Symbol; the acceleration symbol keeps its assumptions (``real=True``, ...).
+
+    Examples
+    --------
+    >>> ddot(sp.Symbol("x"))
+    x_ddot
+    """
     return sp.Symbol(f"{q.name}_ddot", **q.assumptions0)
 
 
@@ -45,6 +68,13 @@ def ddot(q: sp.Symbol) -> sp.Symbol:
 def natural_key(symbol: sp.Symbol) -> tuple:
     """Sort key that orders ``m2`` before ``m10``.
 
+    Parameters
+    ----------
+    symbol : sympy.Symbol
+        The symbol whose name is split into text and integer parts.
+
+    Examples
+    --------
     >>> natural_key(sp.Symbol("m10")) > natural_key(sp.Symbol("m2"))
     True
     """
@@ -56,6 +86,13 @@ def natural_key(symbol: sp.Symbol) -> tuple:
 def sort_symbols(symbols: Iterable[sp.Symbol]) -> tuple[sp.Symbol, ...]:
     """Symbols in natural name order (``l1, l2, ..., l10``), duplicates removed.
 
+    Parameters
+    ----------
+    symbols : iterable of sympy.Symbol
+        The symbols to sort (any iterable: a set, a tuple, ...).
+
+    Examples
+    --------
     >>> sort_symbols(sp.symbols("m10 m2 g"))
     (g, m2, m10)
     """

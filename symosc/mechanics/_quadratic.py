@@ -97,7 +97,13 @@ class ComplexModes(SymPyPrintable):
         return f"$$s = \\{{{roots}\\}}$$"
 
     def plot(self, *, ax: Any = None) -> Any:
-        """Roots ``s`` in the complex plane; returns the Axes."""
+        """Roots ``s`` in the complex plane; returns the Axes.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:

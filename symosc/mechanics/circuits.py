@@ -61,6 +61,13 @@ def loop_equations(branches: Sequence[Sequence[Any]]) -> LoopEquations:
 
     The emf drives current from ``from_node`` to ``to_node`` inside its branch.
 
+    Parameters
+    ----------
+    branches : sequence of tuples
+        The branches ``(from_node, to_node, impedance)`` or ``(from_node, to_node, impedance, emf)``: two different
+        hashable node labels, the operator impedance ``z(D) = L D + R + 1/(C D)`` (a SymPy expression) and the optional
+        electromotive force (default 0).
+
     Examples
     --------
     Two resistors in a ring with a source: one loop.

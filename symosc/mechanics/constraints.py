@@ -193,6 +193,11 @@ class ConstrainedForm(SymPyPrintable):
 
     Not built directly: use :attr:`LagrangianSystem.constrained`.
 
+    Parameters
+    ----------
+    system : LagrangianSystem
+        The system with holonomic and/or non-holonomic constraints (reached as :attr:`LagrangianSystem.constrained`).
+
     Examples
     --------
     A pendulum written in Cartesian coordinates with the length constraint ``x^2 + y^2 - l^2 = 0``:
@@ -326,7 +331,18 @@ class ConstrainedForm(SymPyPrintable):
     def accelerations(
         self, values: Mapping[Any, Any], time: float, state: Sequence[float]
     ) -> tuple[np.ndarray, np.ndarray]:
-        """Numeric ``(q'', lambda)`` at one state ``x = (q, q')`` and time, parameters from ``values``."""
+        """Numeric ``(q'', lambda)`` at one state ``x = (q, q')`` and time, parameters from ``values``.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the system (keys are symbols or their names); a missing or
+            non-finite value raises ParameterError.
+        time : float
+            The time ``t`` (matters for rheonomic systems and constraints).
+        state : sequence of float
+            The state ``x = (q, q')``, ``2 n`` numbers in the order of the coordinates then their velocities.
+        """
         s = self.system
         n = len(s.coordinates)
         mf = np.asarray(self._compiled(time, *state, *resolve(s.parameters, values)), dtype=float)
@@ -344,9 +360,17 @@ class ConstrainedForm(SymPyPrintable):
         """Numeric ``f(t, x)``, ``x = (q, q')``, for ``scipy.integrate.solve_ivp`` (index-1 form).
 
         The constraints are integrated at acceleration level, so the position and velocity residuals drift at
-        the rate of the integration error.  ``stabilization=a > 0`` replaces ``C q'' + gamma = 0`` by
-        Baumgarte's ``C q'' + gamma + 2 a (C q' + e) + a^2 phi = 0`` (Baumgarte (1972)), which damps the drift
-        with rate ``a`` (choose ``a`` near the system's fastest natural frequency).
+        the rate of the integration error unless ``stabilization`` damps it.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the system (keys are symbols or their names); checked once, so
+            a missing or non-finite value raises ParameterError.
+        stabilization : float, optional
+            Baumgarte's rate ``a >= 0`` (default 0, no stabilization): ``a > 0`` replaces ``C q'' + gamma = 0`` by
+            ``C q'' + gamma + 2 a (C q' + e) + a^2 phi = 0`` (Baumgarte (1972)), which damps the drift with rate
+            ``a`` (choose ``a`` near the system's fastest natural frequency).
         """
         s = self.system
         n = len(s.coordinates)
@@ -364,7 +388,18 @@ class ConstrainedForm(SymPyPrintable):
         return f
 
     def residuals(self, values: Mapping[Any, Any], time: float, state: Sequence[float]) -> np.ndarray:
-        """Constraint residuals at a state: holonomic ``phi`` then velocity-level ``C q' + e`` of every constraint."""
+        """Constraint residuals at a state: holonomic ``phi`` then velocity-level ``C q' + e`` of every constraint.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the system (keys are symbols or their names); a missing or
+            non-finite value raises ParameterError.
+        time : float
+            The time ``t`` (matters for rheonomic systems and constraints).
+        state : sequence of float
+            The state ``x = (q, q')``, ``2 n`` numbers in the order of the coordinates then their velocities.
+        """
         s = self.system
         expr = sp.Matrix([*s.holonomic_constraints]).col_join(
             self.jacobian * sp.Matrix(s.velocities) + self.velocity_bias
@@ -403,6 +438,8 @@ class MinimalForm(SymPyPrintable):
         Dependent velocity symbol -> its expression in ``(q, u, t)``.
     mass_matrix, forcing : sympy.Matrix
         ``M_r = S^T M S`` and ``F_r = S^T (F - M (S' u + s0'))``.
+    coordinates : tuple of Symbol
+        All coordinates ``q`` of the system (the fields are expressions in them, ``u`` and ``t``).
 
     Examples
     --------

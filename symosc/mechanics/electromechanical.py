@@ -41,6 +41,7 @@ def electromechanical_system(
     mechanical_T, mechanical_V : Expr
         Mechanical kinetic and potential energies.
     mechanical_coordinates, charges : sequence of Symbol
+        The mechanical coordinates ``x`` and the loop charges ``q`` (their rates ``q'`` are the loop currents).
     inductance : Matrix
         ``L(x)`` (symmetric), the loops' self- and mutual inductances.
     elastance : Matrix, optional
@@ -49,6 +50,10 @@ def electromechanical_system(
         Loop resistances ``R`` (symmetric).
     emf : sequence, optional
         Electromotive forces ``e_j`` of the loops.
+    mechanical_dissipation : SymPy expression, optional
+        Rayleigh dissipation function of the mechanical coordinates, a function of their velocities (default 0).
+    mechanical_forces : sequence of SymPy expressions, optional
+        Generalized forces on the mechanical coordinates, one per coordinate (default none).
 
     Examples
     --------

@@ -30,6 +30,12 @@ class FirstOrderSystem(SymPyPrintable):
     that solves ``M q'' = F`` at every call (NumPy/LAPACK or generated C) and :meth:`jacobian` its analytic
     Jacobian.
 
+    Parameters
+    ----------
+    system : LagrangianSystem
+        The Lagrangian system (unconstrained) whose equations ``M q'' = F`` are put in first-order form; usually built
+        by :meth:`LagrangianSystem.first_order`.
+
     Examples
     --------
     >>> from scipy.integrate import solve_ivp
@@ -122,6 +128,15 @@ class FirstOrderSystem(SymPyPrintable):
         ``M^{-1} (dF/dy - (dM/dy) M^{-1} F)``; the derivatives are symbolic, the solves numeric (LAPACK for
         ``backend="numpy"``, generated C for ``"c"``).
 
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the system (keys are symbols or their names); checked once, so
+            missing, non-finite or wrongly signed values raise ParameterError.
+        backend : {"numpy", "c", "auto"}, optional
+            Where the solves run: "numpy" (compiled expressions, LAPACK), "c" (generated C), "auto" ("c" when a C
+            compiler is available); default "numpy".
+
         Returns
         -------
         callable
@@ -173,7 +188,14 @@ class FirstOrderSystem(SymPyPrintable):
         return _ode.NumpyFirstOrder(parts, n, values)
 
     def energy_function(self, values: Mapping[Any, Any]) -> Callable[[float, np.ndarray], float]:
-        """Numeric E(t, x) = T + V with the parameters fixed (useful to check conservation)."""
+        """Numeric E(t, x) = T + V with the parameters fixed (useful to check conservation).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the system (keys are symbols or their names); checked once, so
+            missing, non-finite or wrongly signed values raise ParameterError.
+        """
         s = self.system
         fn = compile(s.energy, [t, *s.coordinates, *s.velocities, *s.parameters], name="energy")
         params = resolve(s.parameters, values)

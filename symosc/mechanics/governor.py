@@ -27,6 +27,18 @@ def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None =
 
     Raises :class:`ModelError` when ``K'(omega*) = 0`` (no restoring torque).
 
+    Parameters
+    ----------
+    J : number or SymPy expression
+        Moment of inertia of the rotating parts, reduced to the shaft (positive).
+    K : SymPy expression
+        Driving torque minus resistance as a function ``K(omega)`` of the angular speed; ``K'`` must not vanish at the
+        steady speed.
+    omega : sympy.Symbol
+        The angular-speed symbol in ``K``.
+    steady : number or SymPy expression, optional
+        The steady speed ``omega*`` at which ``K'`` is taken; the result stays a function of ``omega`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -50,6 +62,15 @@ def stodola_time_constant(J: Any, K: Any, omega: sp.Symbol, steady: Any | None =
 class GovernorStatics(SymPyPrintable):
     """``omega^2(z) = E(z)/A(z)`` and the stability index ``E' - A' omega^2`` (positive: stable).
 
+    Attributes
+    ----------
+    speed_squared : SymPy expression
+        The static characteristic ``omega^2 = E(z)/A(z)``.
+    stability_index : SymPy expression
+        ``E'(z) - A'(z) omega^2 = A(z) d(omega^2)/dz``, positive for a stable governor (eq. (7.45)).
+    coordinate : sympy.Symbol
+        The sleeve coordinate ``z``.
+
     See Also
     --------
     governor_statics"""
@@ -66,6 +87,15 @@ class GovernorStatics(SymPyPrintable):
 def governor_statics(E: Any, A: Any, z: sp.Symbol) -> GovernorStatics:
     """Static characteristic of a centrifugal governor with generalized force ``Q = -E(z) + A(z) omega^2``
     (Bulgakov (1954), §7.6, eqs. (7.40)-(7.45)).
+
+    Parameters
+    ----------
+    E : SymPy expression
+        The part ``E(z)`` of the generalized force that does not depend on the speed (weight, springs).
+    A : SymPy expression
+        The coefficient ``A(z)`` of ``omega^2`` in the centrifugal force, which must not vanish identically.
+    z : sympy.Symbol
+        The sleeve coordinate in ``E`` and ``A``.
 
     Examples
     --------

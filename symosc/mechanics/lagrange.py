@@ -383,8 +383,15 @@ class LagrangianSystem(SymPyPrintable):
         - ``f`` = the right-hand side left at the point (a prescribed excitation).
 
         Returns a :class:`~symosc.mechanics.LinearModel` ``M q'' + D q' + K q = f``.
-        Raises :class:`ModelError` if the point is not an equilibrium (a constant nonzero ``f``) unless
-        ``check_equilibrium=False``.
+
+        Parameters
+        ----------
+        point : mapping of Symbol or str to number or expression, optional
+            Values of the coordinates at the linearization point (keys are coordinates or their names; a name that
+            is not a coordinate raises ModelError); coordinates left out are 0, and all velocities are 0.
+        check_equilibrium : bool, optional
+            Whether to raise :class:`ModelError` when the point is not an equilibrium (a constant nonzero ``f``);
+            default True, False linearizes anyway.
         """
         from .linear_model import linearize_system
 
@@ -443,9 +450,13 @@ class LagrangianSystem(SymPyPrintable):
     def christoffel_symbols(self, kind: int = 2) -> sp.Array:
         """Christoffel symbols of the metric ``g = M`` (Bulgakov (1954), §3.7, eqs. (3.83), (3.86)).
 
-        ``kind=1``: ``Gamma[m, k, l] = (dg_mk/dq_l + dg_ml/dq_k - dg_kl/dq_m) / 2``;
-        ``kind=2``: ``Gamma[j, k, l] = g^jm Gamma_m,kl`` so that for a natural scleronomic system
-        ``q''^j + Gamma^j_kl q'^k q'^l = g^jm (-dV/dq^m)`` (eq. (3.88)).
+        Parameters
+        ----------
+        kind : {1, 2}, optional
+            Kind of the symbols, which must be 1 or 2 (default 2).  ``kind=1``:
+            ``Gamma[m, k, l] = (dg_mk/dq_l + dg_ml/dq_k - dg_kl/dq_m) / 2``; ``kind=2``:
+            ``Gamma[j, k, l] = g^jm Gamma_m,kl`` so that for a natural scleronomic system
+            ``q''^j + Gamma^j_kl q'^k q'^l = g^jm (-dV/dq^m)`` (eq. (3.88)).
         """
         from ._analytic import christoffel
 
@@ -457,6 +468,14 @@ class LagrangianSystem(SymPyPrintable):
         Returns a new :class:`LagrangianSystem` in ``coordinates`` ``s``; generalized forces are carried over as
         ``Q_s = (dq/ds)^T Q``.  Constraints that vanish identically are dropped (the rest are kept); raises
         :class:`ModelError` if a coordinate is missing from the parametrization.
+
+        Parameters
+        ----------
+        parametrization : mapping of Symbol or str to expression
+            The old coordinates as expressions ``q(s, t)`` in the new coordinates, time and the parameters (keys are
+            coordinates or their names); an old coordinate that is also a new one may be left out.
+        coordinates : sequence of Symbol or str
+            The new (minimal) coordinates ``s``: Symbols, ``dynamicsymbols`` or names.
         """
         from ._analytic import reduce_coordinates
 

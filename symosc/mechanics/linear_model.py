@@ -69,6 +69,11 @@ class LinearModel(SymPyPrintable):
     def latex(self, *, simplify: bool = False) -> str:
         """LaTeX of ``M q'' + D q' + K q = f``; ``simplify=True`` applies ``sympy.trigsimp`` first (display only).
 
+        Parameters
+        ----------
+        simplify : bool, optional
+            Whether to apply ``sympy.trigsimp`` to M, D and K before printing (display only; default False).
+
         Examples
         --------
         >>> from symosc.models import n_link_pendulum
@@ -155,7 +160,14 @@ class LinearModel(SymPyPrintable):
         return n, compile(mats, list(sort_symbols(mats.free_symbols)), name="linear_matrices")
 
     def matrices(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Numeric ``(M, D, K0)``; array-valued parameters give stacks of shape ``(..., n, n)``."""
+        """Numeric ``(M, D, K0)``; array-valued parameters give stacks of shape ``(..., n, n)``.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float or array_like
+            Numbers for every parameter of M, D and K0 (keys are symbols or their names); a missing or non-finite value
+            raises ParameterError, and arrays of values (broadcast together) give stacked results.
+        """
         if not isinstance(values, Mapping):
             raise ParameterError(
                 f"values must be a mapping of parameter names to numbers, got {type(values).__name__}; "
@@ -194,7 +206,14 @@ class LinearModel(SymPyPrintable):
         return 0.5 * (A + np.swapaxes(A, -1, -2)), Linv
 
     def eigenvalues(self, values: Mapping[Any, Any]) -> np.ndarray:
-        """Generalised eigenvalues ``lambda = omega**2`` of ``K0 phi = lambda M phi``, ascending (may be < 0)."""
+        """Generalised eigenvalues ``lambda = omega**2`` of ``K0 phi = lambda M phi``, ascending (may be < 0).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float or array_like
+            Numbers for every parameter of M, D and K0 (keys are symbols or their names); a missing or non-finite value
+            raises ParameterError, and arrays of values (broadcast together) give stacked results.
+        """
         A, _ = self._whitened(values)
         return np.linalg.eigvalsh(A)
 
@@ -204,6 +223,14 @@ class LinearModel(SymPyPrintable):
         Raises :class:`ModelError` when M is not positive definite or when the equilibrium is
         statically unstable (K0 has negative eigenvalues relative to M; use :meth:`eigenvalues`).
 
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float or array_like
+            Numbers for every parameter of M, D and K0 (keys are symbols or their names); a missing or non-finite value
+            raises ParameterError, and arrays of values (broadcast together) give stacked results.
+
+        Examples
+        --------
         >>> from symosc.models import n_link_pendulum
         >>> lin = n_link_pendulum(2).linearize()
         >>> lin.natural_frequencies({"m1": 1, "m2": 1, "l1": 1, "l2": 1, "g": 1}).round(6).tolist()
@@ -216,6 +243,12 @@ class LinearModel(SymPyPrintable):
         """``(omega, Phi)``: frequencies and mass-normalised mode shapes (columns), ``Phi.T M Phi = I``.
 
         Each mode is signed so that its largest-magnitude component is positive.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float or array_like
+            Numbers for every parameter of M, D and K0 (keys are symbols or their names); a missing or non-finite value
+            raises ParameterError, and arrays of values (broadcast together) give stacked results.
         """
         A, Linv = self._whitened(values)
         lam, V = np.linalg.eigh(A)
@@ -246,6 +279,9 @@ class LinearModel(SymPyPrintable):
             The measured coordinates (default: all); ``velocities=True`` measures their rates instead.
         values : mapping
             Numbers for every parameter (keyed by Symbol or name).
+        velocities : bool, optional
+            Whether the outputs are the rates ``q'`` of the measured coordinates instead of the coordinates (default
+            False).
         backend : {"auto", "control", "scipy"}
             ``control.StateSpace`` when python-control is installed (``"auto"``), else ``scipy.signal.StateSpace``.
 
@@ -282,6 +318,23 @@ class LinearModel(SymPyPrintable):
         ``control.TransferFunction`` (MIMO allowed) with python-control, else ``scipy.signal.TransferFunction``
         (one input).
 
+        Parameters
+        ----------
+        inputs : coordinates, indices or array (n, m), optional
+            Where the inputs act: a unit generalized force on each listed coordinate (given by Symbol, name or index;
+            default every coordinate), or a force-distribution matrix ``E`` with one row per coordinate.
+        outputs : coordinates, indices or array (n, p), optional
+            The measured coordinates (default: all); ``velocities=True`` measures their rates instead.
+        values : mapping of Symbol or str to float, optional
+            Numbers for every parameter (keyed by Symbol or name); every parameter of M, D and K must get one, and K
+            must not depend on time.
+        velocities : bool, optional
+            Whether the outputs are the rates ``q'`` of the measured coordinates instead of the coordinates (default
+            False).
+        backend : {"auto", "control", "scipy"}, optional
+            ``control.TransferFunction`` when python-control is installed (``"auto"``) or asked for (``"control"``),
+            else ``scipy.signal.TransferFunction`` (one input only); default "auto".
+
         Examples
         --------
         >>> from symosc.models import n_link_pendulum
@@ -307,6 +360,14 @@ class LinearModel(SymPyPrintable):
         Returns a :class:`~symosc.mechanics._quadratic.ComplexModes`; see
         :func:`symosc.mechanics._quadratic.complex_modes` for the method (companion pencil, QZ).
 
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            Numbers for every parameter of the model (keys are symbols or their names), scalars only; a missing or
+            non-finite value raises ParameterError.
+
+        Examples
+        --------
         >>> from symosc.models import n_link_pendulum
         >>> lin = n_link_pendulum(1).linearize()
         >>> lin.complex_modes({"m1": 1, "l1": 1, "g": 4}).frequencies.round(12).tolist()
@@ -323,6 +384,14 @@ class LinearModel(SymPyPrintable):
         arguments are passed on; for ``D = 0`` the half-period reversor is used).  Returns its
         :class:`~symosc.periodic.FloquetResult`.
 
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            Numbers for every parameter of the model, the excitation frequency ``p`` included (keys are symbols or their
+            names), scalars only; ``p`` must be positive.
+
+        Examples
+        --------
         >>> from symosc.models import n_link_pendulum
         >>> lin = n_link_pendulum(1, inverted=True, pivot="vertical").linearize()
         >>> lin.monodromy({"m1": 1, "l1": 1, "g": 9.81, "a": 0.02, "p": 300}).stability   # Kapitza

@@ -66,12 +66,24 @@ class VariationalEquations(SymPyPrintable):
         return f"$${sp.latex(self.operator_matrix())} y = {sp.latex(self.w)}$$"
 
     def operator_matrix(self, symbol: sp.Symbol = D) -> sp.Matrix:
-        """``f(D) = a0 D^2 + a1 D + a2`` (eq. (7.11)); ``D`` stands for d/dt acting on y."""
+        """``f(D) = a0 D^2 + a1 D + a2`` (eq. (7.11)); ``D`` stands for d/dt acting on y.
+
+        Parameters
+        ----------
+        symbol : sympy.Symbol, optional
+            Symbol standing for the operator d/dt (default ``D``).
+        """
         a0, a1, a2 = self.coefficients
         return a0 * symbol**2 + a1 * symbol + a2
 
     def characteristic_polynomial(self, symbol: sp.Symbol = LAMBDA) -> sp.Expr:
-        """``det f(lambda)`` (meaningful for constant coefficients)."""
+        """``det f(lambda)`` (meaningful for constant coefficients).
+
+        Parameters
+        ----------
+        symbol : sympy.Symbol, optional
+            Symbol of the characteristic polynomial (default ``lambda``).
+        """
         return sp.factor(self.operator_matrix(symbol).det(method="berkowitz"))
 
     def coordinate_orders(self) -> tuple[int, ...]:
@@ -203,7 +215,13 @@ class FirstOrderReduction(SymPyPrintable):
         return f"$${sp.latex(self.A)} \\dot{{Y}} + {sp.latex(self.H)} Y = {sp.latex(self.W)}$$"
 
     def characteristic_polynomial(self, symbol: sp.Symbol = LAMBDA) -> sp.Expr:
-        """``det(A lambda + H)`` (constant coefficients)."""
+        """``det(A lambda + H)`` (constant coefficients).
+
+        Parameters
+        ----------
+        symbol : sympy.Symbol, optional
+            Symbol of the characteristic polynomial (default ``lambda``).
+        """
         return sp.factor((self.A * symbol + self.H).det(method="berkowitz"))
 
 
@@ -273,15 +291,21 @@ def variational_equations(
 
 @dataclass(frozen=True)
 class StabilityVerdict(SymPyPrintable):
-    (
-        """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``."""
-        """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``.
+    """What the classical theorems say about ``A y'' + (N + G) y' + (H + J) y = 0``.
+
+    Attributes
+    ----------
+    stable : bool or None
+        True when a theorem proves stability, False when one proves instability, None when none decides.
+    asymptotically : bool
+        Whether the stability is asymptotic (positive-definite ``H`` under complete dissipation).
+    reason : str
+        The theorem applied, or why none applies.
 
     See Also
     --------
     ForceDecomposition.stability
     """
-    )
 
     stable: bool | None
     asymptotically: bool
@@ -297,6 +321,19 @@ class ForceDecomposition(SymPyPrintable):
     """``A`` inertia, ``N`` dissipative, ``G`` gyroscopic, ``H`` potential, ``J`` non-conservative positional
     (circulatory) matrices: ``N, H`` symmetric, ``G, J`` skew (Bulgakov (1954), eqs. (7.75), (7.81)).
 
+    Attributes
+    ----------
+    A : sympy.Matrix
+        Inertia matrix (symmetric).
+    N : sympy.Matrix
+        Dissipative matrix, the symmetric part of the velocity coefficients.
+    G : sympy.Matrix
+        Gyroscopic matrix, their skew part.
+    H : sympy.Matrix
+        Potential (stiffness) matrix, the symmetric part of the position coefficients.
+    J : sympy.Matrix
+        Non-conservative positional (circulatory) matrix, their skew part.
+
     See Also
     --------
     decompose_forces"""
@@ -311,7 +348,15 @@ class ForceDecomposition(SymPyPrintable):
         return f"ForceDecomposition({self.A.rows} DOF)"
 
     def energy_rate(self, y: Sequence[sp.Symbol], ydot: Sequence[sp.Symbol]) -> sp.Expr:
-        """``d/dt [y'^T A y' + y^T H y] = -2 [y'^T N y' + y'^T J y]`` along the motion (eq. (7.79))."""
+        """``d/dt [y'^T A y' + y^T H y] = -2 [y'^T N y' + y'^T J y]`` along the motion (eq. (7.79)).
+
+        Parameters
+        ----------
+        y : sequence of Symbol
+            Symbols of the coordinates ``y``, one per row of the matrices.
+        ydot : sequence of Symbol
+            Symbols of the velocities ``y'``, as many as ``y``.
+        """
         Y, Yd = sp.Matrix(y), sp.Matrix(ydot)
         return sp.expand(-2 * ((Yd.T * self.N * Yd)[0] + (Yd.T * self.J * Y)[0]))
 
@@ -325,6 +370,15 @@ class ForceDecomposition(SymPyPrintable):
           eigenvalue unstable (dissipation destroys gyroscopic stabilization).
         - ``J = 0, N >= 0``: ``H > 0`` stable.
         - ``J != 0``: no classical theorem applies (undecided; use the eigenvalues).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float, optional
+            Numbers for every parameter of the matrices (keys are symbols or their names); none needed when the matrices
+            are numeric.
+        tol : float, optional
+            Relative tolerance, which must be positive, below which an entry or eigenvalue counts as zero (scaled by the
+            largest entry; default 1e-12).
         """
         mats = [np.array(bind(m, values or {}).evalf(), dtype=float) for m in (self.A, self.N, self.G, self.H, self.J)]
         _, N, G, H, J = mats
@@ -361,6 +415,15 @@ class ForceDecomposition(SymPyPrintable):
 def decompose_forces(M: Any, C: Any, K: Any) -> ForceDecomposition:
     """Split ``M y'' + C y' + K y = 0`` into ``A = M``, ``N = (C + C^T)/2``, ``G = (C - C^T)/2``,
     ``H = (K + K^T)/2``, ``J = (K - K^T)/2`` (Bulgakov (1954), §7.9).
+
+    Parameters
+    ----------
+    M : matrix
+        Inertia matrix: a square, symmetric SymPy Matrix, nested list or NumPy array.
+    C : matrix
+        Coefficients of the velocities, square of the size of ``M`` (split into dissipative and gyroscopic parts).
+    K : matrix
+        Coefficients of the coordinates, square of the size of ``M`` (split into potential and circulatory parts).
 
     Examples
     --------

@@ -144,9 +144,22 @@ class BodyOnSprings(SymPyPrintable):
 
     Build it with :func:`body_on_springs`.  Every matrix is a SymPy object computed on first access.
 
+    Parameters
+    ----------
+    n_springs : int
+        Number of springs, an integer >= 3 (checked by :func:`body_on_springs`).
+    layout : {"rectangle", "general"}
+        ``"rectangle"``: four springs at ``(0, 0), (Lx, 0), (Lx, Lz), (0, Lz)``; ``"general"`` (any other value is
+        treated so): spring ``j`` at ``(x_j, z_j)``.
+    convention : {"tensor", "dissertation"}
+        Product-of-inertia sign convention, ``"tensor"`` (``M23 = -Ixz``) or ``"dissertation"`` (``M23 = +Ixz``).
+
     Attributes
     ----------
     n_springs : int
+        Number of springs.
+    layout : str
+        ``"rectangle"`` or ``"general"``.
     convention : str
         Product-of-inertia sign convention, ``"tensor"`` or ``"dissertation"``.
     positions : tuple of (x_j, z_j)
@@ -192,16 +205,34 @@ class BodyOnSprings(SymPyPrintable):
         return sp.Matrix([self.rx, self.ry, self.rz])
 
     def rho(self, j: int) -> sp.Matrix:
-        """Radius vector of attachment point ``j`` (1-based) relative to the center of mass."""
+        """Radius vector of attachment point ``j`` (1-based) relative to the center of mass.
+
+        Parameters
+        ----------
+        j : int
+            Number of the spring, from 1 to ``n_springs`` (1-based, as in Belyakov (2005)).
+        """
         x, z = self.positions[j - 1]
         return sp.Matrix([x, 0, z]) - self.r
 
     def R(self, j: int) -> sp.Matrix:
-        """Cross-product matrix of ``rho_j`` (eq. 13)."""
+        """Cross-product matrix of ``rho_j`` (eq. 13).
+
+        Parameters
+        ----------
+        j : int
+            Number of the spring, from 1 to ``n_springs`` (1-based, as in Belyakov (2005)).
+        """
         return _cross_matrix(self.rho(j))
 
     def G(self, j: int) -> sp.Matrix:
-        """Stiffness tensor ``diag(c_j, k_j, c_j)`` of spring ``j`` (eq. 4)."""
+        """Stiffness tensor ``diag(c_j, k_j, c_j)`` of spring ``j`` (eq. 4).
+
+        Parameters
+        ----------
+        j : int
+            Number of the spring, from 1 to ``n_springs`` (1-based, as in Belyakov (2005)).
+        """
         return sp.diag(self.c[j - 1], self.k[j - 1], self.c[j - 1])
 
     @cached_property
@@ -247,6 +278,14 @@ class BodyOnSprings(SymPyPrintable):
         Raises :class:`ModelError` if no such point exists (unequal ratios ``c_j/k_j`` make the conditions
         incompatible); :meth:`vertical_stiffness_center` always exists.
 
+        Parameters
+        ----------
+        values : mapping of Symbol or str to number, optional
+            Values substituted exactly before solving (keys are symbols or their names), for instance equal springs; the
+            center stays symbolic in the parameters left out.
+
+        Examples
+        --------
         >>> model = body_on_springs()
         >>> model.stiffness_center({"k1": 1, "k2": 1, "k3": 1, "k4": 1, "c1": 2, "c2": 2, "c3": 2, "c4": 2})
         {rx: Lx/2, ry: 0, rz: Lz/2}
@@ -312,7 +351,14 @@ class BodyOnSprings(SymPyPrintable):
         return _compile(sp.Matrix.hstack(self.M, self.K, self.C.T), list(self.parameters), name="stand3")
 
     def sensor_positions(self, values: Mapping[Any, Any]) -> np.ndarray:
-        """Numeric attachment/sensor points ``(x_j, z_j)``, shape ``(N, 2)``."""
+        """Numeric attachment/sensor points ``(x_j, z_j)``, shape ``(N, 2)``.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            Numbers for the geometric parameters (``Lx, Lz`` or ``x1..xN, z1..zN``; keys are symbols or their names); a
+            missing or non-finite value raises ParameterError.
+        """
         flat = [sp.sympify(c) for p in self.positions for c in p]
         syms = sorted(set().union(*(e.free_symbols for e in flat)), key=lambda s: s.name)
         f = _compile(flat, syms) if syms else None
@@ -320,12 +366,26 @@ class BodyOnSprings(SymPyPrintable):
         return out.reshape(self.n_springs, 2)
 
     def matrices(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Numeric ``(M, K, C)`` of the 3-DOF model for ``values`` keyed by symbol or name."""
+        """Numeric ``(M, K, C)`` of the 3-DOF model for ``values`` keyed by symbol or name.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            Numbers for every parameter of the 3-DOF model (:attr:`parameters`; keys are symbols or their names); a
+            missing or non-finite value raises ParameterError.
+        """
         out = np.asarray(self._numeric3(*resolve(self.parameters, values)), dtype=float)
         return out[:, :3], out[:, 3:6], out[:, 6:].T
 
     def matrices6(self, values: Mapping[Any, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Numeric ``(M6, K6, C6)`` of the 6-DOF model."""
+        """Numeric ``(M6, K6, C6)`` of the 6-DOF model.
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            Numbers for every parameter of the 6-DOF model (:attr:`parameters6`; keys are symbols or their names); a
+            missing or non-finite value raises ParameterError.
+        """
         f = self.__dict__.get("_numeric6")
         if f is None:
             f = self.__dict__["_numeric6"] = _compile(

@@ -50,8 +50,15 @@ class _CatalogueError(ParameterError, ModelError):
 
 @validated
 def pendulum_symbols(n: int) -> dict[str, tuple[sp.Symbol, ...] | sp.Symbol]:
-    """The parameter symbols of the catalogue's n-link pendulum (names ``m1, l1, lc1, J1, ...``).
+    """The symbols of the catalogue's n-link pendulum (names ``phi1, m1, l1, lc1, I1, ..., g, a, p``).
 
+    Parameters
+    ----------
+    n : int
+        Number of links, a positive integer (one symbol of each per-link family per link).
+
+    Examples
+    --------
     >>> s = pendulum_symbols(2)
     >>> s["m"], s["lc"], s["g"], s["a"]
     ((m1, m2), (lc1, lc2), g, a)

@@ -29,6 +29,17 @@ def is_canonical(
     Goldstein, Classical Mechanics, §9.5 (the fundamental Poisson brackets; equivalently a symplectic Jacobian).
     Each bracket is simplified with SymPy; a bracket SymPy cannot reduce counts as "not canonical".
 
+    Parameters
+    ----------
+    new_coordinates : sequence of SymPy expressions
+        The new coordinates ``Q_i(q, p, t)``, one per old coordinate.
+    new_momenta : sequence of SymPy expressions
+        The new momenta ``P_i(q, p, t)``, one per old coordinate.
+    coordinates : sequence of Symbol
+        The old canonical coordinates ``q``.
+    momenta : sequence of Symbol
+        The old momenta ``p``, which must be as many as the coordinates.
+
     Examples
     --------
     >>> import sympy as sp
@@ -68,8 +79,13 @@ class CanonicalTransformation(SymPyPrintable):
     Attributes
     ----------
     generating_function : Expr
+        The generating function ``S``.
     kind : int
         1: ``S(q, u, t)``; 2: ``S(q, v, t)``; 3: ``S(p, u, t)``; 4: ``S(p, v, t)``.
+    coordinates, momenta : tuple of Symbol
+        The old canonical variables ``q``, ``p``.
+    new_coordinates, new_momenta : tuple of Symbol
+        The new canonical variables ``u``, ``v``.
     relations : tuple of Eq
         The defining equations (Bulgakov (1954), eqs. (3.135)-(3.139)).
     forward : dict
@@ -109,7 +125,13 @@ class CanonicalTransformation(SymPyPrintable):
         return "$$" + r",\quad ".join(sp.latex(r) for r in self.relations) + "$$"
 
     def new_hamiltonian(self, H: Any) -> sp.Expr:
-        """``H' = H(q(u, v), p(u, v), t) + dS/dt`` in the new variables."""
+        """``H' = H(q(u, v), p(u, v), t) + dS/dt`` in the new variables.
+
+        Parameters
+        ----------
+        H : SymPy expression
+            The old Hamiltonian ``H(q, p, t)``.
+        """
         if not self.backward:
             raise ModelError("the relations could not be solved for (q, p): express H in (u, v) by hand")
         return sp.sympify(H).xreplace(self.backward) + self.hamiltonian_shift.xreplace(self.backward)
@@ -161,9 +183,29 @@ def canonical_transformation(
     ===== ============ ======================================
 
     In every case ``H' = H + dS/dt``.  The mixed second derivatives of S must form a non-singular matrix,
-    otherwise :class:`ModelError` is raised (S then generates no transformation).  ``branch`` picks one of
-    several solutions of the relations; ``solve=False`` keeps only the relations (``forward``/``backward`` empty),
-    which avoids SymPy's ``solve`` on large systems.
+    otherwise :class:`ModelError` is raised (S then generates no transformation).
+
+    Parameters
+    ----------
+    S : SymPy expression
+        The generating function, depending only on the old and new variables its ``kind`` allows (and on ``t``
+        and parameters).
+    coordinates : sequence of Symbol
+        The old coordinates ``q``.
+    momenta : sequence of Symbol
+        The old momenta ``p``, as many as the coordinates.
+    new_coordinates : sequence of Symbol
+        The new coordinates ``u``, as many as the coordinates.
+    new_momenta : sequence of Symbol
+        The new momenta ``v``, as many as the coordinates.
+    kind : int
+        Kind of the generating function, which must be 1, 2, 3 or 4 (the table above).
+    branch : int, optional
+        Index (>= 0) of the solution of the relations to keep when SymPy finds several; an index past the last
+        takes the last (default 0).
+    solve : bool, optional
+        Whether to solve the relations for ``forward`` and ``backward`` (default True); False keeps only the
+        relations (``forward``/``backward`` empty), which avoids SymPy's ``solve`` on large systems.
 
     Examples
     --------

@@ -56,6 +56,10 @@ class ActionVariable(SymPyPrintable):
         ``nu = dh/dJ = 1 / J'(h)`` (angular frequency of the libration).
     period : Expr
         ``2 pi / nu = 2 pi dJ/dh``.
+    energy_symbol : Symbol
+        The energy ``h`` in :attr:`action`, :attr:`frequency` and :attr:`period`.
+    action_symbol : Symbol
+        The action ``J`` in :attr:`energy`.
 
     Examples
     --------
@@ -95,6 +99,18 @@ def action_variable(
     - ``p^2 = A + 2 B / q - C / q^2`` (``A < 0``; the radial Kepler problem): ``J = B / sqrt(-A) - sqrt(C)``.
 
     Anything else raises :class:`ModelError`; use :func:`action_variable_numeric` then.
+
+    Parameters
+    ----------
+    H : SymPy expression
+        The Hamiltonian, which must have the form ``p^2 / (2 mu(q)) + U(q)`` (quadratic in the momentum, no linear
+        term).
+    coordinate : sympy.Symbol
+        The coordinate ``q`` of the libration.
+    momentum : sympy.Symbol
+        Its conjugate momentum ``p``.
+    energy : sympy.Symbol, optional
+        Symbol of the energy ``h`` in the results (a real symbol ``h`` when omitted).
 
     Examples
     --------
@@ -154,11 +170,31 @@ def action_variable_numeric(
     *,
     dps: int = 30,
 ) -> tuple[mpmath.mpf, mpmath.mpf]:
-    """``(J, period)`` of a libration at a numeric energy, by tanh-sinh quadrature between the turning points.
+    """``(J, period)`` of a libration at a numeric energy, by Gauss–Legendre quadrature between the turning points.
 
     ``turning_points`` are guesses of the ends of the libration (``U(q) = h`` there), refined with
     :func:`mpmath.findroot`; the substitution ``q = c + d sin s`` makes both integrands smooth (Gauss-Legendre).
     Raises :class:`ConvergenceError` when the quadrature error estimate exceeds ``10**(5 - dps)``.
+
+    Parameters
+    ----------
+    H : SymPy expression
+        The Hamiltonian, which must have the form ``p^2 / (2 mu(q)) + U(q)`` (quadratic in the momentum, no linear
+        term).
+    coordinate : sympy.Symbol
+        The coordinate ``q`` of the libration.
+    momentum : sympy.Symbol
+        Its conjugate momentum ``p``.
+    energy : float
+        The energy ``h`` of the libration, a finite number between the minimum of ``U`` and the level where the motion
+        stops being a libration.
+    values : mapping of Symbol or name to float
+        Numbers for every parameter of ``H`` (keys are symbols or their names; ``{}`` when there are none).
+    turning_points : (float, float)
+        Guesses of the two ends of the libration, where ``U(q) = h``; refined with ``mpmath.findroot``.
+    dps : int, optional
+        Working precision in decimal digits, an integer >= 1 (default 30); the quadrature must reach an error estimate
+        of ``10**(5 - dps)``.
 
     Examples
     --------
@@ -283,6 +319,7 @@ def separate_hamilton_jacobi(
     H : Expr
         Hamiltonian (no explicit time).
     coordinates, momenta : sequence of Symbol
+        The canonical coordinates ``q`` and their conjugate momenta ``p``, as many of each (paired in order).
     energy : Symbol, optional
         The energy constant ``h`` (default ``Symbol("h")``).
     factor : Expr, optional

@@ -30,6 +30,17 @@ def momentum_symbol(q: sp.Symbol) -> sp.Symbol:
 def poisson_bracket(f: Any, g: Any, coordinates: Sequence[sp.Symbol], momenta: Sequence[sp.Symbol]) -> sp.Expr:
     """Poisson bracket ``{f, g} = sum (df/dq dg/dp - df/dp dg/dq)`` (Goldstein, Classical Mechanics, §9.5).
 
+    Parameters
+    ----------
+    f : SymPy expression
+        The first function of the coordinates and momenta (and time).
+    g : SymPy expression
+        The second function of the coordinates and momenta.
+    coordinates : sequence of Symbol
+        The canonical coordinates ``q``.
+    momenta : sequence of Symbol
+        The conjugate momenta ``p``, which must be as many as the coordinates (paired in order).
+
     Examples
     --------
     >>> import sympy as sp
@@ -191,7 +202,14 @@ class HamiltonianSystem(SymPyPrintable):
         return sp.expand((p.T * v)[0].xreplace(sub) - self._H.xreplace(sub))
 
     def rhs(self, values: Mapping[Any, Any]) -> Callable[[float, np.ndarray], np.ndarray]:
-        """Numeric ``f(t, x)``, ``x = (q, p)``, with the parameters fixed (for ``solve_ivp``)."""
+        """Numeric ``f(t, x)``, ``x = (q, p)``, with the parameters fixed (for ``solve_ivp``).
+
+        Parameters
+        ----------
+        values : mapping of Symbol or str to float
+            One scalar value for every parameter of the Hamiltonian and the forces (keys are symbols or their names);
+            checked once, so a missing or non-finite value raises ParameterError.
+        """
         fn = compile(self.vector_field, [t, *self.state, *self.parameters], name="canonical")
         params = resolve(self.parameters, values)
         fn(0.0, *([0.5] * len(self.state)), *params)  # checks the parameter values once

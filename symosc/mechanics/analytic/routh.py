@@ -40,6 +40,7 @@ class SteadyMotion(SymPyPrintable):
     Attributes
     ----------
     point, momenta : dict
+        The values of the non-cyclic coordinates and of the cyclic momenta at the steady motion.
     hessian : sympy.Matrix
         Hessian of the reduced potential at the point.
     stable : bool or None
@@ -62,18 +63,23 @@ class SteadyMotion(SymPyPrintable):
 
 
 class RouthReduction(SymPyPrintable):
-    (
-        """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`."""
-        """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`.
+    """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`.
 
     Attributes ``routhian``, ``reduced_potential``, ``reduced_system`` and ``cyclic_velocities`` are computed on
     first access; ``momenta`` are the symbols ``p_<q>`` of the cyclic momenta.
+
+    Parameters
+    ----------
+    system : LagrangianSystem
+        The unconstrained system whose cyclic coordinates are reduced.
+    cyclic : sequence of Symbol
+        The cyclic coordinates, each a coordinate of ``system`` (not checked here: :func:`routh_reduction` checks
+        that the Lagrangian, the dissipation and the forces do not depend on them).
 
     See Also
     --------
     routh_reduction, SteadyMotion
     """
-    )
 
     def __init__(self, system: LagrangianSystem, cyclic: Sequence[sp.Symbol]):
         self.system = system
@@ -175,6 +181,15 @@ class RouthReduction(SymPyPrintable):
         and judge its stability from the Hessian of the reduced potential.
 
         Raises :class:`ModelError` naming the unbalanced generalized force when it is not a solution.
+
+        Parameters
+        ----------
+        point : mapping of Symbol or str to number or expression
+            Values of every non-cyclic coordinate at the steady motion (keys are coordinates or their names); a
+            missing or unknown coordinate raises ModelError.
+        momenta : mapping of Symbol or str to number or expression, optional
+            Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names);
+            momenta left out stay symbolic.
         """
         pt, mom = self._point(point, momenta)
         VR = self.reduced_potential.xreplace(mom)
@@ -207,7 +222,17 @@ class RouthReduction(SymPyPrintable):
 
     def small_oscillations(self, point: Mapping[Any, Any], momenta: Mapping[Any, Any]) -> LinearModel:
         """Linearized motion about a steady motion, with the gyroscopic terms of the Routh function
-        (Bulgakov (1954), §7.9): a :class:`LinearModel` ``M y'' + G y' + K y = 0``."""
+        (Bulgakov (1954), §7.9): a :class:`LinearModel` ``M y'' + G y' + K y = 0``.
+
+        Parameters
+        ----------
+        point : mapping of Symbol or str to number or expression
+            Values of every non-cyclic coordinate at the steady motion (keys are coordinates or their names); a missing
+            or unknown coordinate raises ModelError.
+        momenta : mapping of Symbol or str to number or expression
+            Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names); momenta
+            left out stay symbolic.
+        """
         from ..lagrange import LagrangianSystem
 
         self.steady_motion(point, momenta)
@@ -225,6 +250,14 @@ def routh_reduction(system: LagrangianSystem, cyclic: Sequence[Any]) -> RouthRed
 
     A coordinate is cyclic when L, the dissipation and its generalized force do not depend on it and its
     generalized force vanishes; otherwise :class:`ModelError` names the dependence.
+
+    Parameters
+    ----------
+    system : LagrangianSystem
+        The system, which must be unconstrained (reduce constrained coordinates first).
+    cyclic : Symbol or sequence of Symbol
+        The coordinates to reduce (Symbols, ``dynamicsymbols`` or names inside a list); each must be cyclic: the
+        Lagrangian, the dissipation and the forces must not depend on it, and its generalized force must vanish.
 
     Examples
     --------

@@ -41,6 +41,17 @@ MU, F, X, ZETA = sp.symbols("mu f x zeta", positive=True)
 def amplification_squared(mu: Any = MU, f: Any = F, zeta: Any = ZETA, g: Any = None) -> sp.Expr:
     """``R1²`` of eq. (9.596) as a SymPy expression (in ``x = g²`` when ``g`` is None).
 
+    Parameters
+    ----------
+    mu : number or SymPy expression, optional
+        Mass ratio ``μ = m/M``, which must be positive (a number or a positive symbol; the symbol ``mu`` by default).
+    f : number or SymPy expression, optional
+        Tuning ``f = ω_m/ω_M``, which must be positive (the symbol ``f`` by default).
+    zeta : number or SymPy expression, optional
+        Damping ratio ``ζ = β/ω_M``, which must be non-negative (the symbol ``zeta`` by default).
+    g : number or SymPy expression, optional
+        Forcing ratio ``g = ν/ω_M``; when omitted the result is a function of ``x = g²`` (the symbol ``x``).
+
     Examples
     --------
     >>> import sympy as sp
@@ -65,6 +76,13 @@ def absorber_fixed_points(mu: Any = MU, f: Any = F) -> list:
 
     ``R1²`` is a linear-fractional function of ``ζ²``, independent of it where ``A/C = B/D``; the non-trivial
     branch is the quadratic ``(μ + 2)x² - 2(1 + f²(1 + μ))x + 2f² = 0``.
+
+    Parameters
+    ----------
+    mu : number or SymPy expression, optional
+        Mass ratio ``μ = m/M``, which must be positive (a number or a positive symbol; the symbol ``mu`` by default).
+    f : number or SymPy expression, optional
+        Tuning ``f = ω_m/ω_M``, which must be positive (the symbol ``f`` by default).
 
     Examples
     --------
@@ -198,7 +216,13 @@ class Absorber(SymPyPrintable):
             raise ParameterError(f"damping_ratio must be non-negative, got {self.damping_ratio}")
 
     def amplification(self, g: Any) -> Any:
-        """``R1(g)``, main-mass amplification at forcing ratio ``g = ν/ω_M`` (eq. (9.596)); vectorised."""
+        """``R1(g)``, main-mass amplification at forcing ratio ``g = ν/ω_M`` (eq. (9.596)); vectorised.
+
+        Parameters
+        ----------
+        g : float or array_like
+            Forcing ratio ``g = ν/ω_M`` (a non-negative number or an array of them; the result has its shape).
+        """
         g = np.asarray(g, dtype=float)
         mu, f, z = float(self.mu), float(self.frequency_ratio), float(self.damping_ratio)
         x = g * g
@@ -214,7 +238,17 @@ class Absorber(SymPyPrintable):
         return (0.5 * (a - b), 0.5 * (a + b))
 
     def peak(self, g_max: float = 4.0, tol: float = 1e-13) -> tuple[float, float]:
-        """``(g, R1)`` at the highest resonance peak (dense grid, then golden-section refinement)."""
+        """``(g, R1)`` at the highest resonance peak (dense grid, then golden-section refinement).
+
+        Parameters
+        ----------
+        g_max : float, optional
+            Upper end of the search grid of forcing ratios, which must be positive and above the highest resonance
+            (default 4).
+        tol : float, optional
+            Tolerance on the peak's forcing ratio in the golden-section refinement, which must be positive (default
+            1e-13).
+        """
         from scipy.optimize import minimize_scalar
 
         if self.damping_ratio == 0:
@@ -236,7 +270,15 @@ class Absorber(SymPyPrintable):
         return best
 
     def plot(self, g: Any = None, *, ax: Any = None, **kwargs: Any) -> Any:
-        """Plot ``R1(g)`` (with the undamped and locked curves for reference); returns the Axes."""
+        """Plot ``R1(g)`` (with the undamped and locked curves for reference); returns the Axes.
+
+        Parameters
+        ----------
+        g : array_like, optional
+            Forcing ratios to plot, finite numbers; ``linspace(0.5, 1.5, 1001)`` when omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -263,7 +305,21 @@ class Absorber(SymPyPrintable):
 
 @dataclass(frozen=True)
 class HInfinityOptimum(SymPyPrintable):
-    """Result of :func:`absorber_hinf_optimum`: tuning, damping, the minimised peak and the fixed-point peak."""
+    """Result of :func:`absorber_hinf_optimum`: tuning, damping, the minimised peak and the fixed-point peak.
+
+    Attributes
+    ----------
+    mu : float
+        Mass ratio ``m/M``.
+    frequency_ratio : float
+        Optimal tuning ``f = ω_m/ω_M`` (Den Hartog's ``1/(1 + μ)`` when the tuning is kept fixed).
+    damping_ratio : float
+        Optimal damping ratio ``ζ = β/ω_M``.
+    peak : float
+        The minimised highest peak of ``R1``.
+    fixed_point_peak : float
+        The highest peak of ``R1`` at Den Hartog's fixed-point optimum, for comparison (never below :attr:`peak`).
+    """
 
     mu: float
     frequency_ratio: float
@@ -278,6 +334,17 @@ def absorber_hinf_optimum(mu: float, tune: bool = True, tol: float = 1e-10) -> H
 
     Starts from Den Hartog's fixed-point optimum and minimises the peak with Nelder–Mead; the result's
     ``peak`` is never above ``fixed_point_peak``, the highest peak at Den Hartog's values.
+
+    Parameters
+    ----------
+    mu : float
+        Mass ratio ``m/M``, which must be positive.
+    tune : bool, optional
+        Whether to optimise the tuning ``f`` together with the damping (default True); False keeps Den Hartog's ``f =
+        1/(1 + μ)`` and optimises the damping only.
+    tol : float, optional
+        Tolerance of the Nelder–Mead minimisation on ``f`` and ``ζ`` (and, relative to the peak, on its value), which
+        must be positive (default 1e-10).
 
     Examples
     --------

@@ -42,7 +42,21 @@ _KINDS = ("lowpass", "highpass", "bandpass", "bandstop")
 
 @dataclass(frozen=True)
 class FilterSection(SymPyPrintable):
-    """A filter section: its four-pole, its element values (per half-section) and its design data."""
+    """A filter section: its four-pole, its element values (per half-section) and its design data.
+
+    Attributes
+    ----------
+    kind : {"lowpass", "highpass", "bandpass", "bandstop"}
+        The kind of filter.
+    four_pole : FourPole
+        The symmetric T section (half-section series arms on both sides, shunt arm doubled).
+    elements : dict
+        Element values of one half-section, keyed by name (``"L"``, ``"C"``, ``"L_series"``, ``"C_shunt"``, ...).
+    R : SymPy expression
+        Nominal impedance ``sqrt(L/C)`` of the low-pass prototype.
+    band : tuple
+        The band edges ``(omega1, omega2)`` of a band-pass or band-stop section, ``(omega0,)`` otherwise.
+    """
 
     kind: str
     four_pole: FourPole
@@ -51,14 +65,30 @@ class FilterSection(SymPyPrintable):
     band: tuple
 
     def attenuation_phase(self, omega: Any) -> tuple[float, float]:
-        """Image attenuation ``a`` (nepers) and phase ``b`` (rad) at angular frequency ``omega``."""
+        """Image attenuation ``a`` (nepers) and phase ``b`` (rad) at angular frequency ``omega``.
+
+        Parameters
+        ----------
+        omega : float
+            Angular frequency in rad/s, a finite real number (avoid the cut-off frequencies, where the image parameters
+            do not exist).
+        """
         from ..ports.image import image_parameters
 
         ip = image_parameters(self.four_pole, at=1j * mpmath.mpf(omega))
         return float(ip.g.real), float(ip.g.imag)
 
     def plot(self, omega: Any = None, *, ax: Any = None) -> Any:
-        """Plot image attenuation and phase against ``omega``; returns the Axes."""
+        """Plot image attenuation and phase against ``omega``; returns the Axes.
+
+        Parameters
+        ----------
+        omega : array_like, optional
+            Angular frequencies in rad/s, finite real numbers; 600 points up to three times the highest band edge when
+            omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
         import numpy as np
 
@@ -90,6 +120,18 @@ class FilterSection(SymPyPrintable):
 @validated
 def frequency_map(kind: str, omega0: Any, band: tuple | None = None, p: sp.Symbol = P) -> sp.Expr:
     """The reactance transformation ``p/ω0 -> F(p)`` from the low-pass prototype (eqs. (9.461), (9.468)).
+
+    Parameters
+    ----------
+    kind : {"lowpass", "highpass", "bandpass", "bandstop"}
+        Kind of filter, one of "lowpass", "highpass", "bandpass", "bandstop" (the last two need ``band``).
+    omega0 : number or SymPy expression
+        Normalising frequency of the low-pass prototype ``p/ω0``, which must be positive.
+    band : (omega1, omega2), optional
+        Band edges ``0 < omega1 < omega2``, required for band-pass and band-stop maps and ignored otherwise.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -149,12 +191,17 @@ def constant_k_section(kind: str, R: Any, omega0: Any, band: tuple | None = None
     Parameters
     ----------
     kind : {"lowpass", "highpass", "bandpass", "bandstop"}
+        Kind of filter, one of "lowpass", "highpass", "bandpass", "bandstop" (the last two need ``band``).
     R : number
-        Nominal impedance ``sqrt(L/C)``.
+        Nominal impedance ``sqrt(L/C)``, which must be positive.
     omega0 : number
-        Cut-off of the low-pass prototype (``1/sqrt(LC)``); for band filters the normalising frequency of the map.
+        Cut-off of the low-pass prototype (``1/sqrt(LC)``), which must be positive; for band filters the normalising
+        frequency of the map.
     band : (omega1, omega2), optional
-        Band edges for band-pass and band-stop sections.
+        Band edges ``0 < omega1 < omega2`` for band-pass and band-stop sections.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -201,6 +248,23 @@ def m_derived_section(
       ``C_shunt_tank`` in series with ``L_shunt`` + ``C_shunt``;
     * band-stop: series tank ``L_series`` ‖ ``C_series``; shunt: ``L_shunt`` + ``C_shunt`` in series with the
       tank ``L_shunt_tank`` ‖ ``C_shunt_tank``.
+
+    Parameters
+    ----------
+    kind : {"lowpass", "highpass", "bandpass", "bandstop"}
+        Kind of filter, one of "lowpass", "highpass", "bandpass", "bandstop" (the last two need ``band``).
+    R : number or SymPy expression
+        Nominal impedance ``sqrt(L/C)`` of the constant-k prototype, which must be positive.
+    omega0 : number or SymPy expression
+        Cut-off of the low-pass prototype, which must be positive; for band filters the normalising frequency of the
+        map.
+    m : number or SymPy expression
+        The m of the section, which must satisfy ``0 < m <= 1`` (``m = 1`` gives the constant-k section).
+    band : (omega1, omega2), optional
+        Band edges ``0 < omega1 < omega2``, required for band-pass and band-stop sections.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -313,6 +377,19 @@ def image_operating_loss(W: Any, g: Any, n: int, Rg: Any, Rl: Any) -> Any:
     ``e^{2a_op} = (Rg + Rl)²/(4 Rg Rl) · |ch(n g) + (W² + Rg Rl)/(W (Rg + Rl)) sh(n g)|²`` (the general form that
     replaces the damaged printed closed form of Guillemin's example).
 
+    Parameters
+    ----------
+    W : complex
+        Image impedance of one section at the frequency considered (a finite nonzero real or complex number).
+    g : complex
+        Image propagation of one section there (attenuation + i·phase, nepers and radians).
+    n : int
+        Number of identical sections in the chain, a positive integer.
+    Rg : float
+        Resistance of the generator, which must be positive.
+    Rl : float
+        Resistance of the load, which must be positive.
+
     Examples
     --------
     >>> import mpmath
@@ -337,6 +414,16 @@ def lattice_from_transmission(X: Any, W: Any, p: sp.Symbol = P) -> FourPole:
 
     ``Za = W (1 - X)/(1 + X)`` and ``Zb = W²/Za``.  Realisable (ideal elements allowed) iff ``Za`` is positive real,
     i.e. ``X`` is analytic in the closed right half-plane with ``|X(iω)| <= 1`` (§9.34).
+
+    Parameters
+    ----------
+    X : SymPy expression
+        Transmission ``e^{-g}`` as a rational function of ``p``, which must be analytic in the closed right half-plane
+        with ``|X(iω)| <= 1`` and not identically 1.
+    W : number or SymPy expression
+        Image impedance of the lattice, which must be positive.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------

@@ -19,7 +19,19 @@ __all__ = ["MatchingPad", "matching_l_pad"]
 
 @dataclass(frozen=True)
 class MatchingPad(SymPyPrintable):
-    """A resistive L pad: series ``Ra`` on the high side, shunt ``Rb`` on the low side, and its loss ``a0``."""
+    """A resistive L pad: series ``Ra`` on the high side, shunt ``Rb`` on the low side, and its loss ``a0``.
+
+    Attributes
+    ----------
+    Ra : SymPy expression
+        Series resistance on the high-impedance (input) side, ``sqrt(Rx (Rx - Ry))``.
+    Rb : SymPy expression
+        Shunt resistance on the low-impedance (output) side, ``Ry sqrt(Rx/(Rx - Ry))``.
+    loss : SymPy expression
+        Image attenuation ``a0`` in nepers, ``ch a0 = sqrt(Rx/Ry)``.
+    four_pole : FourPole
+        The pad as an L section (series ``Ra``, then shunt ``Rb``).
+    """
 
     Ra: sp.Expr
     Rb: sp.Expr
@@ -42,6 +54,13 @@ def matching_l_pad(Rx: Any, Ry: Any) -> MatchingPad:
     """L pad with image impedances ``Rx`` (input) and ``Ry`` (output), ``Rx > Ry`` (eqs. (9.514)–(9.517)).
 
     ``Ra = sqrt(Rx (Rx - Ry))``, ``Rb = Ry sqrt(Rx/(Rx - Ry))``, loss ``ch a0 = sqrt(Rx/Ry)`` nepers.
+
+    Parameters
+    ----------
+    Rx : number or SymPy expression
+        Image impedance at the input, which must be positive and larger than ``Ry``.
+    Ry : number or SymPy expression
+        Image impedance at the output, which must be positive and smaller than ``Rx``.
 
     Examples
     --------

@@ -68,6 +68,13 @@ class MechanicalElement(SymPyPrintable):
     """
 
     def mechanical_impedance(self, p: sp.Symbol = P) -> sp.Expr:  # pragma: no cover - abstract
+        """Mechanical impedance ``F/v`` (force over velocity) as a rational expression in ``p``.
+
+        Parameters
+        ----------
+        p : sympy.Symbol, optional
+            Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+        """
         raise NotImplementedError
 
     def __or__(self, other: MechanicalElement) -> MechanicalParallel:
@@ -100,7 +107,13 @@ def _check(x: Any) -> MechanicalElement:
 
 @dataclass(frozen=True, repr=False)
 class Mass(MechanicalElement):
-    """Mass ``m``: ``F = m p v``."""
+    """Mass ``m``: ``F = m p v``.
+
+    Parameters
+    ----------
+    m : number or SymPy expression
+        Mass, which must be positive (a number > 0 or a symbol not known to be zero or negative).
+    """
 
     m: Any
 
@@ -116,7 +129,13 @@ class Mass(MechanicalElement):
 
 @dataclass(frozen=True, repr=False)
 class Spring(MechanicalElement):
-    """Spring of stiffness ``k``: ``F = (k/p) v``."""
+    """Spring of stiffness ``k``: ``F = (k/p) v``.
+
+    Parameters
+    ----------
+    k : number or SymPy expression
+        Stiffness, which must be positive (a number > 0 or a symbol not known to be zero or negative).
+    """
 
     k: Any
 
@@ -132,7 +151,14 @@ class Spring(MechanicalElement):
 
 @dataclass(frozen=True, repr=False)
 class Damper(MechanicalElement):
-    """Viscous damper ``c``: ``F = c v``."""
+    """Viscous damper ``c``: ``F = c v``.
+
+    Parameters
+    ----------
+    c : number or SymPy expression
+        Viscous damping coefficient (force per velocity), which must be positive (a number > 0 or a symbol not known to
+        be zero or negative).
+    """
 
     c: Any
 
@@ -148,7 +174,13 @@ class Damper(MechanicalElement):
 
 @dataclass(frozen=True, repr=False)
 class MechanicalParallel(MechanicalElement):
-    """Elements sharing one velocity difference: impedances add."""
+    """Elements sharing one velocity difference: impedances add.
+
+    Parameters
+    ----------
+    parts : tuple of MechanicalElement
+        The elements sharing one velocity difference (nested parallel connections are flattened).
+    """
 
     parts: tuple
 
@@ -167,7 +199,13 @@ class MechanicalParallel(MechanicalElement):
 
 @dataclass(frozen=True, repr=False)
 class MechanicalSeries(MechanicalElement):
-    """Elements carrying one force: mobilities (``1/Z``) add."""
+    """Elements carrying one force: mobilities (``1/Z``) add.
+
+    Parameters
+    ----------
+    parts : tuple of MechanicalElement
+        The elements carrying one force (nested series connections are flattened).
+    """
 
     parts: tuple
 
@@ -197,6 +235,15 @@ def to_electrical(mech: MechanicalElement, analogy: str = "force-voltage") -> On
     With ``"force-voltage"`` the network's impedance equals the mechanical impedance ``F/v``; with
     ``"force-current"`` its admittance does.
 
+    Parameters
+    ----------
+    mech : MechanicalElement
+        The mechanical one-port: masses, springs and dampers connected with ``|`` and ``+``.
+    analogy : {"force-voltage", "force-current"}, optional
+        The analogy: "force-voltage" (mass → inductor, spring → capacitor ``1/k``, damper → resistor, parallel ↔ series;
+        the impedance is ``F/v``) or "force-current" (mass → capacitor, spring → inductor ``1/k``, damper → resistor
+        ``1/c``, topology kept; the admittance is ``F/v``); default "force-voltage".
+
     Examples
     --------
     >>> from symosc.networks import Mass, Spring, to_electrical
@@ -224,6 +271,15 @@ def to_electrical(mech: MechanicalElement, analogy: str = "force-voltage") -> On
 @validated
 def to_mechanical(net: OnePort, analogy: str = "force-voltage") -> MechanicalElement:
     """Mechanical analogue of an R, L, C one-port (the inverse of :func:`to_electrical`).
+
+    Parameters
+    ----------
+    net : OnePort
+        The electrical one-port, which must consist of resistors, inductors and capacitors in series and parallel.
+    analogy : {"force-voltage", "force-current"}, optional
+        The analogy: "force-voltage" (mass → inductor, spring → capacitor ``1/k``, damper → resistor, parallel ↔ series;
+        the impedance is ``F/v``) or "force-current" (mass → capacitor, spring → inductor ``1/k``, damper → resistor
+        ``1/c``, topology kept; the admittance is ``F/v``); default "force-voltage".
 
     Examples
     --------
@@ -254,6 +310,17 @@ def to_mechanical(net: OnePort, analogy: str = "force-voltage") -> MechanicalEle
 @validated
 def chain_driving_point(masses: list, springs: list, dampers: list | None = None) -> MechanicalElement:
     """Mechanical one-port of a chain wall–(k1, c1)–m1–(k2, c2)–m2–…–mN driven at the last mass.
+
+    Parameters
+    ----------
+    masses : list of numbers or SymPy expressions
+        The masses ``m1, ..., mN`` from the wall outwards, each positive.
+    springs : list of numbers or SymPy expressions
+        Stiffnesses ``k1, ..., kN``, which must be as many as the masses and positive; ``kj`` joins ``m(j-1)`` (the wall
+        for ``j = 1``) to ``mj``.
+    dampers : list of numbers or SymPy expressions, optional
+        Damping coefficients ``c1, ..., cN`` in parallel with the springs, as many as the masses and non-negative (0
+        leaves a damper out); no dampers when omitted.
 
     Examples
     --------

@@ -103,6 +103,17 @@ def brune_test(a: FourPole, b: FourPole, kind: str = "series") -> bool:
     is solved at terminal level (modified nodal analysis in exact rational arithmetic at two random sample points
     of ``p`` and of every element symbol) and its chain matrix compared with the one the sum predicts.
 
+    Parameters
+    ----------
+    a : FourPole
+        The first component, which must carry a terminal-level netlist (any section of the library does) unless it is
+        isolated.
+    b : FourPole
+        The second component, with a netlist as for ``a``.
+    kind : {"series", "parallel", "series_parallel", "parallel_series"}, optional
+        The connection to test: inputs and outputs in series (Z adds), in parallel (Y adds), inputs in series and
+        outputs in parallel (H adds), or the reverse (G adds); default "series".
+
     Returns
     -------
     bool
@@ -173,6 +184,16 @@ def _connect(a: FourPole, b: FourPole, kind: str, check: bool) -> FourPole:
 def series(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
     """Series–series connection: ``Z = Z' + Z''`` (Bulgakov (1954), §8.33), Brune-tested unless ``check=False``.
 
+    Parameters
+    ----------
+    a : FourPole
+        The first component of the connection.
+    b : FourPole
+        The second component; its input and output are in series with those of ``a``.
+    check : bool, optional
+        Whether to run :func:`brune_test` first and raise ModelError when the connection is not valid (default True);
+        False skips it for a connection known to be valid.
+
     Examples
     --------
     >>> from symosc.networks import series, lattice, ideal_transformer, cascade, t_section
@@ -193,6 +214,16 @@ def series(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
 def parallel(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
     """Parallel–parallel connection: ``Y = Y' + Y''`` (§8.33), Brune-tested unless ``check=False``.
 
+    Parameters
+    ----------
+    a : FourPole
+        The first component of the connection.
+    b : FourPole
+        The second component; its input and output are in parallel with those of ``a``.
+    check : bool, optional
+        Whether to run :func:`brune_test` first and raise ModelError when the connection is not valid (default True);
+        False skips it for a connection known to be valid.
+
     Examples
     --------
     >>> from symosc.networks import parallel, t_section, series_element
@@ -212,6 +243,16 @@ def parallel(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
 def series_parallel(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
     """Inputs in series, outputs in parallel: ``H = H' + H''``; Brune-tested unless ``check=False``.
 
+    Parameters
+    ----------
+    a : FourPole
+        The first component of the connection.
+    b : FourPole
+        The second component; its input is in series and its output in parallel with those of ``a``.
+    check : bool, optional
+        Whether to run :func:`brune_test` first and raise ModelError when the connection is not valid (default True);
+        False skips it for a connection known to be valid.
+
     Examples
     --------
     >>> from symosc.networks import series_parallel, shunt_element, ideal_transformer, cascade
@@ -230,6 +271,16 @@ def series_parallel(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
 @validated
 def parallel_series(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
     """Inputs in parallel, outputs in series: ``G = G' + G''``; Brune-tested unless ``check=False``.
+
+    Parameters
+    ----------
+    a : FourPole
+        The first component of the connection.
+    b : FourPole
+        The second component; its input is in parallel and its output in series with those of ``a``.
+    check : bool, optional
+        Whether to run :func:`brune_test` first and raise ModelError when the connection is not valid (default True);
+        False skips it for a connection known to be valid.
 
     Examples
     --------
@@ -260,6 +311,7 @@ def chain_power(section: Any, n: Any) -> sp.Matrix:
     Parameters
     ----------
     section : FourPole or 2x2 matrix
+        The repeated section (a four-pole, or its chain matrix).
     n : int or SymPy symbol
         Number of sections (a symbol gives the formula for general ``n``).
 

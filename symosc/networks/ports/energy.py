@@ -131,6 +131,19 @@ class EnergyFunctions(SymPyPrintable):
     current ``I1``.  :attr:`F0`, :attr:`T0`, :attr:`V0` are the Hermitian forms in the loop-current symbols
     :attr:`currents`; :meth:`evaluate` puts in the currents the network carries at a given ``p``.
 
+    Attributes
+    ----------
+    R : sympy.ImmutableMatrix
+        Loop resistance matrix (symmetric, driving loop first).
+    L : sympy.ImmutableMatrix
+        Loop inductance matrix, mutual inductances of Brune sections included.
+    S : sympy.ImmutableMatrix
+        Loop elastance matrix (inverse capacitances ``1/C``).
+    loops : tuple of str
+        Labels of the loops, in the order of the matrix rows ("driving loop" first).
+    p : sympy.Symbol
+        Operator variable of :meth:`loop_impedance` and :meth:`impedance`.
+
     Examples
     --------
     >>> from symosc.networks import Capacitor, Inductor, Resistor, energy_functions
@@ -191,6 +204,12 @@ class EnergyFunctions(SymPyPrintable):
         """Loop currents for ``I1 = 1`` at ``p = at`` and the values of ``F0``, ``T0``, ``V0`` there.
 
         ``at`` may be an exact complex number (``3 + 2*sympy.I``): the result is then exact.
+
+        Parameters
+        ----------
+        at : number or SymPy number
+            The value of ``p``, a nonzero real or complex number free of symbols (exact values such as ``2*sympy.I``
+            give exact results).
         """
         at = as_expr(at, "at")
         if at.free_symbols or at == 0:
@@ -231,7 +250,8 @@ def energy_functions(network: Any, terminals: tuple | None = None, p: sp.Symbol 
         nodes (any topology, e.g. a bridge), each element itself a one-port tree.
     terminals : (node, node), optional
         The driving terminals of a branch list (required then; the current enters at the first).
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -299,6 +319,21 @@ class ReactanceCheck(SymPyPrintable):
     ``bool(check)`` is True when the one-port is lossless (``Re Z(iω) = 0``) and its reactance increases on
     ``ω > 0`` (between poles), which makes the zeros and poles of ``X`` interlace (9.252)–(9.255).
 
+    Attributes
+    ----------
+    Z : SymPy expression
+        The impedance tested, cancelled.
+    omega : sympy.Symbol
+        The positive angular-frequency symbol in :attr:`reactance` and :attr:`slope`.
+    reactance : SymPy expression or None
+        ``X(ω)`` with ``Z(iω) = i X(ω)``; None when ``Z`` is not lossless.
+    slope : SymPy expression or None
+        ``dX/dω``; None when ``Z`` is not lossless.
+    lossless : bool
+        Whether ``Re Z(iω)`` vanishes identically.
+    increasing : bool
+        Whether ``dX/dω > 0`` on ``ω > 0``.
+
     Examples
     --------
     >>> import sympy as sp
@@ -351,7 +386,8 @@ def check_reactance_theorem(Z: Any, p: sp.Symbol = P) -> ReactanceCheck:
     ----------
     Z : SymPy expression or OnePort
         Rational impedance in ``p`` with numeric coefficients (or a network).
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable of ``Z``, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------

@@ -96,7 +96,17 @@ class FourPole(SymPyPrintable):
         return cls(convert_parameters(M, kind, "A", convention), p, **kw)
 
     def parameters(self, kind: str = "A", convention: str = "book") -> sp.Matrix:
-        """The parameter matrix of ``kind`` ("A", "Z", "Y", "H", "G") in ``convention`` ("book" or "ieee")."""
+        """The parameter matrix of ``kind`` ("A", "Z", "Y", "H", "G") in ``convention`` ("book" or "ieee").
+
+        Parameters
+        ----------
+        kind : {"A", "Z", "Y", "H", "G"}, optional
+            Parameter set to return, one of "A" (chain; "ABCD" and "chain" are accepted too), "Z", "Y", "H", "G"
+            (default "A").
+        convention : {"book", "ieee"}, optional
+            Sign convention of the result: "book" counts the output current out of the network (Bulgakov (1954), §8.32),
+            "ieee" counts both port currents in (default "book").
+        """
         _kind(kind, "kind")
         return convert_parameters(self.chain, "A", kind, convention)
 
@@ -145,21 +155,45 @@ class FourPole(SymPyPrintable):
         return FourPole(Ar, self.p, net, self.isolated, f"reversed({self.name})" if self.name else "")
 
     def input_impedance(self, load: Any) -> sp.Expr:
-        """``(A11 Zy + A12)/(A21 Zy + A22)`` with the output closed by ``load``, eq. (8.281)."""
+        """``(A11 Zy + A12)/(A21 Zy + A22)`` with the output closed by ``load``, eq. (8.281).
+
+        Parameters
+        ----------
+        load : number or SymPy expression
+            Impedance ``Zy`` closing the output, an expression in ``p`` (or a number).
+        """
         A, Zy = self.chain, as_expr(load, "load")
         return sp.cancel((A[0, 0] * Zy + A[0, 1]) / (A[1, 0] * Zy + A[1, 1]))
 
     def output_impedance(self, source: Any) -> sp.Expr:
-        """``(A22 Zx + A12)/(A21 Zx + A11)`` seen from the output with the input closed by ``source``, (8.284)."""
+        """``(A22 Zx + A12)/(A21 Zx + A11)`` seen from the output with the input closed by ``source``, (8.284).
+
+        Parameters
+        ----------
+        source : number or SymPy expression
+            Impedance ``Zx`` closing the input, an expression in ``p`` (or a number).
+        """
         A, Zx = self.chain, as_expr(source, "source")
         return sp.cancel((A[1, 1] * Zx + A[0, 1]) / (A[1, 0] * Zx + A[0, 0]))
 
     def subs(self, *args: Any, **kwargs: Any) -> FourPole:
-        """Substitute into the chain matrix (the netlist is dropped unless nothing structural changes)."""
+        """Substitute into the chain matrix (the terminal-level netlist is dropped: the result is not Brune-tested).
+
+        Parameters
+        ----------
+        args
+            What to substitute, as for ``sympy.Matrix.subs``: ``old, new``, a dict or a list of ``(old, new)`` pairs.
+        """
         return FourPole(self.chain.subs(*args, **kwargs), self.p, None, self.isolated, self.name)
 
     def evaluate(self, value: Any) -> Any:
-        """Chain matrix at ``p = value`` as an mpmath matrix (``value`` may be complex, e.g. ``1j*omega``)."""
+        """Chain matrix at ``p = value`` as an mpmath matrix (``value`` may be complex, e.g. ``1j*omega``).
+
+        Parameters
+        ----------
+        value : number or SymPy number
+            Value of the operator variable ``p``, real or complex (``1j*omega`` for the steady state at ``omega``).
+        """
         import mpmath
 
         f = sp.lambdify(self.p, self.chain, "mpmath")
@@ -186,6 +220,11 @@ class FourPole(SymPyPrintable):
 @validated
 def cascade(*four_poles: FourPole) -> FourPole:
     """Cascade (tandem) connection, chain matrix A = A_1 A_2 ⋯ A_n (Bulgakov (1954), eq. (8.270)).
+
+    Parameters
+    ----------
+    four_poles : FourPole
+        The four-poles in order from input to output, at least one.
 
     Examples
     --------

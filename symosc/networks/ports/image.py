@@ -62,6 +62,25 @@ class ImageParameters(SymPyPrintable):
 
     ``g = (gx + gy)/2`` is the image propagation (attenuation ``Re g`` in nepers, phase ``Im g``) and
     ``delta = (gx - gy)/2`` (zero for a reciprocal network), eqs. (8.286)–(8.299).
+
+    Attributes
+    ----------
+    W : mpmath.mpc
+        Characteristic (image) impedance ``W = sqrt(A12/A21)``, sign coupled so that ``Re gx >= 0``.
+    q : mpmath.mpc
+        Transformation ratio ``q = sqrt(A22/A11)``.
+    Zx : mpmath.mpc
+        Input image impedance ``W/q``.
+    Zy : mpmath.mpc
+        Output image impedance ``W q``.
+    gx : mpmath.mpc
+        Input propagation constant, ``e^{gx} = A11 q + A21 W`` (``Re gx >= 0``).
+    gy : mpmath.mpc
+        Output propagation constant ``g - delta``.
+    g : mpmath.mpc
+        Image propagation ``(gx + gy)/2``: attenuation ``Re g`` in nepers, phase ``Im g`` in radians.
+    delta : mpmath.mpc
+        Asymmetry ``(gx - gy)/2`` with ``e^{2 delta} = det A`` (zero for a reciprocal network), eq. (8.299).
     """
 
     W: Any
@@ -99,8 +118,10 @@ def image_parameters(four_pole: FourPole, at: Any) -> ImageParameters:
     Parameters
     ----------
     four_pole : FourPole
+        The four-pole, its chain matrix a function of its operator variable ``p``.
     at : complex
-        Value of ``p`` (``1j*omega`` for the steady state at angular frequency ``omega``).
+        Value of ``p`` at which to evaluate, a finite real or complex number (``1j*omega`` for the steady state at
+        angular frequency ``omega``).
 
     Returns
     -------
@@ -151,6 +172,21 @@ class IterativeParameters(SymPyPrintable):
     """Iterative parameters at one point: ``Z1 = Z'``, ``Z2 = Z''``, ``s1 = s'``, ``s2 = s''``, ``s``, ``delta``.
 
     A chain of sections closed by ``Z'`` at the output shows ``Z'`` at the input (eqs. (8.389)–(8.400)).
+
+    Attributes
+    ----------
+    Z1 : mpmath.mpc
+        Iterative impedance ``Z'`` (seen at the input of a chain closed by ``Z'``).
+    Z2 : mpmath.mpc
+        Iterative impedance ``Z''`` (the same from the output side).
+    s1 : mpmath.mpc
+        Propagation ``s'`` from input to output, ``Re s' > 0``.
+    s2 : mpmath.mpc
+        Propagation ``s''`` in the opposite direction.
+    s : mpmath.mpc
+        Mean propagation ``(s' + s'')/2``.
+    delta : mpmath.mpc
+        Half-difference ``(s' - s'')/2``.
     """
 
     Z1: Any
@@ -186,6 +222,14 @@ def iterative_parameters(four_pole: FourPole, at: Any) -> IterativeParameters:
     ``Z', Z'' = [±(A11 - A22) + r]/(2 A21)``, ``e^{s'} = (A11 + A22 + r)/2``, ``e^{-s''} = (A11 + A22 - r)/2`` with
     ``r = sqrt((A11 - A22)**2 + 4 A12 A21)``.
 
+    Parameters
+    ----------
+    four_pole : FourPole
+        The four-pole, its chain matrix a function of its operator variable ``p``.
+    at : complex
+        Value of ``p`` at which to evaluate, a finite real or complex number (``1j*omega`` for the steady state at
+        angular frequency ``omega``).
+
     Examples
     --------
     >>> from symosc.networks import l_section, iterative_parameters, FourPole
@@ -213,6 +257,17 @@ def iterative_parameters(four_pole: FourPole, at: Any) -> IterativeParameters:
 @dataclass(frozen=True)
 class TerminatedResponse(SymPyPrintable):
     """Currents and voltages of a four-pole between a generator ``E`` (internal ``Zr``) and a load ``ZH``.
+
+    Attributes
+    ----------
+    Ex : SymPy expression
+        Input voltage ``E - Zr Ix``.
+    Ix : SymPy expression
+        Input current.
+    Ey : SymPy expression
+        Output voltage ``ZH Iy``.
+    Iy : SymPy expression
+        Output (load) current, counted out of the network.
 
     Examples
     --------
@@ -246,6 +301,17 @@ def terminated_response(four_pole: FourPole, E: Any, Zr: Any, ZH: Any) -> Termin
     """Boundary problem of §8.39: ``Ex = E - Zr Ix``, ``Ey = ZH Iy``, solved exactly in ``p``.
 
     ``E = A'12 Iy`` with ``A' = [[1, Zr], [0, 1]] A [[1, ZH], [0, 1]]`` (8.369)–(8.375).
+
+    Parameters
+    ----------
+    four_pole : FourPole
+        The four-pole, its chain matrix a function of its operator variable ``p``.
+    E : number or SymPy expression
+        Electromotive force of the generator (an expression in ``p`` for a Carson image, or a constant).
+    Zr : number or SymPy expression
+        Internal impedance of the generator, an expression in ``p`` (or a number).
+    ZH : number or SymPy expression
+        Load impedance closing the output, an expression in ``p`` (or a number).
 
     Examples
     --------
@@ -283,6 +349,19 @@ def insertion_loss(four_pole: FourPole, Zr: Any, ZH: Any, at: Any) -> Any:
     ``Re g_ins`` is the insertion loss in nepers (it may be negative for a passive network that improves the
     match), ``Im g_ins`` the insertion phase.
 
+    Parameters
+    ----------
+    four_pole : FourPole
+        The four-pole, its chain matrix a function of its operator variable ``p``.
+    Zr : number or SymPy expression
+        Internal impedance of the generator, an expression in ``p`` (or a number); ``Zr + ZH`` must not vanish at
+        ``at``.
+    ZH : number or SymPy expression
+        Load impedance, an expression in ``p`` (or a number).
+    at : complex
+        Value of ``p`` at which to evaluate, a finite real or complex number (``1j*omega`` for the steady state at
+        angular frequency ``omega``).
+
     Examples
     --------
     >>> from symosc.networks import series_element, insertion_loss
@@ -306,6 +385,18 @@ def working_loss(four_pole: FourPole, Zr: Any, ZH: Any, at: Any) -> Any:
 
     ``Re g_work = ½ ln(P_max/P) >= 0`` for a passive network; ``Rr``, ``RH`` are the real parts of ``Zr``, ``ZH``
     at ``p = at``.
+
+    Parameters
+    ----------
+    four_pole : FourPole
+        The four-pole, its chain matrix a function of its operator variable ``p``.
+    Zr : number or SymPy expression
+        Internal impedance of the generator, an expression in ``p`` whose real part at ``at`` must be positive.
+    ZH : number or SymPy expression
+        Load impedance, an expression in ``p`` whose real part at ``at`` must be positive.
+    at : complex
+        Value of ``p`` at which to evaluate, a finite real or complex number (``1j*omega`` for the steady state at
+        angular frequency ``omega``).
 
     Examples
     --------

@@ -75,7 +75,13 @@ class CascadeJunctions(SymPyPrintable):
     delta: tuple
 
     def plot(self, *, ax: Any = None) -> Any:
-        """``|E_j|`` and ``|I_j|`` against the junction number ``j``."""
+        """``|E_j|`` and ``|I_j|`` against the junction number ``j``.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:

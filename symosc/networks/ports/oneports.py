@@ -71,10 +71,24 @@ class OnePort(SymPyPrintable):
     """
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:  # pragma: no cover - abstract
+        """The impedance ``Z(p)`` as a cancelled rational expression in the operator variable.
+
+        Parameters
+        ----------
+        p : sympy.Symbol, optional
+            Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady
+            state); the standard symbol ``p`` when omitted.
+        """
         raise NotImplementedError
 
     def admittance(self, p: sp.Symbol = P) -> sp.Expr:
-        """``1/Z(p)`` as a cancelled rational expression."""
+        """``1/Z(p)`` as a cancelled rational expression.
+
+        Parameters
+        ----------
+        p : sympy.Symbol, optional
+            Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+        """
         return sp.cancel(1 / self.impedance(p))
 
     def elements(self) -> tuple:
@@ -134,7 +148,13 @@ _LONGEST_VALUE = 300
 
 @dataclass(frozen=True, repr=False)
 class Resistor(OnePort):
-    """Resistor ``Z = R``."""
+    """Resistor ``Z = R``.
+
+    Parameters
+    ----------
+    R : number or SymPy expression
+        Resistance, which must be positive (a number > 0 or a symbol not known to be zero or negative).
+    """
 
     R: Any
 
@@ -150,7 +170,13 @@ class Resistor(OnePort):
 
 @dataclass(frozen=True, repr=False)
 class Inductor(OnePort):
-    """Inductor ``Z = L p``."""
+    """Inductor ``Z = L p``.
+
+    Parameters
+    ----------
+    L : number or SymPy expression
+        Inductance, which must be positive (a number > 0 or a symbol not known to be zero or negative).
+    """
 
     L: Any
 
@@ -166,7 +192,13 @@ class Inductor(OnePort):
 
 @dataclass(frozen=True, repr=False)
 class Capacitor(OnePort):
-    """Capacitor ``Z = 1/(C p)``."""
+    """Capacitor ``Z = 1/(C p)``.
+
+    Parameters
+    ----------
+    C : number or SymPy expression
+        Capacitance, which must be positive (a number > 0 or a symbol not known to be zero or negative).
+    """
 
     C: Any
 
@@ -185,6 +217,12 @@ class Impedance(OnePort):
     """A generic impedance ``Z``, an expression in the standard symbol ``p`` (or free of it).
 
     No passivity is assumed: use it for symbolic section formulas such as ``Impedance(sympy.Symbol("Z_A"))``.
+
+    Parameters
+    ----------
+    Z : number or SymPy expression
+        The impedance, a finite scalar expression in the standard symbol ``p`` (or free of it) that must not be
+        identically zero.
     """
 
     Z: Any
@@ -211,7 +249,13 @@ def _flatten(parts: tuple, cls: type) -> tuple:
 
 @dataclass(frozen=True, repr=False)
 class Series(OnePort):
-    """Series connection: ``Z = Z_1 + Z_2 + ...``."""
+    """Series connection: ``Z = Z_1 + Z_2 + ...``.
+
+    Parameters
+    ----------
+    parts : tuple of OnePort
+        The connected one-ports, at least one (nested series connections are flattened).
+    """
 
     parts: tuple
 
@@ -233,7 +277,13 @@ class Series(OnePort):
 
 @dataclass(frozen=True, repr=False)
 class Parallel(OnePort):
-    """Parallel connection: ``1/Z = 1/Z_1 + 1/Z_2 + ...``."""
+    """Parallel connection: ``1/Z = 1/Z_1 + 1/Z_2 + ...``.
+
+    Parameters
+    ----------
+    parts : tuple of OnePort
+        The connected one-ports, at least one (nested parallel connections are flattened).
+    """
 
     parts: tuple
 
@@ -328,6 +378,20 @@ class BruneSection(OnePort):
     section is realisable with a transformer of unit coupling (Brune 1931; Bulgakov (1954), §9.27).
 
     ``Z = (Lp - M) p + [(M p + 1/(C p)) || ((Ls - M) p + Z_load)]``
+
+    Parameters
+    ----------
+    Lp : number or SymPy expression
+        Self-inductance of the input coil, which must be positive.
+    Ls : number or SymPy expression
+        Self-inductance of the output coil, which must be positive.
+    M : number or SymPy expression
+        Mutual inductance, which must be positive (``M**2 = Lp*Ls`` for Brune's section; :attr:`coupling` reports
+        ``M/sqrt(Lp*Ls)``).
+    C : number or SymPy expression
+        Capacitance in the shunt branch, which must be positive.
+    load : OnePort
+        The one-port that closes the output of the section (the remainder of the synthesis).
     """
 
     Lp: Any

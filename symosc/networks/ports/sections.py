@@ -62,6 +62,13 @@ _GROUNDED = ("1", "0", "2", "0")
 def series_element(Z: Any, p: sp.Symbol = P) -> FourPole:
     """Series impedance: ``A = [[1, Z], [0, 1]]`` (Bulgakov (1954), §8.35).
 
+    Parameters
+    ----------
+    Z : number, SymPy expression or OnePort
+        Impedance of the series arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> from symosc.networks import series_element
@@ -82,6 +89,13 @@ def series_element(Z: Any, p: sp.Symbol = P) -> FourPole:
 def shunt_element(Z: Any, p: sp.Symbol = P) -> FourPole:
     """Shunt impedance: ``A = [[1, 0], [1/Z, 1]]`` (Bulgakov (1954), §8.35).
 
+    Parameters
+    ----------
+    Z : number, SymPy expression or OnePort
+        Impedance of the shunt arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> from symosc.networks import shunt_element
@@ -101,6 +115,17 @@ def shunt_element(Z: Any, p: sp.Symbol = P) -> FourPole:
 @validated
 def l_section(series: Any, shunt: Any, shunt_first: bool = False, p: sp.Symbol = P) -> FourPole:
     """L (Γ) half-section: series arm then shunt arm, or shunt first (Bulgakov's Γ of Fig. 101, eq. (8.413)).
+
+    Parameters
+    ----------
+    series : number, SymPy expression or OnePort
+        Impedance of the series arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    shunt : number, SymPy expression or OnePort
+        Impedance of the shunt arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    shunt_first : bool, optional
+        Whether the shunt arm comes first, at the input (Γ turned round); by default the series arm is at the input.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -132,6 +157,19 @@ def t_section(ZA: Any, ZB: Any, ZC: Any, p: sp.Symbol = P) -> FourPole:
 
     ``A = [[(ZA+ZB)/ZB, Σ2/ZB], [1/ZB, (ZB+ZC)/ZB]]`` with ``Σ2 = ZA ZB + ZB ZC + ZC ZA``.
 
+    Parameters
+    ----------
+    ZA : number, SymPy expression or OnePort
+        Impedance of the input series arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is
+        refused).
+    ZB : number, SymPy expression or OnePort
+        Impedance of the shunt arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    ZC : number, SymPy expression or OnePort
+        Impedance of the output series arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is
+        refused).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> from symosc.networks import t_section
@@ -154,6 +192,19 @@ def t_section(ZA: Any, ZB: Any, ZC: Any, p: sp.Symbol = P) -> FourPole:
 @validated
 def pi_section(ZA: Any, ZB: Any, ZC: Any, p: sp.Symbol = P) -> FourPole:
     """Π section: shunt ``ZA``, series ``ZB``, shunt ``ZC`` (Bulgakov (1954), eqs. (8.416)–(8.418)).
+
+    Parameters
+    ----------
+    ZA : number, SymPy expression or OnePort
+        Impedance of the input shunt arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is
+        refused).
+    ZB : number, SymPy expression or OnePort
+        Impedance of the series arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is refused).
+    ZC : number, SymPy expression or OnePort
+        Impedance of the output shunt arm: a nonzero expression in ``p`` or a one-port network (a zero impedance is
+        refused).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -180,6 +231,22 @@ def lattice(ZA: Any, ZB: Any, ZC: Any = None, ZD: Any = None, p: sp.Symbol = P) 
     Arms ``ZA`` (1–2), ``ZB`` (1'–2'), ``ZC`` (1–2'), ``ZD`` (1'–2).  With two arguments the lattice is
     symmetric: series arms ``Za = ZA``, cross arms ``Zb = ZB``, and
     ``A = [[Zb + Za, 2 Za Zb], [2, Zb + Za]] / (Zb - Za)``.
+
+    Parameters
+    ----------
+    ZA : number, SymPy expression or OnePort
+        Impedance of arm 1–2 (the series arm of a symmetric lattice): a nonzero expression in ``p`` or a one-port
+        network (a zero impedance is refused).
+    ZB : number, SymPy expression or OnePort
+        Impedance of arm 1'–2' (the cross arm of a symmetric lattice): a nonzero expression in ``p`` or a one-port
+        network (a zero impedance is refused).
+    ZC : number, SymPy expression or OnePort, optional
+        Impedance of arm 1–2', given together with ``ZD`` or not at all (a symmetric lattice when both are omitted).
+    ZD : number, SymPy expression or OnePort, optional
+        Impedance of arm 1'–2, given together with ``ZC`` or not at all; ``ZC*ZD`` must differ from ``ZA*ZB`` (a
+        balanced bridge transmits nothing).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -220,6 +287,23 @@ def bridged_t_section(ZA: Any, ZB: Any, ZC: Any, ZD: Any, p: sp.Symbol = P) -> F
 
     ``Y = Y_T + (1/ZD) [[1, -1], [1, -1]]`` (book convention).
 
+    Parameters
+    ----------
+    ZA : number, SymPy expression or OnePort
+        Impedance of the input series arm of the T: a nonzero expression in ``p`` or a one-port network (a zero
+        impedance is refused).
+    ZB : number, SymPy expression or OnePort
+        Impedance of the shunt arm of the T: a nonzero expression in ``p`` or a one-port network (a zero impedance is
+        refused).
+    ZC : number, SymPy expression or OnePort
+        Impedance of the output series arm of the T: a nonzero expression in ``p`` or a one-port network (a zero
+        impedance is refused).
+    ZD : number, SymPy expression or OnePort
+        Impedance of the bridge from input to output: a nonzero expression in ``p`` or a one-port network (a zero
+        impedance is refused).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> from symosc.networks import bridged_t_section
@@ -241,6 +325,16 @@ def bridged_t_section(ZA: Any, ZB: Any, ZC: Any, ZD: Any, p: sp.Symbol = P) -> F
 @validated
 def twin_t_section(first: tuple, second: tuple, p: sp.Symbol = P) -> FourPole:
     """Two T sections ``(ZA, ZB, ZC)`` in parallel: ``Y = Y_T1 + Y_T2`` (Bulgakov (1954), eqs. (8.421)–(8.423)).
+
+    Parameters
+    ----------
+    first : tuple of three impedances
+        The arms ``(ZA, ZB, ZC)`` of the first T section (series, shunt, series), each a nonzero expression in ``p`` or
+        a one-port network.
+    second : tuple of three impedances
+        The arms ``(ZA, ZB, ZC)`` of the second T section, connected in parallel with the first.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -269,6 +363,19 @@ def twin_t_notch(R: Any, C: Any, s: Any = 1, p: sp.Symbol = P) -> FourPole:
     T1: ``R``, shunt ``1/(2 C p)``, ``R``; T2: ``1/(s² C p)``, shunt ``R/(2 s²)``, ``1/(s² C p)``.  Then
     ``Y11 = -Y22 = (s²R²C²p² + 2(1+s²)RCp + 1)/(2R(RCp+1))`` and ``Y12 = -Y21 = -(s²R²C²p² + 1)/(2R(RCp+1))``.
 
+    Parameters
+    ----------
+    R : number or SymPy expression
+        Resistance of the series arms of the first T, which must be positive.
+    C : number or SymPy expression
+        Capacitance fixing the arms ``1/(2 C p)`` and ``1/(s² C p)``, which must be positive.
+    s : number or SymPy expression, optional
+        Scale factor of the second T, which must be positive; the transmission zero lies at ``ω = 1/(s R C)`` (default
+        1, the symmetric twin T of Fig. 110).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -293,6 +400,22 @@ def transformer(LA: Any, LB: Any, M: Any, RA: Any = 0, RB: Any = 0, p: sp.Symbol
     """Transformer with self-inductances ``LA``, ``LB``, mutual ``M`` and winding resistances (eqs. (8.331)–(8.338)).
 
     ``Z = [[LA p + RA, -M p], [M p, -(LB p + RB)]]`` (book convention); the ports are galvanically isolated.
+
+    Parameters
+    ----------
+    LA : number or SymPy expression
+        Self-inductance of the primary (input) winding, which must be positive.
+    LB : number or SymPy expression
+        Self-inductance of the secondary (output) winding, which must be positive.
+    M : number or SymPy expression
+        Mutual inductance, which must be positive and at most ``sqrt(LA*LB)`` (coupling coefficient at most 1).
+    RA : number or SymPy expression, optional
+        Resistance of the primary winding, which must be non-negative (default 0).
+    RB : number or SymPy expression, optional
+        Resistance of the secondary winding, which must be non-negative (default 0).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -325,6 +448,13 @@ def ideal_transformer(q: Any, p: sp.Symbol = P) -> FourPole:
 
     It isolates its ports, so any connection through it passes the Brune test.
 
+    Parameters
+    ----------
+    q : number or SymPy expression
+        Voltage ratio ``Ey/Ex``, which must be nonzero.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> from symosc.networks import ideal_transformer
@@ -349,6 +479,16 @@ def lattice_phase_network(L: Any, C: Any, p: sp.Symbol = P) -> FourPole:
 
     ``W = sqrt(L/C)``, ``e^g = (1 + i sqrt(LC) ω)/(1 - i sqrt(LC) ω)``: no attenuation, phase
     ``b = 2 arctan(sqrt(LC) ω)``.
+
+    Parameters
+    ----------
+    L : number or SymPy expression
+        Inductance of each series arm ``L p``, which must be positive.
+    C : number or SymPy expression
+        Capacitance of each cross arm ``1/(C p)``, which must be positive.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol (Carson/Laplace ``p``; put ``p = iω`` for the steady state); the
+        standard symbol ``p`` when omitted.
 
     Examples
     --------

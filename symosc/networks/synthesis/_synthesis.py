@@ -63,6 +63,13 @@ def minimum_real_part(Z: Any, p: sp.Symbol = P) -> tuple[sp.Expr, sp.Expr]:
     irrational ones are radicals or ``CRootOf`` numbers, and ``R`` lies in the field they generate
     (Bulgakov (1954), §9.23, Theorem III).
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with rational or algebraic numeric coefficients (floats are taken exactly).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp

@@ -45,7 +45,8 @@ def bott_duffin_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = 
     ----------
     Z : SymPy expression
         Rational positive-real function of ``p`` with numeric coefficients.
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
         :func:`brune_synthesis` (default 64 with python-flint, 8 without; fields of degree 32–40 take seconds,

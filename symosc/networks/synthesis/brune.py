@@ -37,7 +37,8 @@ def brune_synthesis(Z: Any, p: sp.Symbol = P, *, max_degree: int | None = None) 
     ----------
     Z : SymPy expression
         Rational positive-real function of ``p`` with numeric coefficients.
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values; default 64 with
         python-flint (the ``exact`` extra), 8 without, for nested extensions (the first one, of degree at most

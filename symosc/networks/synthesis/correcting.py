@@ -95,7 +95,8 @@ def link_transfer(
         Flat attenuation factor ``>= 1`` (``> 1`` for the attenuator).
     sign : {1, -1}
         Sign of the constant term of a second-order numerator.
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable of the transfer, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -199,6 +200,7 @@ class CorrectingLink(SymPyPrintable):
     Za, Zb : OnePort
         Networks of the series and cross arms (element values exact).
     p : sympy.Symbol
+        Operator variable of the transfer and of the arms' impedances.
     max_gain : float
         ``max |X(iω)|`` (at most 1).
 
@@ -248,13 +250,28 @@ class CorrectingLink(SymPyPrintable):
         return self.four_pole.input_impedance(self.W)
 
     def attenuation_phase(self, omega: Any) -> tuple[float, float]:
-        """Attenuation ``a = -ln|X(iω)|`` (nepers) and phase ``b = -arg X(iω)`` at ``omega`` (rad/s), eq. (9.511)."""
+        """Attenuation ``a = -ln|X(iω)|`` (nepers) and phase ``b = -arg X(iω)`` at ``omega`` (rad/s), eq. (9.511).
+
+        Parameters
+        ----------
+        omega : float
+            Angular frequency in rad/s, a finite real number.
+        """
         value = complex(sp.lambdify(self.p, self.transfer, "mpmath")(mpmath.mpc(0, float(omega))))
         g = -mpmath.log(value)
         return float(g.real), float(g.imag)
 
     def plot(self, omega: Any = None, *, ax: Any = None) -> Any:
-        """Attenuation (solid) and phase (dashed) against ``ω`` on a log axis, as in Bulgakov's Figs. 161–166."""
+        """Attenuation (solid) and phase (dashed) against ``ω`` on a log axis, as in Bulgakov's Figs. 161–166.
+
+        Parameters
+        ----------
+        omega : array_like, optional
+            Angular frequencies in rad/s, finite positive numbers (a log axis); 200 points from 0.01 to 100 when
+            omitted.
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+        """
         import matplotlib.pyplot as plt
         import numpy as np
 
@@ -340,7 +357,8 @@ def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "auto
         Desired transfer ``Ey/Ex``, rational in ``p`` with numeric coefficients (see :func:`link_transfer`).
     W : positive number
         The constant resistance between which the link works.
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     method : {"auto", "bott-duffin", "brune"}
         One-port synthesis of ``Za``: "bott-duffin" uses R, L, C only, "brune" perfectly coupled coils where the
         real part of ``Za`` touches zero; "auto" takes Bott–Duffin when its element values stay rational and
@@ -396,6 +414,22 @@ class BridgedTLink(SymPyPrintable):
     Series arms ``R1`` (resistors), shunt arm ``shunt``, bridge ``bridge`` (``None``: no bridge).  With
     ``crossed=True`` the output terminals are interchanged (the network's chain matrix is minus that of the bridged
     T), which the book uses when ``Zb`` rather than ``Za`` holds the resistor.
+
+    Attributes
+    ----------
+    R1 : SymPy expression
+        Resistance of each of the two series arms.
+    bridge : OnePort or None
+        Network of the bridge from input to output; None when there is no bridge (``R1`` equal to the lattice's parallel
+        resistance).
+    shunt : OnePort
+        Network of the shunt arm.
+    W : SymPy expression
+        The constant image (and input) resistance.
+    crossed : bool
+        Whether the output terminals are interchanged (the chain matrix is then minus that of the bridged T).
+    p : sympy.Symbol
+        Operator variable of the arms' impedances.
 
     Examples
     --------
@@ -463,6 +497,7 @@ def constant_resistance_bridged_t(link: CorrectingLink, R1: Any = None, *, metho
     Parameters
     ----------
     link : CorrectingLink
+        The constant-resistance lattice to convert (from :func:`correcting_link`).
     R1 : positive number, optional
         Series resistors (default ``W``).
     method : {"auto", "bott-duffin", "brune"}

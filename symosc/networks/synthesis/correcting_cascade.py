@@ -40,6 +40,19 @@ class CorrectingCascade(SymPyPrintable):
     ``transfer = gain * Π link.transfer``; ``gain > 1`` needs an amplifier (the book's compensating amplifier of
     gain ``exp(a0 + Σ a_rj)``), ``gain < 1`` an attenuator.
 
+    Attributes
+    ----------
+    transfer : SymPy expression
+        The requested transfer ``X(p)``.
+    W : SymPy expression
+        The common constant resistance of the links.
+    links : tuple of CorrectingLink
+        The links in cascade order, each of first or second order.
+    gain : SymPy expression
+        The flat factor ``X / Π X_j`` an amplifier (above 1) or attenuator (below 1) must supply.
+    p : sympy.Symbol
+        Operator variable of the transfers.
+
     Examples
     --------
     >>> import sympy as sp
@@ -131,7 +144,9 @@ def correcting_cascade(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "a
         Rational transfer with numeric coefficients, regular in ``Re p >= 0`` and at infinity; its numerator and
         denominator must split into factors of degree at most 2 over the rationals.
     W : positive number
-    p : sympy.Symbol
+        The common constant resistance of the links, which must be positive (default 1).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     method : {"auto", "bott-duffin", "brune"}
         One-port synthesis of the link arms (see :func:`correcting_link`).
 

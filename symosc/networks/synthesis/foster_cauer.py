@@ -39,6 +39,13 @@ __all__ = ["cauer_first", "cauer_second", "foster_first", "foster_second", "is_r
 def is_reactance_function(Z: Any, p: sp.Symbol = P) -> bool:
     """True when ``Z`` is positive real with ``Re Z(iω) ≡ 0`` (a lossless LC one-port, Foster's theorem).
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with real numeric coefficients to test.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -77,6 +84,14 @@ def _join(parts: list[OnePort], cls: type) -> OnePort:
 def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     """Foster's first form: series inductor, series capacitor and parallel LC tanks (poles of ``Z``).
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Reactance function to realise: a positive-real rational function of ``p`` with numeric coefficients and ``Re
+        Z(iω) = 0`` (an LC one-port).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -99,6 +114,14 @@ def foster_first(Z: Any, p: sp.Symbol = P) -> OnePort:
 @validated
 def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     """Foster's second form: shunt capacitor, shunt inductor and parallel series-LC branches (poles of ``1/Z``).
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Reactance function to realise: a positive-real rational function of ``p`` with numeric coefficients and ``Re
+        Z(iω) = 0`` (an LC one-port).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
@@ -123,6 +146,14 @@ def foster_second(Z: Any, p: sp.Symbol = P) -> OnePort:
 def cauer_first(Z: Any, p: sp.Symbol = P) -> OnePort:
     """Cauer's first form: ladder of series inductors and shunt capacitors (continued fraction at infinity).
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Reactance function to realise: a positive-real rational function of ``p`` with numeric coefficients and ``Re
+        Z(iω) = 0`` (an LC one-port).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -144,6 +175,14 @@ def cauer_first(Z: Any, p: sp.Symbol = P) -> OnePort:
 @validated
 def cauer_second(Z: Any, p: sp.Symbol = P) -> OnePort:
     """Cauer's second form: ladder of series capacitors and shunt inductors (continued fraction at zero).
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Reactance function to realise: a positive-real rational function of ``p`` with numeric coefficients and ``Re
+        Z(iω) = 0`` (an LC one-port).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------

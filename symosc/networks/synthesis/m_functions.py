@@ -53,7 +53,8 @@ def richards_function(Z: Any, k: Any, p: sp.Symbol = P) -> sp.Expr:
         Positive-real rational function of ``p`` with numeric coefficients.
     k : number or SymPy expression
         A positive real number (exact values keep the result exact).
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -118,7 +119,8 @@ def m_abscissa(Z: Any, p: sp.Symbol = P) -> sp.Expr:
     Z : SymPy expression
         Positive-real rational function of ``p`` with rational or algebraic (e.g. ``sqrt(2)``) coefficients
         (floating-point ones are taken exactly).
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -243,7 +245,8 @@ def m_function_synthesis(Z: Any, rho: Any = None, p: sp.Symbol = P, *, max_degre
         Positive abscissa: ``Re Z(p) >= 0`` must hold for ``Re p >= -rho`` (test it with :func:`is_m_function`).
         Default: the largest such ``rho``, :func:`m_abscissa` (exact; an irrational one makes the element values
         algebraic numbers).
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
     max_degree : int, optional
         Largest degree over the rationals of the number field holding the exact element values, as in
         :func:`bott_duffin_synthesis` (default 64 with python-flint, 8 without).

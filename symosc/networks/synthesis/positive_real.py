@@ -45,6 +45,16 @@ class PositiveRealReport(SymPyPrintable):
 
     The conditions are those of Bulgakov (1954), §9.23, Theorem V.
 
+    Attributes
+    ----------
+    is_positive_real : bool
+        The verdict.
+    failed : str or None
+        The violated condition ("real coefficients", "pole in the right half-plane", "residue at an imaginary-axis
+        pole", ...); None when ``Z`` is positive real.
+    detail : str
+        What was found (a pole, a residue, a frequency where ``Re Z(iω) < 0``); empty when positive real.
+
     Examples
     --------
     >>> import sympy as sp
@@ -88,6 +98,13 @@ def real_part_on_axis(Z: Any, p: sp.Symbol = P) -> tuple[sp.Poly, sp.Poly]:
 
     ``E`` is the even part ``(N(p)D(-p) + N(-p)D(p))/2`` and ``Q = D(p)D(-p)``, both at ``p² = -x``.
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with real numeric coefficients (symbols other than ``p`` must be substituted).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -122,7 +139,8 @@ def positive_real_report(Z: Any, p: sp.Symbol = P) -> PositiveRealReport:
     ----------
     Z : SymPy expression
         Rational function of ``p`` with real (numeric) coefficients.
-    p : sympy.Symbol
+    p : sympy.Symbol, optional
+        Operator variable of ``Z``, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Returns
     -------
@@ -234,6 +252,13 @@ def _negative_point(E: sp.Poly) -> Any:
 def is_positive_real(Z: Any, p: sp.Symbol = P) -> bool:
     """True when the rational function ``Z(p)`` is positive real (a Brune function), Bulgakov (1954), §9.22–9.23.
 
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with real numeric coefficients (symbols other than ``p`` must be substituted).
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
     Examples
     --------
     >>> import sympy as sp
@@ -264,6 +289,21 @@ def biquadratic_is_positive_real(a0: Any, a1: Any, a2: Any, b0: Any, b1: Any, b2
     """Test of ``(a0 p² + a1 p + a2)/(b0 p² + b1 p + b2)``: coefficients >= 0 and
     ``a1 b1 >= (sqrt(a0 b2) - sqrt(a2 b0))²`` (Bulgakov (1954), §9.26, eqs. (9.395), (9.530)).
 
+    Parameters
+    ----------
+    a0 : number or SymPy expression
+        Coefficient of ``p²`` in the numerator; a negative coefficient makes the function not positive real.
+    a1 : number or SymPy expression
+        Coefficient of ``p`` in the numerator; a negative coefficient makes the function not positive real.
+    a2 : number or SymPy expression
+        Constant term of the numerator; a negative coefficient makes the function not positive real.
+    b0 : number or SymPy expression
+        Coefficient of ``p²`` in the denominator; a negative coefficient makes the function not positive real.
+    b1 : number or SymPy expression
+        Coefficient of ``p`` in the denominator; a negative coefficient makes the function not positive real.
+    b2 : number or SymPy expression
+        Constant term of the denominator; a negative coefficient makes the function not positive real.
+
     Examples
     --------
     >>> from symosc.networks import biquadratic_is_positive_real
@@ -287,6 +327,15 @@ def is_m_function(Z: Any, rho: Any, p: sp.Symbol = P) -> bool:
 
     Such ``Z`` is realisable without mutual inductance, with every inductor ``L`` carrying a series resistance
     ``R_L`` and every capacitor ``C`` a parallel conductance, provided ``rho < min(R_L/L, 1/(R_C C))``.
+
+    Parameters
+    ----------
+    Z : SymPy expression
+        Rational function of ``p`` with real numeric coefficients (symbols other than ``p`` must be substituted).
+    rho : number or SymPy expression
+        The abscissa shift, which must be a non-negative number: the test is whether ``Z(p - rho)`` is positive real.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
 
     Examples
     --------
