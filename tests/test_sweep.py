@@ -9,6 +9,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
+import sympy as sp
 
 import symosc
 from symosc.errors import ParameterError
@@ -225,7 +226,59 @@ def test_labelled_results_and_pickle():
     series = res.to_pandas()
     assert list(series.index.names) == ["a", "b"] and series.loc[(3, 1)] == 31.0
     vec = sweep(_vector, {"x": [1.0, 2.0]}, executor="serial").to_xarray()
-    assert vec.dims == ("x", "value_dim_0") and vec.sel(x=2.0).values.tolist() == [0.0, 2.0, 4.0]
+    assert vec.dims == ("x", "component") and vec.sel(x=2.0).values.tolist() == [0.0, 2.0, 4.0]
     back = pickle.loads(pickle.dumps(res))
     assert np.array_equal(back.values, res.values, equal_nan=True)
     assert back.failures == res.failures and back.grid.keys() == res.grid.keys()
+
+
+def test_dict_results_become_a_dataset_with_named_vector_axes():
+    res = sweep(lambda x: {"energy": x**2, "state": [x, -x]}, {"x": [1.0, 2.0, 3.0]}, executor="serial")
+    ds = res.to_xarray(dims="coordinate")
+    assert set(ds.data_vars) == {"energy", "state"}
+    assert ds["energy"].sel(x=3.0).item() == 9.0 and ds["state"].dims == ("x", "coordinate")
+    assert ds["state"].sel(x=2.0).values.tolist() == [2.0, -2.0]
+    with pytest.raises(ParameterError, match="dims must name"):
+        res.to_xarray(dims=("a", "b"))
+
+
+@pytest.mark.parametrize(
+    "bad",
+    [[1.0, float("nan")], {"a": (1.0, float("inf"))}, complex(float("nan"), 0.0), sp.nan, sp.zoo, [sp.oo],
+     np.array([1.0, None, np.inf], dtype=object), sp.Matrix([[1, sp.nan]])],
+)  # fmt: skip
+def test_nan_error_sees_non_finite_values_anywhere(bad):
+    res = sweep(lambda x: bad if x > 1 else 1.0, {"x": [1.0, 2.0]}, executor="serial", nan="error")
+    assert [f.index for f in res.failures] == [(1,)] and res.failures[0].error.startswith("non-finite result")
+
+
+def test_a_timeout_is_not_swallowed_and_the_callers_timer_is_restored():
+    import signal
+    import time
+
+    def stubborn(x):
+        try:
+            end = time.monotonic() + 2.0
+            while time.monotonic() < end:
+                pass
+        except Exception:  # a function that would hide an ordinary exception
+            return -1.0
+        return 1.0
+
+    signal.setitimer(signal.ITIMER_REAL, 50.0)
+    try:
+        res = sweep(stubborn, {"x": [1.0]}, executor="serial", timeout=0.2)
+        remaining = signal.getitimer(signal.ITIMER_REAL)[0]
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+    assert res.failures and res.failures[0].error.startswith("TimeoutError")
+    assert 40.0 < remaining <= 50.0  # the caller's own timer still runs
+
+
+def test_a_sweep_in_which_every_point_fails_warns_and_keeps_few_tracebacks():
+    from symosc.errors import SweepWarning
+
+    with pytest.warns(SweepWarning, match="every one of the 50 points"):
+        res = sweep(lambda x: 1 / 0, {"x": np.arange(50.0)}, executor="serial")
+    assert "ZeroDivisionError" in res.failures[0].traceback and "Traceback" in res.failures[0].traceback
+    assert "not kept" in res.failures[-1].traceback and res.failures[-1].error.startswith("ZeroDivisionError")
