@@ -7,7 +7,7 @@ with ``signals`` of shape ``(samples,)`` or ``(channels, samples)``, and return 
 from .._deprecation import module_getattr as _module_getattr
 from .._deprecation import moved_modules as _moved_modules
 from .classical import InertiaFormula, flywheel, physical_pendulum, rocking_platform
-from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes
+from .damping import DampingPerturbation, QuadraticModes, damping_perturbation, quadratic_modes  # noqa: F401
 from .error_maps import ErrorMap, error_map
 from .min_time import (
     ExcitationBound,
@@ -74,7 +74,6 @@ __all__ = [
     "MinTimeResult",
     "ModalEstimate",
     "MonteCarloResult",
-    "QuadraticModes",
     "QuasiOptimalRun",
     "SamplingAdvice",
     "SecondOrderModel",
@@ -105,7 +104,6 @@ __all__ = [
     "noise_sigma",
     "physical_pendulum",
     "prony",
-    "quadratic_modes",
     "quasi_optimal_control",
     "real_modes",
     "realize",

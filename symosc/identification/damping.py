@@ -1,9 +1,9 @@
 """Effect of damping on the identified model (Belyakov Ch. III §4, eqs 90–106).
 
-``M q'' + D q' + K q = 0``.  :func:`quadratic_modes` solves the quadratic eigenproblem
-``(lambda^2 M + lambda D + K) u = 0`` through its symmetric linearization, the pencil ``A w = lambda B w`` with
-``A = [[-K, 0], [0, M]]``, ``B = [[D, M], [M, 0]]``, ``w = (u, lambda u)`` — and reports the undamped-frequency
-estimates ``|lambda|`` (eq. 97) and mode-shape moduli (stage 3).  :func:`damping_perturbation` gives the
+``M q'' + D q' + K q = 0``.  The quadratic eigenproblem ``(lambda^2 M + lambda D + K) u = 0`` is solved by
+:func:`symosc.mechanics.complex_modes` (its ``natural_frequencies`` are the undamped-frequency estimates
+``|lambda|`` of eq. (97), its ``mode_shape_moduli`` the moduli of stage 3; ``quadratic_modes``, which did the same
+for symmetric matrices, is a deprecated alias).  :func:`damping_perturbation` gives the
 first-order theory for small damping ``eps D``: ``lambda = i omega + eps lambda_1 + O(eps^2)`` with
 ``lambda_1 = -u0^T D u0 / (2 u0^T M u0)`` (real), and ``u = u0 + eps u1`` with ``u1`` purely imaginary (eq. 106),
 so frequencies and mode-shape moduli change only at O(eps^2).
@@ -20,7 +20,7 @@ from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ModelError, ParameterError
 
-__all__ = ["DampingPerturbation", "QuadraticModes", "damping_perturbation", "quadratic_modes"]
+__all__ = ["DampingPerturbation", "damping_perturbation"]
 
 
 def _mats(m: Any, d: Any, k: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -73,9 +73,12 @@ class QuadraticModes(SymPyPrintable):
         return np.where(self.vectors.real < 0, -1.0, 1.0) * np.abs(self.vectors)
 
 
-@validated
 def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
-    """Solve the quadratic eigenproblem of a damped linear system (oscillatory modes only).
+    """Deprecated: use :func:`symosc.mechanics.complex_modes` (the same eigenproblem, also for gyroscopic,
+    circulatory, overdamped and growing systems).
+
+    The oscillatory half of ``complex_modes``' roots (``Im lambda > 0``), for symmetric ``M``, ``D``, ``K`` with
+    ``M`` positive definite; an overdamped mode raises ModelError.
 
     Parameters
     ----------
@@ -89,43 +92,21 @@ def quadratic_modes(mass: Any, damping: Any, stiffness: Any) -> QuadraticModes:
     Returns
     -------
     QuadraticModes
-
-    Raises
-    ------
-    ModelError
-        If a mode is overdamped (real eigenvalues) or the mass matrix is not positive definite.
-
-    Examples
-    --------
-    Proportional damping D = 0.01 K on a 1-DOF system m = 1, k = 4:
-    ``lambda = -0.02 + i sqrt(4 - 0.0004)``, ``|lambda| = 2``.
-
-    >>> qm = quadratic_modes([[1.0]], [[0.04]], [[4.0]])
-    >>> complex(np.round(qm.eigenvalues[0], 12)), float(np.round(qm.undamped_frequencies[0], 12))
-    ((-0.02+1.9998999975j), 2.0)
     """
-    m, d, k = _mats(mass, damping, stiffness)
-    n = m.shape[0]
-    z = np.zeros((n, n))
-    a = np.block([[-k, z], [z, m]])
-    b = np.block([[d, m], [m, z]])
-    import scipy.linalg as sla
+    from .._deprecation import warn_deprecated
+    from ..mechanics import complex_modes
 
-    lam, w = sla.eig(a, b)
-    if not np.all(np.isfinite(lam)):
-        raise ModelError("the damped system has infinite eigenvalues (singular mass matrix?)")
+    warn_deprecated("symosc.identification.quadratic_modes", "symosc.mechanics.complex_modes")
+    m, d, k = _mats(mass, damping, stiffness)
+    modes = complex_modes(m, d, k)
+    lam = modes.eigenvalues
     sel = lam.imag > 1e-12 * np.maximum(np.abs(lam), 1e-300)
+    n = m.shape[0]
     if sel.sum() != n:
         raise ModelError(
             f"{n - int(sel.sum())} mode(s) are overdamped (real eigenvalues); |lambda| is no longer a frequency"
         )
-    lam, u = lam[sel], w[:n, sel]
-    order = np.argsort(np.abs(lam))
-    lam, u = lam[order], u[:, order]
-    u = u / np.linalg.norm(u, axis=0)
-    piv = np.argmax(np.abs(u), axis=0)
-    u = u * (np.abs(u[piv, range(n)]) / u[piv, range(n)])[None, :]
-    return QuadraticModes(eigenvalues=lam, vectors=u)
+    return QuadraticModes(eigenvalues=lam[sel], vectors=modes.vectors[:, sel])
 
 
 @dataclass(frozen=True, eq=False)

@@ -73,6 +73,12 @@ class ComplexModes(SymPyPrintable):
             return np.where(np.abs(s) > 0, -s.real / np.abs(s), 0.0)
 
     @property
+    def mode_shape_moduli(self) -> np.ndarray:
+        """``sign(Re phi) |phi|`` per component, for every root: the real mode shape recovered from a complex one
+        (stage 3 of the identification recipe of Belyakov (2005), Ch. III §4)."""
+        return np.where(self.vectors.real < 0, -1.0, 1.0) * np.abs(self.vectors)
+
+    @property
     def stability(self) -> str:
         """``"asymptotically stable"``, ``"marginally stable"`` (roots on the imaginary axis) or ``"unstable"``.
 

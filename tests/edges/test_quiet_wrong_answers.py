@@ -22,7 +22,7 @@ def test_matrizant_far_outside_its_validity_raises_and_near_it_warns():
     series = matrizant(sp.Matrix([[0, 1], [-1, 0]]), t, order=8)
     with pytest.raises(ConvergenceError, match="more than the value"):
         series.evaluate(100.0)  # returned 2.47e11 (true cos 100 = 0.862)
-    with pytest.warns(AccuracyWarning, match="truncation error up to"):
+    with pytest.warns(AccuracyWarning, match="the last term is"):
         value = series.evaluate(1.0)[0, 0]
     assert abs(value - math.cos(1.0)) < 1e-6
     with warnings.catch_warnings():
@@ -89,7 +89,14 @@ def test_functions_not_analytic_at_a_perturbed_jordan_block_raise(seed, f):
     rng = np.random.default_rng(seed)
     S = rng.standard_normal((2, 2))
     A = S @ np.array([[0.0, 1.0], [0.0, 0.0]]) @ np.linalg.inv(S)
-    with pytest.raises((ConvergenceError, ModelError)):
-        matrix_function(sp.Matrix(A), f)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            matrix_function(sp.Matrix(A), f)
+        except (ConvergenceError, ModelError):
+            refused = True
+        else:
+            refused = False
+    assert refused or any(issubclass(w.category, AccuracyWarning) and "not analytic" in str(w.message) for w in caught)
     exp_a = np.array(matrix_function(sp.Matrix(A), sp.exp).evalf(), dtype=float)
     np.testing.assert_allclose(exp_a, np.eye(2) + A, atol=1e-12 * (1 + np.abs(A).max()))

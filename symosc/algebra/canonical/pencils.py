@@ -126,7 +126,7 @@ def _exact_pair(a: Any, b: Any, names: tuple[str, str]) -> tuple[sp.Matrix, sp.M
     return A, B
 
 
-def _divisors(a: sp.Matrix, b: sp.Matrix, which: str) -> tuple[dict, list[int]]:
+def regular_pencil_divisors(a: sp.Matrix, b: sp.Matrix, which: str) -> tuple[dict, list[int]]:
     """Finite and infinite elementary divisors of the regular pencil ``a λ + b``, by exact ranks.
 
     With ``a c + b`` non-singular, ``a λ + b = (a c + b)(E + (λ - c) K)``, ``K = (a c + b)⁻¹ a``; the Möbius map
@@ -310,8 +310,8 @@ def pencil_equivalence(a: Any, b: Any, a1: Any, b1: Any) -> PencilEquivalence:
     A1, B1 = _exact_pair(a1, b1, ("a1", "b1"))
     if A.shape != A1.shape:
         raise ModelError(f"the two pencils must have the same size, got {A.shape} and {A1.shape}")
-    fin0, inf0 = _divisors(A, B, "a λ + b")
-    fin1, inf1 = _divisors(A1, B1, "a1 λ + b1")
+    fin0, inf0 = regular_pencil_divisors(A, B, "a λ + b")
+    fin1, inf1 = regular_pencil_divisors(A1, B1, "a1 λ + b1")
     divisors, divisors1 = (fin0, inf0), (fin1, inf1)
     same_finite = _same_divisors(fin0, fin1)
     if not same_finite or inf0 != inf1:
@@ -421,7 +421,7 @@ def pencil_canonical_form(a: Any, b: Any, *, real: bool = False) -> PencilCanoni
     A, B = _exact_pair(a, b, ("a", "b"))
     if real and any(sp.im(e) != 0 for e in (*A, *B)):
         raise ParameterError("real=True needs real a and b (Bulgakov (1954), eq. (1.192)); got complex entries")
-    finite, infinite = _divisors(A, B, "a λ + b")
+    finite, infinite = regular_pencil_divisors(A, B, "a λ + b")
     lam = sp.Symbol("lambda")
     for root in finite:
         if root.has(lam):

@@ -179,11 +179,20 @@ def _prime_powers(poly: sp.Expr, lam: sp.Symbol) -> dict[sp.Expr, int]:
     poly = sp.expand(poly)
     if sp.degree(poly, lam) <= 0:
         return {}
-    found = sp.roots(sp.Poly(poly, lam))
-    if sum(found.values()) == sp.degree(poly, lam):
-        return dict(found)
-    # not solvable in radicals: key by the monic irreducible factor instead of the root
-    return {_monic(fac, lam): mult for fac, mult in sp.factor_list(poly, lam)[1] if sp.degree(fac, lam) > 0}
+    # roots of linear and quadratic factors; an irreducible factor of higher degree is the key itself (Cardano's and
+    # Ferrari's radicals are unreadable and slow to compare) -- the convention of the pencils' rank method
+    out: dict[sp.Expr, int] = {}
+    for fac, mult in sp.factor_list(poly, lam)[1]:
+        if sp.degree(fac, lam) <= 0:
+            continue
+        found = sp.roots(sp.Poly(fac, lam), cubics=False, quartics=False, quintics=False)
+        if sum(found.values()) == sp.degree(fac, lam):
+            for root, m in found.items():
+                out[root] = out.get(root, 0) + m * mult
+        else:
+            key = _monic(fac, lam)
+            out[key] = out.get(key, 0) + mult
+    return out
 
 
 def _divisors_from_factors(factors: list[sp.Expr], lam: sp.Symbol) -> dict[sp.Expr, list[int]]:
@@ -198,8 +207,8 @@ def _divisors_from_factors(factors: list[sp.Expr], lam: sp.Symbol) -> dict[sp.Ex
 def elementary_divisors(f: Any, lam: sp.Symbol) -> dict[sp.Expr, list[int]]:
     """Elementary divisors as ``{a: [e_1, e_2, ...]}``, meaning ``(λ-a)^e_1, (λ-a)^e_2, ...`` (§1.18).
 
-    When an invariant factor has roots SymPy cannot express in radicals, its irreducible factors are used as
-    keys instead of roots.
+    Roots of linear and quadratic factors are the keys; an irreducible factor of degree 3 or more is its own key
+    (monic), as in :func:`pencil_divisors`.
 
     Parameters
     ----------
@@ -508,8 +517,17 @@ def pencil_divisors(A: Any, B: Any, lam: sp.Symbol) -> PencilDivisors:
         raise ModelError(
             "singular pencil: det(λB - A) ≡ 0; its Kronecker minimal indices are not implemented (only regular pencils)"
         )
-    finite = elementary_divisors(P, lam)
-    mu = sp.Dummy("mu")
-    rev = (B - mu * A).applyfunc(sp.expand)
-    infinite = elementary_divisors(rev, mu).get(sp.Integer(0), [])
+    if any(e.has(sp.Float) for e in (*A, *B)):  # inexact entries: the gcds of the minors (the definition)
+        finite = elementary_divisors(P, lam)
+        mu = sp.Dummy("mu")
+        rev = (B - mu * A).applyfunc(sp.expand)
+        infinite = elementary_divisors(rev, mu).get(sp.Integer(0), [])
+        return PencilDivisors(finite=finite, infinite=infinite, determinant=det)
+    # exact entries: ranks of powers of one matrix (Weyr's characteristic), the same procedure that decides strict
+    # equivalence in symosc.algebra.pencil_equivalence -- no minors, no roots needed
+    from .pencils import regular_pencil_divisors
+
+    finite, infinite = regular_pencil_divisors(B, -A, "λB - A")
+    own = sp.Symbol("lambda")  # the variable of the irreducible-factor keys there
+    finite = {k.xreplace({own: lam}) if k.has(own) else k: v for k, v in finite.items()}
     return PencilDivisors(finite=finite, infinite=infinite, determinant=det)

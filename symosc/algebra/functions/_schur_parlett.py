@@ -20,10 +20,9 @@ import numpy as np
 from ...errors import ConvergenceError, ModelError
 from . import _taylor
 
-#: eigenvalue gaps below _NOISE * ||A|| * κ (κ the eigenvalue condition number) are within the eigenvalues' own
-#: rounding uncertainty and always link, whatever cluster_tol is (a perturbed Jordan block at 0 is never split into
-#: "distinct" eigenvalues when cluster_tol is lowered after a Taylor series failed to converge)
-_NOISE = 1e-14
+#: eigenvalue gaps below cluster_tol * _NOISE * ||A|| * κ (κ the eigenvalue condition number) link; at the default
+#: cluster_tol that is about their rounding uncertainty
+_NOISE = 1e-12
 
 
 def relative_clusters(
@@ -31,9 +30,8 @@ def relative_clusters(
 ) -> list[list[int]]:
     """Single-linkage clusters: λ_i, λ_j are linked when ``|λ_i - λ_j| <= cluster_tol*max(|λ_i|, |λ_j|)``.
 
-    A gap within the eigenvalues' own uncertainty, ``1e-14 * scale * max(κ_i, κ_j)`` (``scale`` ~ ||A||, κ the
-    eigenvalue condition numbers), also links, whatever ``cluster_tol``: a perturbed Jordan block at 0 stays one
-    cluster.
+    A gap within the eigenvalues' own uncertainty, ``cluster_tol * 1e-12 * scale * max(κ_i, κ_j)`` (``scale`` ~
+    ||A||, κ the eigenvalue condition numbers), also links: a perturbed Jordan block at 0 stays one cluster.
     """
     n = len(eigs)
     parent = list(range(n))
@@ -45,7 +43,7 @@ def relative_clusters(
             i = parent[i]
         return i
 
-    floor = _NOISE * scale
+    floor = cluster_tol * _NOISE * scale
     for i in range(n):
         for j in range(i + 1, n):
             gap = abs(eigs[i] - eigs[j])
@@ -216,11 +214,50 @@ def float_matrix_function(A: np.ndarray, source: _taylor.TaylorSource, tol: floa
     ctol = cluster_tol
     while True:
         try:
-            return schur_parlett(A, block_f, ctol, dd)
+            value = schur_parlett(A, block_f, ctol, dd)
+            break
         except ConvergenceError:
             if ctol <= 1e-8:
                 raise
             ctol /= 100
+    if ctol < cluster_tol:
+        _warn_if_split_within_uncertainty(A, cluster_tol, ctol)
+    return value
+
+
+def _warn_if_split_within_uncertainty(A: np.ndarray, cluster_tol: float, ctol: float) -> None:
+    """After f's Taylor series diverged on a cluster and the clusters shrank: warn (AccuracyWarning) when eigenvalues
+    that differ by less than their own rounding uncertainty were separated.  f is then evaluated at eigenvalues that
+    are not known to be distinct (a perturbed Jordan block, where f(A) may not even exist)."""
+    import warnings
+
+    from ...errors import AccuracyWarning
+
+    A = A.astype(complex)
+    eigs = np.linalg.eigvals(A)
+    scale = max(float(np.linalg.norm(A, 1)), np.finfo(float).tiny)
+    kappa = eigenvalue_conditions(A, eigs)
+    before = relative_clusters(eigs, cluster_tol, scale, kappa)
+    after = relative_clusters(eigs, ctol, scale, kappa)
+    if len(after) == len(before):
+        return
+    for group in before:
+        if len(group) < 2:
+            continue
+        gap = min(abs(eigs[i] - eigs[j]) for i in group for j in group if i < j)
+        uncertainty = np.finfo(float).eps * scale * float(np.max(kappa[group]))
+        if gap <= uncertainty * 1e3:
+            shown = ", ".join(f"{complex(eigs[i]):.3g}" for i in group)
+            warnings.warn(
+                f"f(A): f is not analytic across the eigenvalues {shown}, "
+                f"whose differences ({gap:.2g}) are within about a thousand times their rounding uncertainty "
+                f"({uncertainty:.2g}, condition {float(np.max(kappa[group])):.2g}); they were treated as distinct, and "
+                "the result may be meaningless if A is (nearly) defective there (f(A) of a Jordan block at a branch "
+                "point does not exist). Pass exact entries to decide",
+                AccuracyWarning,
+                stacklevel=5,
+            )
+            return
 
 
 def indicator_projectors(A: np.ndarray, cluster_tol: float) -> tuple[list[np.ndarray], list[np.ndarray]]:
