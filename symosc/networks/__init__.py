@@ -29,7 +29,6 @@ from .filters import (
     constant_k_section,
     frequency_map,
     image_operating_loss,
-    lattice_from_transmission,
     m_derived_section,
     matching_l_pad,
 )
@@ -109,6 +108,7 @@ from .synthesis import (
     is_m_function,
     is_positive_real,
     is_reactance_function,
+    lattice_from_transmission,
     link_transfer,
     m_abscissa,
     m_function_synthesis,

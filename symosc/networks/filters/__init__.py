@@ -7,6 +7,7 @@ Constant-k and m-derived sections and reactance transformations (Bulgakov 1954, 
 
 from __future__ import annotations
 
+from ..synthesis.correcting import lattice_from_transmission  # noqa: F401 (its path before it moved to synthesis)
 from .absorber import (
     Absorber,
     HInfinityOptimum,
@@ -21,7 +22,6 @@ from .image_filters import (
     constant_k_section,
     frequency_map,
     image_operating_loss,
-    lattice_from_transmission,
     m_derived_section,
 )
 from .pads import MatchingPad, matching_l_pad
@@ -39,7 +39,6 @@ __all__ = [
     "constant_k_section",
     "frequency_map",
     "image_operating_loss",
-    "lattice_from_transmission",
     "m_derived_section",
     "matching_l_pad",
 ]

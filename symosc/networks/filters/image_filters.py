@@ -25,7 +25,7 @@ from ..._validate import validated
 from ...errors import ParameterError
 from .._util import P, as_expr, element_value
 from ..ports.fourpoles import FourPole
-from ..ports.sections import lattice, t_section
+from ..ports.sections import t_section
 
 __all__ = [
     "FilterSection",
@@ -33,7 +33,6 @@ __all__ = [
     "constant_k_section",
     "frequency_map",
     "image_operating_loss",
-    "lattice_from_transmission",
     "m_derived_section",
 ]
 
@@ -406,48 +405,3 @@ def image_operating_loss(W: Any, g: Any, n: int, Rg: Any, Rl: Any) -> Any:
     W, g, Rg, Rl = (mpmath.mpmathify(v) for v in (W, g, Rg, Rl))
     term = mpmath.cosh(n * g) + (W**2 + Rg * Rl) / (W * (Rg + Rl)) * mpmath.sinh(n * g)
     return (Rg + Rl) ** 2 / (4 * Rg * Rl) * abs(term) ** 2
-
-
-@validated
-def lattice_from_transmission(X: Any, W: Any, p: sp.Symbol = P) -> FourPole:
-    """Symmetric lattice of image impedance ``W`` with transmission ``e^{-g} = X(p)`` (eqs. (9.493), (9.512)).
-
-    ``Za = W (1 - X)/(1 + X)`` and ``Zb = W²/Za``.  Realisable (ideal elements allowed) iff ``Za`` is positive real,
-    i.e. ``X`` is analytic in the closed right half-plane with ``|X(iω)| <= 1`` (§9.34).
-
-    Parameters
-    ----------
-    X : SymPy expression
-        Transmission ``e^{-g}`` as a rational function of ``p``, which must be analytic in the closed right half-plane
-        with ``|X(iω)| <= 1`` and not identically 1.
-    W : number or SymPy expression
-        Image impedance of the lattice, which must be positive.
-    p : sympy.Symbol, optional
-        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> from symosc.networks import lattice_from_transmission
-    >>> p = sp.Symbol("p")
-    >>> lat = lattice_from_transmission((1 - p) / (1 + p), 1, p)        # first-order all-pass
-    >>> sp.simplify(lat.chain - lattice(p, 1 / p).chain)
-    Matrix([
-    [0, 0],
-    [0, 0]])
-
-    The arms are returned as impedances; :func:`correcting_link` realises the same lattice with networks of
-    positive R, L, C (and coupled coils where needed) for transfers of degree up to 2.
-
-    See Also
-    --------
-    lattice, lattice_phase_network, correcting_link
-    """
-    from ..synthesis.positive_real import require_positive_real
-
-    X, W = as_expr(X, "X"), element_value(W, "W")
-    Za = sp.cancel(W * (1 - X) / (1 + X))
-    if Za == 0:
-        raise ParameterError("X = 1 gives a short-circuited lattice arm")
-    require_positive_real(Za, p, "the lattice arm W(1 - X)/(1 + X)")
-    return lattice(Za, sp.cancel(W**2 / Za), p=p)

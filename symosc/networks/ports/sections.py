@@ -276,7 +276,7 @@ def lattice(ZA: Any, ZB: Any, ZC: Any = None, ZD: Any = None, p: sp.Symbol = P) 
         )
     s = za + zb_ + zc + zd
     s3 = za * zb_ * zc + zb_ * zc * zd + zc * zd * za + zd * za * zb_
-    A = sp.Matrix([[(za + zd) * (zb_ + zc), s3], [s, (za + zc) * (zb_ + zd)]]) / den
+    A = (sp.Matrix([[(za + zd) * (zb_ + zc), s3], [s, (za + zc) * (zb_ + zd)]]) / den).applyfunc(sp.cancel)
     net = Netlist((_b("1", "2", za), _b("1'", "2'", zb_), _b("1", "2'", zc), _b("1'", "2", zd)), ("1", "1'", "2", "2'"))
     return FourPole(A, p, net, name="lattice")
 

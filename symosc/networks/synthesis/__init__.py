@@ -15,6 +15,7 @@ from .correcting import (
     CorrectingLink,
     constant_resistance_bridged_t,
     correcting_link,
+    lattice_from_transmission,
     link_transfer,
 )
 from .correcting_cascade import CorrectingCascade, correcting_cascade
@@ -48,6 +49,7 @@ __all__ = [
     "is_m_function",
     "is_positive_real",
     "is_reactance_function",
+    "lattice_from_transmission",
     "link_transfer",
     "m_abscissa",
     "m_function_synthesis",

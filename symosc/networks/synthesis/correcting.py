@@ -29,7 +29,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
 from .._exact.polynomial_tests import is_strictly_hurwitz, max_gain_on_axis, nonnegative_on_half_line, roots_numeric
-from .._util import P, as_symbol, element_value, rational_function
+from .._util import P, as_expr, as_symbol, element_value, rational_function
 from ..ports._nodal import Netlist
 from ..ports.fourpoles import FourPole
 from ..ports.oneports import OnePort, Resistor
@@ -43,6 +43,7 @@ __all__ = [
     "CorrectingLink",
     "constant_resistance_bridged_t",
     "correcting_link",
+    "lattice_from_transmission",
     "link_transfer",
 ]
 
@@ -342,6 +343,58 @@ def _check_transfer(X: Any, p: sp.Symbol, max_degree: int | None = 2) -> tuple[s
     return N, D
 
 
+def lattice_arm(X: sp.Expr, W: sp.Expr) -> sp.Expr:
+    """The arm ``Za = W (1 - X)/(1 + X)`` of the symmetric constant-resistance lattice with transfer ``X`` and image
+    resistance ``W`` (Bulgakov (1954), (9.513)); the other arm is ``W²/Za``."""
+    return sp.cancel(W * (1 - X) / (1 + X))
+
+
+@validated
+def lattice_from_transmission(X: Any, W: Any, p: sp.Symbol = P) -> FourPole:
+    """Symmetric lattice of image impedance ``W`` with transmission ``e^{-g} = X(p)`` (eqs. (9.493), (9.512)).
+
+    ``Za = W (1 - X)/(1 + X)`` and ``Zb = W²/Za``.  Realisable (ideal elements allowed) iff ``Za`` is positive real,
+    i.e. ``X`` is analytic in the closed right half-plane with ``|X(iω)| <= 1`` (§9.34).
+
+    Parameters
+    ----------
+    X : SymPy expression
+        Transmission ``e^{-g}`` as a rational function of ``p``, which must be analytic in the closed right half-plane
+        with ``|X(iω)| <= 1`` and not identically 1.
+    W : number or SymPy expression
+        Image impedance of the lattice, which must be positive.
+    p : sympy.Symbol, optional
+        Operator variable, which must be a SymPy Symbol; the standard symbol ``p`` when omitted.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.networks import lattice_from_transmission
+    >>> p = sp.Symbol("p")
+    >>> lat = lattice_from_transmission((1 - p) / (1 + p), 1, p)        # first-order all-pass
+    >>> sp.simplify(lat.chain - lattice(p, 1 / p).chain)
+    Matrix([
+    [0, 0],
+    [0, 0]])
+
+    The arms are returned as impedances, for a transfer of any degree; :func:`correcting_link` realises the same
+    lattice (the same arms) with networks of positive R, L, C (and coupled coils where needed) for transfers of degree
+    up to 2.
+
+    See Also
+    --------
+    lattice, lattice_phase_network, correcting_link
+    """
+    from .positive_real import require_positive_real
+
+    X, W = as_expr(X, "X"), element_value(W, "W")
+    Za = lattice_arm(X, W)
+    if Za == 0:
+        raise ParameterError("X = 1 gives a short-circuited lattice arm")
+    require_positive_real(Za, p, "the lattice arm W(1 - X)/(1 + X)")
+    return lattice(Za, sp.cancel(W**2 / Za), p=p)
+
+
 @validated
 def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "auto") -> CorrectingLink:
     """Constant-resistance lattice realising the transfer ``X(p)`` (Bulgakov (1954), §9.34–9.39).
@@ -402,7 +455,7 @@ def correcting_link(X: Any, W: Any = 1, p: sp.Symbol = P, *, method: str = "auto
     Xe = sp.cancel(N.as_expr() / D.as_expr())
     if Xe in (1, -1):
         raise ParameterError(f"X = {Xe}: the arms would be a short and an open circuit; nothing to realise")
-    Za = sp.cancel(W * (D.as_expr() - N.as_expr()) / (D.as_expr() + N.as_expr()))
+    Za = lattice_arm(Xe, W)
     net_a, net_b = _arms(Za, W, p, method)
     return CorrectingLink(Xe, W, net_a, net_b, p, max_gain_on_axis(N, D))
 
