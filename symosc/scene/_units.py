@@ -230,31 +230,31 @@ class _Dims:
         self.rows.append(({s: v for s, v in coeffs.items() if v != 0}, const))
 
     def solve(self, known: dict) -> tuple[bool, dict]:
-        """Consistency of the constraints with ``known`` dimensions, and every symbol's dimension when determined."""
-        import sympy as sp
+        """Consistency of the constraints with ``known`` dimensions, and every symbol's dimension when determined
+        (reduced row echelon form over the rationals)."""
+        from sympy import QQ
+        from sympy.polys.matrices import DomainMatrix
 
         symbols = sorted({s for c, _ in self.rows for s in c} | set(known) | set(self.coordinates), key=str)
         index = {s: i for i, s in enumerate(symbols)}
-        rows = [(c, k) for c, k in self.rows] + [({s: 1}, tuple(-x for x in vec)) for s, vec in known.items()]
-        A = sp.zeros(len(rows), len(symbols))
-        B = sp.zeros(len(rows), 3)
-        for r, (c, k) in enumerate(rows):
+        n = len(symbols)
+        rows = []
+        for c, k in [*self.rows, *(({s: 1}, tuple(-x for x in vec)) for s, vec in known.items())]:
+            row = [QQ(0)] * (n + 3)
             for s, v in c.items():
-                A[r, index[s]] = sp.Rational(v)
+                row[index[s]] = QQ(v.p, v.q) if hasattr(v, "p") else QQ(v)
             for j in range(3):
-                B[r, j] = -sp.Rational(k[j])
-        aug = A.row_join(B)
-        rank_a, rank_aug = A.rank(), aug.rank()
-        if rank_aug > rank_a:
+                kj = k[j]
+                row[n + j] = -(QQ(kj.p, kj.q) if hasattr(kj, "p") else QQ(kj))
+            rows.append(row)
+        red, pivots = DomainMatrix(rows, (len(rows), n + 3), QQ).rref()
+        if any(col >= n for col in pivots):  # a row 0 = nonzero: inconsistent
             return False, {}
-        red, pivots = aug.rref()
+        dense = red.to_list()
         out = {}
-        for r, col in enumerate(pivots):
-            if col >= len(symbols):
-                continue
-            others = [j for j in range(len(symbols)) if j != col and red[r, j] != 0]
-            if not others:
-                out[symbols[col]] = tuple(red[r, len(symbols) + j] for j in range(3))
+        for i, col in enumerate(pivots):
+            if all(dense[i][j] == 0 for j in range(n) if j != col):
+                out[symbols[col]] = tuple(dense[i][n + j] for j in range(3))
         return True, out
 
 
@@ -299,7 +299,7 @@ def check_lagrangian_units(T, V, R, forces, coordinates, velocities: dict, t, gi
         others = {o: v for o, v in known.items() if o != s}
         ok, solved = dims.solve(others)
         if ok and s in solved:
-            implied = tuple(int(x) if x == int(x) else x for x in solved[s])
+            implied = tuple(int(x) if x.denominator == 1 else x for x in solved[s])
             expected = _dim_name(implied) if all(isinstance(x, int) for x in implied) else str(implied)
             examples = _EXAMPLES.get(expected)
             suspects.append(
