@@ -26,6 +26,19 @@ from pathlib import Path
 __all__ = ["main"]
 
 
+def _flag_error(exc: Exception, flags: dict[str, str]) -> _UsageError:
+    """A scene error raised for a scene generated from command-line flags, told in terms of the flags: ``flags``
+    maps a scene key prefix (``excitation.amplitude``, ``parameters.``) to the flag that set it."""
+    key = getattr(exc, "key", "") or ""
+    message = getattr(exc, "message", None) or str(exc)
+    for prefix, flag in flags.items():
+        if key == prefix or (prefix.endswith(".") and key.startswith(prefix)):
+            name = key[len(prefix) :] if prefix.endswith(".") else ""
+            shown = flag.format(name=name)
+            return _UsageError(f"{shown}: {message}")
+    return _UsageError(message)
+
+
 class _UsageError(Exception):
     """A bad command line (exit code 2)."""
 
@@ -102,8 +115,13 @@ def _double_pendulum(args: argparse.Namespace) -> int:
     base = loads(TABLE1_SCENE, name="Table 1 scene")
     valid = base.model.parameter_names()
     overrides = _parse_sets(args.set, valid, {k: base.model.dimension(k) for k in valid})
-    scene = loads(TABLE1_SCENE, name="symosc double-pendulum --set", overrides=overrides) if overrides else base
-    result = scene.run()
+    from .scene import SceneError
+
+    try:
+        scene = loads(TABLE1_SCENE, name="symosc double-pendulum --set", overrides=overrides) if overrides else base
+        result = scene.run()
+    except SceneError as exc:
+        raise _flag_error(exc, {"parameters.": "--set {name}"}) from None
     if overrides:
         result = _drop_reference(result)
     print(result.report())
@@ -168,7 +186,17 @@ def _stability(args: argparse.Namespace) -> int:
     import dataclasses
 
     text = _stability_scene(n, links, sets, args.frequency, args.amplitude, bool(args.plot))
-    result = loads(text, name="stability").run()
+    from .scene import SceneError
+
+    try:
+        result = loads(text, name="stability").run()
+    except SceneError as exc:
+        flags = {
+            "excitation.amplitude": "--amplitude",
+            "excitation.frequency": "--frequency",
+            "parameters.": "--set {name}",
+        }
+        raise _flag_error(exc, flags) from None
     qr = result.results[0]
     lines = [line for line in qr.lines if not line.startswith("figure:")]
     if args.plot:
@@ -252,11 +280,15 @@ SOURCES = ("gribkov2015", "belyakov2005", "bulgakov")
 def _reproduce(args: argparse.Namespace) -> int:
     import importlib.util
 
-    root = Path(__file__).resolve().parents[1] / "derivations"
-    if not root.is_dir():
+    marker = "gribkov_khokhlov_2015.py"
+    candidates = [Path(__file__).resolve().parents[1] / "derivations"]
+    candidates += [folder / "derivations" for folder in (Path.cwd(), *Path.cwd().parents)]
+    root = next((c for c in candidates if (c / marker).is_file()), None)
+    if root is None:
         raise RuntimeError(
-            "symosc reproduce runs the scripts in derivations/, which ship with the source checkout only: "
-            "clone the repository and run it there"
+            "symosc reproduce runs the scripts in the derivations/ folder of a symosc source checkout, which an "
+            "installed package does not contain: run 'symosc reproduce' inside the checkout (or a folder below it), "
+            "or 'python derivations/<script>.py' there"
         )
 
     def module(name: str):
@@ -313,7 +345,7 @@ def _parser() -> argparse.ArgumentParser:
     def add(name: str, help: str, func, description: str | None = None) -> argparse.ArgumentParser:
         p = sub.add_parser(name, help=help, description=description or help)
         p.add_argument("--traceback", action="store_true", help="show the Python traceback of an error (developers)")
-        p.set_defaults(func=func)
+        p.set_defaults(func=func, subparser=p)
         return p
 
     p = add("run", "answer the questions of a scene file (TOML) and write a report", _run,
@@ -412,7 +444,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except _UsageError as exc:
         if args.traceback:
             raise
-        parser.print_usage(sys.stderr)
+        getattr(args, "subparser", parser).print_usage(sys.stderr)
         print(f"symosc {args.command}: usage error: {exc}", file=sys.stderr)
         return 2
     except (SymoscError, RuntimeError, OSError, _RangeError) as exc:

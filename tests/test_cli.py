@@ -221,3 +221,31 @@ def test_reproduce_quick_table1(capsys):
 def test_reproduce_bad_source(capsys):
     assert main(["reproduce", "gribkov"]) == 2
     assert "invalid choice" in capsys.readouterr().err
+
+
+def test_errors_from_flags_name_the_flag_and_the_subcommand_usage(capsys):
+    assert main(["stability", "2", "--amplitude", "-3 mm", "--frequency", "100 Hz"]) == 2
+    err = capsys.readouterr().err
+    assert "usage: symosc stability" in err and "--amplitude: expected a positive value" in err
+    assert "line" not in err and "excitation" not in err  # no internal scene key
+    assert main(["mathieu", "a", "-1", "1"]) == 2
+    assert "usage: symosc mathieu" in capsys.readouterr().err
+
+
+def test_reproduce_finds_the_derivations_of_the_checkout_it_runs_in(tmp_path, monkeypatch, capsys):
+    """With the package installed elsewhere (no derivations/ beside it), the checkout in the working folder is used;
+    with none, the message says where to run it."""
+    import symosc.cli as cli
+
+    monkeypatch.setattr(cli, "__file__", str(tmp_path / "site-packages" / "symosc" / "cli.py"))
+    monkeypatch.chdir(tmp_path)
+    assert main(["reproduce", "gribkov2015", "--quick"]) == 1
+    assert "inside the checkout" in capsys.readouterr().err
+    (tmp_path / "derivations").mkdir()
+    (tmp_path / "derivations" / "gribkov_khokhlov_2015.py").write_text(
+        "def table1_natural_frequencies():\n    print('stand-in table 1')\n"
+    )
+    (tmp_path / "sub").mkdir()
+    monkeypatch.chdir(tmp_path / "sub")
+    assert main(["reproduce", "gribkov2015", "--quick"]) == 0
+    assert "stand-in table 1" in capsys.readouterr().out

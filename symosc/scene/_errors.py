@@ -37,6 +37,7 @@ class SceneError(ModelError):
         self.path = str(path)
         self.key = key
         self.line = line
+        self.message = message.rstrip(".")
         where = self.path + (f", line {line}" if line else "")
         head = f"{where}: key '{key}': " if key else f"{where}: "
         text = head + message.rstrip(".") + "."
