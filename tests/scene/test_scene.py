@@ -123,7 +123,7 @@ def test_gribkov2015_stability_interval_against_floquet(tmp_path):
     assert "derive the nonlinear equations of motion" not in steps and "split K(t) = K0 + K1 cos(p t)" in steps
     paths = res.write(tmp_path / "out", "md")
     names = sorted(x.name for x in paths)
-    assert names == ["gribkov2015-ince-strutt.png", "report.md", "results.json"]
+    assert names == ["gribkov2015-ince-strutt.png", "report.md", "results.json", "timings.json"]
     assert (tmp_path / "out" / "gribkov2015-ince-strutt.png").read_bytes()[:4] == b"\x89PNG"
     js = json.loads((tmp_path / "out" / "results.json").read_text())
     assert js["questions"][1]["amplitude_min"] == pytest.approx(amin)
@@ -221,7 +221,7 @@ def test_figures_without_matplotlib_say_so(tmp_path, monkeypatch, capsys):
     res = load(EXAMPLES / "gribkov2015.toml").run()
     monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib now raises ImportError
     paths = res.write(tmp_path, "md")
-    assert sorted(p.name for p in paths) == ["report.md", "results.json"]
+    assert sorted(p.name for p in paths) == ["report.md", "results.json", "timings.json"]
     msg = "figures skipped: matplotlib is not installed (pip install 'symosc[plot]')"
     assert msg in capsys.readouterr().out and msg in (tmp_path / "report.md").read_text()
 
