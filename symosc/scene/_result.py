@@ -236,7 +236,7 @@ class SceneResult(SymPyPrintable):
         out.append(f"parameters (SI): {self._params_line()}")
         for r in self.results:
             out += ["", f"-- {r.title}"]
-            out += list(r.lines)
+            out += _text_lines(r)
             for t in r.tables:
                 out += ["", t.text()]
         out += ["", self._log_table().text()]
@@ -263,7 +263,7 @@ class SceneResult(SymPyPrintable):
         out += [f"Parameters (SI): {self._params_line()}", ""]
         for r in self.results:
             out += [f"## {r.title}", ""]
-            out += [line + "  " for line in r.lines]
+            out += [line + "  " for line in _text_lines(r)]
             for t in r.tables:
                 out += ["", t.markdown(), ""]
             for f in r.figures:
@@ -290,7 +290,7 @@ class SceneResult(SymPyPrintable):
         out.append(f"<h1>{e(self.title)}</h1><p>Source: {e(self.source)}<br>System: {e(self.system)}<br>")
         out.append(f"Parameters (SI): {e(self._params_line())}</p>")
         for r in self.results:
-            out.append(f"<h2>{e(r.title)}</h2><p>" + "<br>".join(e(x) for x in r.lines) + "</p>")
+            out.append(f"<h2>{e(r.title)}</h2><p>" + "<br>".join(e(x) for x in _text_lines(r)) + "</p>")
             out += [t.html() for t in r.tables]
             for f in r.figures:
                 if figures and f.filename in figures:
@@ -382,6 +382,12 @@ class SceneResult(SymPyPrintable):
         for n in notes:
             print(n)
         return [outdir / name for name in names]
+
+
+def _text_lines(r: QuestionResult) -> list[str]:
+    """A question's text lines without the ``figure: <file>`` notes: a report shows the figures that were written
+    (embedded in Markdown and HTML) and names no file that may not exist (no matplotlib, ``--no-files``)."""
+    return [line for line in r.lines if not line.startswith("figure:")]
 
 
 def _is_timing(key: Any) -> bool:

@@ -223,7 +223,9 @@ def test_figures_without_matplotlib_say_so(tmp_path, monkeypatch, capsys):
     paths = res.write(tmp_path, "md")
     assert sorted(p.name for p in paths) == ["report.md", "results.json", "timings.json"]
     msg = "figures skipped: matplotlib is not installed (pip install 'symosc[plot]')"
-    assert msg in capsys.readouterr().out and msg in (tmp_path / "report.md").read_text()
+    report = (tmp_path / "report.md").read_text()
+    assert msg in capsys.readouterr().out and msg in report
+    assert ".png" not in report and ".png" not in res.report()  # no figure is named that was not written
 
 
 def test_sign_rules_of_parameters():
