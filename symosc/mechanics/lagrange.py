@@ -20,6 +20,7 @@ from typing import Any
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..symbols import ddot, dot, sort_symbols, t
@@ -58,8 +59,11 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
     return tuple(plain), replace
 
 
-class LagrangianSystem(SymPyPrintable):
+class LagrangianSystem(ModelEquality, SymPyPrintable):
     """A holonomic mechanical system given by its energies.
+
+    Two systems are equal (``==``, and hash alike) when they have the same coordinates and their energies, forces
+    and constraints agree after expansion: the same equations of motion.
 
     Parameters
     ----------
@@ -166,6 +170,10 @@ class LagrangianSystem(SymPyPrintable):
         if len(forces) != n:
             raise ModelError(f"expected {n} generalised forces (one per coordinate), got {len(forces)}")
         return tuple(convert(f, f"force {i + 1}") for i, f in enumerate(forces))
+
+    def _equality_data(self) -> tuple:
+        exprs = (self._T, self._V, self._R, *self._Q, *self._holonomic, *self._nonholonomic)
+        return (self._q, len(self._holonomic), len(self._nonholonomic)), exprs
 
     # ------------------------------------------------------------------ basic data
     @property

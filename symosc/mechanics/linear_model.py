@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from .._validate import check_complete_names
 from ..errors import ModelError, ParameterError
@@ -25,9 +26,12 @@ __all__ = ["LinearModel"]
 _S = sp.Symbol("s")
 
 
-@dataclass(frozen=True)
-class LinearModel(SymPyPrintable):
+@dataclass(frozen=True, eq=False)
+class LinearModel(ModelEquality, SymPyPrintable):
     """``M q'' + D q' + K q = f`` about an equilibrium; ``K`` and ``f`` may depend on time.
+
+    Two models are equal (and hash alike) when coordinates, point and matrices agree (entries equal after
+    expansion).
 
     Attributes
     ----------
@@ -58,6 +62,10 @@ class LinearModel(SymPyPrintable):
     f: sp.Matrix
     coordinates: tuple[sp.Symbol, ...]
     point: dict = field(default_factory=dict)
+
+    def _equality_data(self) -> tuple:
+        point = tuple(sorted((str(k), sp.sympify(v)) for k, v in self.point.items()))
+        return (tuple(self.coordinates), point), (self.M, self.D, self.K, self.f)
 
     def __repr__(self) -> str:
         n = len(self.coordinates)
