@@ -74,7 +74,10 @@ def test_series_converts_with_sympify():
     assert sp.sympify(w) == known + sp.O(eps**5) and sp.sympify(w) != known  # the order term is kept
     assert sp.expand(w.removeO() - known) == 0 and w.getO() == sp.O(eps**5)
     assert sp.Integer(2) * w + 1 == 2 * known + 1 + sp.O(eps**5)  # SymPy operands defer to the series
-    assert sp.latex(w) == r"1 - \frac{\varepsilon^{2}}{16} + \frac{17 \varepsilon^{4}}{3072} + O\left(\varepsilon^{5}\right)"
+    assert (
+        sp.latex(w)
+        == r"1 - \frac{\varepsilon^{2}}{16} + \frac{17 \varepsilon^{4}}{3072} + O\left(\varepsilon^{5}\right)"
+    )
     pretty = sp.pretty(w, use_unicode=True)
     assert "ε" in pretty and len(pretty.splitlines()) == 4  # 2-D powers and fractions
 

@@ -92,7 +92,7 @@ def test_scipy_backend_single_input_several_outputs():
     lin = n_link_pendulum(2, links="point").linearize()
     H = lin.to_transfer_function(values=VALUES, inputs=["phi2"], backend="scipy")
     assert isinstance(H, signal.TransferFunction)
-    nums, det = _double_pendulum_exact()
+    _, det = _double_pendulum_exact()
     np.testing.assert_allclose(H.den, det, rtol=1e-12)
     np.testing.assert_allclose(H.num, [[-1.0, 0, 0], [2.0, 0, 2 * G]], rtol=1e-12, atol=0)  # over det
 

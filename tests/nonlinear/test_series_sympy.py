@@ -68,8 +68,20 @@ def test_from_sympy_reads_what_sympy_series_returns():
         (lambda f, g: f / _series(H), F / H),
         (lambda f, g: f / (1 + EPS), F / (1 + EPS)),
     ],
-    ids=["mul", "add", "sub", "div", "inverse", "scalar-div", "cube", "sqrt", "power", "symbols", "parameter",
-         "by-polynomial"],
+    ids=[
+        "mul",
+        "add",
+        "sub",
+        "div",
+        "inverse",
+        "scalar-div",
+        "cube",
+        "sqrt",
+        "power",
+        "symbols",
+        "parameter",
+        "by-polynomial",
+    ],
 )
 def test_arithmetic_matches_sympy_series_of_the_closed_form(build, closed):
     out = build(_series(F), _series(G))
@@ -203,9 +215,7 @@ def test_vector_results_sympify_to_a_matrix_of_series():
     ex = sol.exponent_series(2)
     mex = sp.sympify(ex)
     assert mex.shape == (4, 1) and all(e.getO() == sp.O(EPS**3) for e in mex)
-    assert np.allclose(
-        [complex(e.removeO().subs(EPS, 0.1)) for e in mex], ex.evaluate(0.1), rtol=1e-13, atol=1e-13
-    )
+    assert np.allclose([complex(e.removeO().subs(EPS, 0.1)) for e in mex], ex.evaluate(0.1), rtol=1e-13, atol=1e-13)
 
 
 def test_printing_is_two_dimensional_with_epsilon(vdp):
