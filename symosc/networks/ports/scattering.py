@@ -23,7 +23,7 @@ import sympy as sp
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
 
-__all__ = ["chain_from_scattering", "scattering_from_chain", "skrf_parameters"]
+__all__ = ["skrf_parameters"]
 
 
 def _references(z0: Any) -> tuple[Any, Any]:
