@@ -53,8 +53,11 @@ def write_api_pages(api: Path) -> dict[str, list[str]]:
     index = ["API reference", "=============", "", "Every public object, generated from the docstrings.", ""]
     index += [".. toctree::", "   :maxdepth: 1", ""] + [f"   {m}" for m in homes]
     (api / "index.rst").write_text("\n".join(index) + "\n")
+    objects = {f"{modname}.{name}" for modname, names in homes.items() for name in names}
     for modname, names in homes.items():
-        lines = [f"``{modname}``", "=" * (len(modname) + 4), "", f".. automodule:: {modname}", "   :no-members:", ""]
+        lines = [f"``{modname}``", "=" * (len(modname) + 4), "", f".. automodule:: {modname}", "   :no-members:"]
+        # a module named like a function it exports (symosc.sweep.sweep is symosc.sweep): the function is indexed
+        lines += ["   :no-index:", ""] if modname in objects else [""]
         lines += [f".. currentmodule:: {modname}", "", ".. autosummary::", "   :toctree: generated", ""]
         lines += [f"   {n}" for n in names]
         (api / f"{modname}.rst").write_text("\n".join(lines) + "\n")

@@ -58,10 +58,8 @@ def _generalized_forces(loads: Any, frame: Any, rates: list, speeds: dict) -> li
 
 def _split_lagrangian(system: LagrangianSystem) -> LagrangianSystem:
     """The system ``LagrangianSystem(L, 0, ...)`` with ``T = T2 + T1`` and ``V = -T0`` (see the module docstring)."""
-    from .lagrange import LagrangianSystem
-
     T2, T1, T0 = system.kinetic_energy_parts
-    return LagrangianSystem(
+    return type(system)(
         T2 + T1,
         -T0,
         system.coordinates,
@@ -71,16 +69,14 @@ def _split_lagrangian(system: LagrangianSystem) -> LagrangianSystem:
     )
 
 
-def _from_lagranges(lm: Any) -> LagrangianSystem:
-    from .lagrange import LagrangianSystem
-
+def _from_lagranges(cls: type, lm: Any) -> LagrangianSystem:
     q = list(lm.q)
     rates = [c.diff(t) for c in q]
     loads = getattr(lm, "loads", None) or lm.forcelist
     forces = _generalized_forces(loads, lm.inertial, rates, {}) if loads else None
     hol = list(lm._hol_coneqs)  # the position-level constraints as given (LagrangesMethod keeps their rates)
     nonhol = list(lm.coneqs[len(hol) :])
-    raw = LagrangianSystem(lm._L[0], 0, q, forces=forces, constraints=hol, nonholonomic=nonhol)
+    raw = cls(lm._L[0], 0, q, forces=forces, constraints=hol, nonholonomic=nonhol)
     return _split_lagrangian(raw)
 
 
@@ -132,6 +128,7 @@ def _constant_force_potential(loads: Any, frame: Any, origin: Any, q: list) -> t
 
 
 def _from_bodies(
+    cls: type,
     frame: Any,
     q: list,
     u: list,
@@ -142,8 +139,6 @@ def _from_bodies(
     holonomic: list,
     velocity_constraints: list,
 ) -> LagrangianSystem:
-    from .lagrange import LagrangianSystem
-
     if frame is None:
         raise ModelError("the sympy.physics.mechanics model has no inertial frame")
     rates = [c.diff(t) for c in q]
@@ -154,7 +149,7 @@ def _from_bodies(
     nonhol = [sp.sympify(c).subs(speeds) for c in velocity_constraints]
     if not sp.sympify(T).has(*rates):
         raise ModelError("the bodies have no kinetic energy in terms of the coordinate rates: add bodies")
-    raw = LagrangianSystem(T - (V + Vg), 0, q, forces=Q, constraints=holonomic, nonholonomic=nonhol)
+    raw = cls(T - (V + Vg), 0, q, forces=Q, constraints=holonomic, nonholonomic=nonhol)
     return _split_lagrangian(raw)
 
 
@@ -221,16 +216,17 @@ def _total_derivative(e: sp.Expr, q: tuple, qd: tuple, u: list) -> sp.Expr:
     return out
 
 
-def from_sympy_mechanics(obj: Any, *, check: bool = True) -> LagrangianSystem:
-    """See :meth:`LagrangianSystem.from_sympy`."""
+def from_sympy_mechanics(cls: type, obj: Any, *, check: bool = True) -> LagrangianSystem:
+    """See :meth:`LagrangianSystem.from_sympy` (``cls`` is that class: this module does not import it)."""
     me = _me()
     if isinstance(obj, me.LagrangesMethod):
-        return _from_lagranges(obj)
+        return _from_lagranges(cls, obj)
     if isinstance(obj, me.System):
         if obj.eom_method is None:
             obj.form_eoms()
         q, u = list(obj.q), list(obj.u)
         system = _from_bodies(
+            cls,
             obj.frame,
             q,
             u,
@@ -251,7 +247,7 @@ def from_sympy_mechanics(obj: Any, *, check: bool = True) -> LagrangianSystem:
         if getattr(obj, "_k_nh", None) is not None and len(obj._k_nh):
             velocity = list(obj._k_nh * obj.u + obj._f_nh)
         system = _from_bodies(
-            obj._inertial, q, u, kdes, obj.bodies, obj.loads, None, list(getattr(obj, "_f_h", [])), velocity
+            cls, obj._inertial, q, u, kdes, obj.bodies, obj.loads, None, list(getattr(obj, "_f_h", [])), velocity
         )
         if check and not system.is_constrained:
             if obj._fr is None:

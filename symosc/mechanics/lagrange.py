@@ -529,7 +529,7 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         """
         from ._sympy_mechanics import from_sympy_mechanics
 
-        return from_sympy_mechanics(model, check=check)
+        return from_sympy_mechanics(cls, model, check=check)
 
     def to_sympy(self) -> Any:
         """The system as a ``sympy.physics.mechanics.LagrangesMethod`` (coordinates as ``dynamicsymbols``).

@@ -320,6 +320,8 @@ class LinearModel(ModelEquality, SymPyPrintable):
             The measured coordinates (default: all); ``velocities=True`` measures their rates instead.
         values : mapping
             Numbers for every parameter (keyed by Symbol or name).
+        velocities : bool
+            Measure the rates of the outputs instead of the coordinates.
         backend : {"auto", "control", "scipy"}
             ``control.StateSpace`` when python-control is installed (``"auto"``), else ``scipy.signal.StateSpace``.
 
@@ -357,6 +359,19 @@ class LinearModel(ModelEquality, SymPyPrintable):
         else ``scipy.signal.TransferFunction`` (one input).  The coefficients are those of the exact
         :meth:`transfer_function`, normalised to a monic denominator exactly and rounded once, at the end: no
         round-off coefficients where the exact answer has none.
+
+        Parameters
+        ----------
+        inputs : coordinates, force symbols, indices or matrix (n, m), optional
+            Where the inputs act (see :meth:`transfer_function`); default: a generalized force on every coordinate.
+        outputs : coordinates, indices or matrix (n, p), optional
+            The measured coordinates (default: all).
+        values : mapping
+            Numbers for every parameter (keyed by Symbol or name).
+        velocities : bool
+            Measure the rates of the outputs instead of the coordinates.
+        backend : {"auto", "control", "scipy"}
+            ``control.TransferFunction`` when python-control is installed (``"auto"``), else SciPy's.
 
         Examples
         --------

@@ -98,8 +98,17 @@ class FourPole(SymPyPrintable):
         return cls(convert_parameters(M, kind, "A", convention, z0=z0), p, **kw)
 
     def parameters(self, kind: str = "A", convention: str = "book", *, z0: Any = 50) -> sp.Matrix:
-        """The parameter matrix of ``kind`` ("A", "Z", "Y", "H", "G", "S", "T") in ``convention`` ("book" or
-        "ieee"); S and T in the reference impedance(s) ``z0``."""
+        """The parameter matrix of ``kind`` in ``convention``; S and T in the reference impedance(s) ``z0``.
+
+        Parameters
+        ----------
+        kind : {"A", "Z", "Y", "H", "G", "S", "T"}
+            The parameter set (see :func:`convert_parameters`).
+        convention : {"book", "ieee"}
+            Sign convention of Z, Y, H, G: the output current counted out of (book) or into (ieee) the network.
+        z0 : number, positive Symbol or pair
+            Reference impedance(s) of S and T (default 50 ohm).
+        """
         _kind(kind, "kind")
         return convert_parameters(self.chain, "A", kind, convention, z0=z0)
 

@@ -21,78 +21,17 @@ import numpy as np
 import sympy as sp
 
 from ..._validate import validated
-from ...errors import ModelError, ParameterError
+from ...errors import ParameterError
+from .conversions import (
+    abcd_from_s,
+    convert_parameters,
+    parameter_kind,
+    s_from_abcd,
+    scattering_references,
+    t_from_s,
+)
 
 __all__ = ["skrf_parameters"]
-
-
-def _references(z0: Any) -> tuple[Any, Any]:
-    """``(Z01, Z02)`` from one reference impedance or a pair (numbers > 0 or positive symbols)."""
-    pair = tuple(z0) if isinstance(z0, tuple | list | np.ndarray) else (z0, z0)
-    if len(pair) != 2:
-        raise ParameterError(f"z0 must be one reference impedance or a pair (Z01, Z02), got {z0!r}")
-    out = []
-    for z in pair:
-        v = sp.sympify(z)
-        if v.is_number and not (v.is_real and v > 0):
-            raise ParameterError(f"z0 must be real and positive (power waves with real references), got {z}")
-        if not v.is_number and v.is_positive is not True:
-            raise ParameterError(f"a symbolic z0 must be declared positive (Symbol(..., positive=True)), got {z}")
-        out.append(v)
-    return out[0], out[1]
-
-
-def _s_from_abcd(a: Any, b: Any, c: Any, d: Any, z1: Any, z2: Any, sqrt: Any) -> tuple:
-    delta = a * z2 + b + c * z1 * z2 + d * z1
-    root = sqrt(z1 * z2)
-    return (
-        (a * z2 + b - c * z1 * z2 - d * z1) / delta,
-        2 * (a * d - b * c) * root / delta,
-        2 * root / delta,
-        (-a * z2 + b - c * z1 * z2 + d * z1) / delta,
-    )
-
-
-def _abcd_from_s(s11: Any, s12: Any, s21: Any, s22: Any, z1: Any, z2: Any, sqrt: Any) -> tuple:
-    den = 2 * s21 * sqrt(z1 * z2)
-    return (
-        ((z1 + s11 * z1) * (1 - s22) + s12 * s21 * z1) / den,
-        ((z1 + s11 * z1) * (z2 + s22 * z2) - s12 * s21 * z1 * z2) / den,
-        ((1 - s11) * (1 - s22) - s12 * s21) / den,
-        ((1 - s11) * (z2 + s22 * z2) + s12 * s21 * z2) / den,
-    )
-
-
-def _t_from_s(s11: Any, s12: Any, s21: Any, s22: Any) -> tuple:
-    return (-(s11 * s22 - s12 * s21) / s21, s11 / s21, -s22 / s21, 1 / s21)
-
-
-def _s_from_t(t11: Any, t12: Any, t21: Any, t22: Any) -> tuple:
-    return (t12 / t22, (t11 * t22 - t12 * t21) / t22, 1 / t22, -t21 / t22)
-
-
-def scattering_from_chain(A: Any, kind: str, z0: Any) -> sp.Matrix:
-    """S (``kind="S"``) or T (``kind="T"``) parameters of the chain matrix ``A`` (SymPy, entries cancelled)."""
-    z1, z2 = _references(z0)
-    a, b, c, d = sp.Matrix(A)
-    if sp.cancel(a * z2 + b + c * z1 * z2 + d * z1) == 0:
-        raise ModelError("A Z02 + B + C Z01 Z02 + D Z01 = 0: the network has no scattering matrix")
-    s = _s_from_abcd(a, b, c, d, z1, z2, sp.sqrt)
-    if kind == "T":
-        if sp.cancel(s[2]) == 0:
-            raise ModelError("S21 = 0: the network transmits nothing, so its T parameters do not exist")
-        s = _t_from_s(*s)
-    return sp.Matrix(2, 2, [sp.cancel(x) for x in s])
-
-
-def chain_from_scattering(M: Any, kind: str, z0: Any) -> sp.Matrix:
-    """The chain matrix of S (``kind="S"``) or T (``kind="T"``) parameters ``M``."""
-    z1, z2 = _references(z0)
-    m = sp.Matrix(M)
-    s = tuple(m) if kind == "S" else _s_from_t(*m)
-    if sp.cancel(s[2]) == 0:
-        raise ModelError("S21 = 0: the network transmits nothing, so it has no chain matrix")
-    return sp.Matrix(2, 2, [sp.cancel(x) for x in _abcd_from_s(*s, z1, z2, sp.sqrt)])
 
 
 def numeric_chain(four_pole: Any, frequencies: Any) -> tuple[np.ndarray, np.ndarray]:
@@ -118,8 +57,8 @@ def to_skrf(four_pole: Any, frequencies: Any, z0: Any = 50, name: str | None = N
     except ImportError as err:
         raise ImportError("this needs scikit-rf: pip install scikit-rf") from err
     f, A = numeric_chain(four_pole, frequencies)
-    z1, z2 = (float(z) for z in _references(z0))
-    S = np.stack(_s_from_abcd(A[:, 0, 0], A[:, 0, 1], A[:, 1, 0], A[:, 1, 1], z1, z2, np.sqrt), axis=-1)
+    z1, z2 = (float(z) for z in scattering_references(z0))
+    S = np.stack(s_from_abcd(A[:, 0, 0], A[:, 0, 1], A[:, 1, 0], A[:, 1, 1], z1, z2, np.sqrt), axis=-1)
     freq = skrf.Frequency.from_f(f, unit="hz")
     return skrf.Network(frequency=freq, s=S.reshape(-1, 2, 2), z0=[z1, z2], name=name or four_pole.name or None)
 
@@ -161,9 +100,7 @@ def skrf_parameters(network: Any, kind: str = "A", convention: str = "book") -> 
     --------
     FourPole.to_skrf, FourPole.s_parameters, convert_parameters
     """
-    from .conversions import _kind, convert_parameters
-
-    target = _kind(kind, "kind")
+    target = parameter_kind(kind, "kind")
     s = np.asarray(getattr(network, "s", None))
     if s.ndim != 3 or s.shape[1:] != (2, 2):
         raise ParameterError(f"network must be a two-port skrf.Network, got S of shape {s.shape}")
@@ -171,14 +108,14 @@ def skrf_parameters(network: Any, kind: str = "A", convention: str = "book") -> 
     if np.any(np.abs(z0.imag) > 0) or np.any(z0.real <= 0) or np.ptp(z0.real, axis=0).max() > 0:
         raise ParameterError("network.z0 must be real, positive and the same at every frequency")
     z1, z2 = float(z0[0, 0].real), float(z0[0, 1].real)
-    A = np.stack(_abcd_from_s(s[:, 0, 0], s[:, 0, 1], s[:, 1, 0], s[:, 1, 1], z1, z2, np.sqrt), axis=-1)
+    A = np.stack(abcd_from_s(s[:, 0, 0], s[:, 0, 1], s[:, 1, 0], s[:, 1, 1], z1, z2, np.sqrt), axis=-1)
     A = A.reshape(-1, 2, 2)
     if target == "A":
         return A
     if target == "S":
         return s.copy()
     if target == "T":
-        return np.stack(_t_from_s(s[:, 0, 0], s[:, 0, 1], s[:, 1, 0], s[:, 1, 1]), axis=-1).reshape(-1, 2, 2)
+        return np.stack(t_from_s(s[:, 0, 0], s[:, 0, 1], s[:, 1, 0], s[:, 1, 1]), axis=-1).reshape(-1, 2, 2)
     a, b, c, d = sp.symbols("a b c d")
     fn = sp.lambdify((a, b, c, d), convert_parameters([[a, b], [c, d]], "A", target, convention), "numpy")
     out = np.empty_like(A)

@@ -401,7 +401,7 @@ class EpsSeries(SymPyPrintable):
     def from_sympy(
         cls, expr: Any, symbol: sp.Symbol | None = None, *, name: str = "series", strict: bool = True
     ) -> Any:
-        """The :class:`EpsSeries` of a SymPy series ``c_0 + c_1 x + ... + O(x**m)`` (what ``sympy.series`` returns).
+        """The :class:`EpsSeries` of a SymPy series ``c_0 + c_1*x + c_2*x**2 + O(x**3)`` (``sympy.series`` output).
 
         Parameters
         ----------
