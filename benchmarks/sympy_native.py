@@ -1,6 +1,7 @@
 """symosc objects in the SymPy / python-control / scikit-rf ecosystem: cost and accuracy against the peer route.
 
-Run ``python benchmarks/sympy_native.py``.  Three tasks, each timed in one run on the same machine:
+Run ``PYTHONPATH=. python benchmarks/sympy_native.py`` (this checkout's symosc first on the path).  Three tasks,
+each timed in one run on the same machine:
 
 1. series arithmetic on the van der Pol frequency (exact, orders 24 and 48): ``omega * omega``, ``1/omega`` and
    ``sqrt(omega)`` as :class:`EpsSeries` against SymPy on the sympified series (``expand`` of the product with its
@@ -31,6 +32,17 @@ def timed(fn, repeat=3):
     return best, out
 
 
+def _series_tasks(w, order):
+    eps = w.symbol
+    W = sp.sympify(w)
+    poly = w.removeO()
+    return [
+        ("omega*omega", lambda: w * w, lambda: sp.expand(W * W)),
+        ("1/omega", lambda: 1 / w, lambda: sp.series(1 / poly, eps, 0, order + 1)),
+        ("sqrt(omega)", lambda: w ** sp.Rational(1, 2), lambda: sp.series(sp.sqrt(poly), eps, 0, order + 1)),
+    ]
+
+
 def series_rows():
     from symosc.nonlinear import limit_cycle
 
@@ -38,15 +50,7 @@ def series_rows():
     rows = []
     for order in (24, 48):
         w = limit_cycle((1 - x**2) * v, order).frequency
-        eps = w.symbol
-        W = sp.sympify(w)
-        poly = w.removeO()
-        tasks = [
-            ("omega*omega", lambda: w * w, lambda: sp.expand(W * W)),
-            ("1/omega", lambda: 1 / w, lambda: sp.series(1 / poly, eps, 0, order + 1)),
-            ("sqrt(omega)", lambda: w ** sp.Rational(1, 2), lambda: sp.series(sp.sqrt(poly), eps, 0, order + 1)),
-        ]
-        for label, ours, theirs in tasks:
+        for label, ours, theirs in _series_tasks(w, order):
             t_ours, a = timed(ours)
             t_theirs, b = timed(theirs, repeat=1)
             same = sp.sympify(a) == b
