@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from ..._validate import validated
+from ..._validate import check_choice, validated
 from ...errors import ParameterError
 from .conversions import (
     abcd_from_s,
@@ -101,6 +101,7 @@ def skrf_parameters(network: Any, kind: str = "A", convention: str = "book") -> 
     FourPole.to_skrf, FourPole.s_parameters, convert_parameters
     """
     target = parameter_kind(kind, "kind")
+    check_choice("convention", convention, ("book", "ieee"))
     s = np.asarray(getattr(network, "s", None))
     if s.ndim != 3 or s.shape[1:] != (2, 2):
         raise ParameterError(f"network must be a two-port skrf.Network, got S of shape {s.shape}")
