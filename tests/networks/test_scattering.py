@@ -63,9 +63,9 @@ def _zero(M) -> bool:
 def test_exact_round_trips_and_cascade_of_t_parameters():
     Z0 = sp.Symbol("Z0", positive=True)
     a, b = series_element(p + 2), shunt_element(3 / p)
-    whole = cascade(a, b, a)
+    whole = cascade(a, b)
     assert _zero(convert_parameters(whole.s_parameters(Z0), "S", "A", z0=Z0) - whole.chain)
-    T = a.t_parameters(Z0) * b.t_parameters(Z0) * a.t_parameters(Z0)
+    T = a.t_parameters(Z0) * b.t_parameters(Z0)
     assert _zero(T - whole.t_parameters(Z0))
     assert _zero(convert_parameters(whole.t_parameters((8, 2)), "T", "S", z0=(8, 2)) - whole.s_parameters((8, 2)))
 
