@@ -65,15 +65,7 @@ class LindstedtSeries(SeriesResult, SymPyPrintable):
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Expr:
         """``x(tau)`` truncated at ``order`` (a cosine polynomial in ``tau = omega*t``)."""
-        n = self.order if order is None else int(order)
-        if n < 0 or n > self.order:
-            raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
-        out = sp.Integer(0)
-        for k, cs in enumerate(self._harmonics[: n + 1]):
-            for h, c in enumerate(cs):
-                if c != 0:
-                    out += c * self.eps_symbol**k * sp.cos(h * tau)
-        return sp.expand(self.amplitude * out)
+        return sp.expand(self.solution_series(order, tau).removeO())
 
     def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> EpsSeries:
         """``x(tau) = sum_k eps**k x_k(tau) + O(eps**(order+1))`` as an :class:`EpsSeries` (coefficients in ``tau``

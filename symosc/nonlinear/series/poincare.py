@@ -123,19 +123,7 @@ class LimitCycleSeries(SeriesResult, SymPyPrintable):
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Expr:
         """``x(tau) = sum_k eps**k x_k(tau)`` truncated at ``order`` as a SymPy expression in ``tau = omega*t``."""
-        n = self.order if order is None else self._check_order(order)
-        A0 = self.generating_amplitude
-        nh = max(len(cs) for cs, _ in self._harmonics[: n + 1])
-        out = sp.Integer(0)
-        for h in range(nh):
-            cc = sp.Add(
-                *[cs[h] * self.eps_symbol**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)]
-            )
-            sc = sp.Add(
-                *[ss[h] * self.eps_symbol**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)]
-            )
-            out += cc * sp.cos(h * tau) + sc * sp.sin(h * tau)
-        return sp.expand(A0 * out) if A0 != 1 else out
+        return sp.expand(self.solution_series(order, tau).removeO())
 
     def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> EpsSeries:
         """``x(tau) = sum_k eps**k x_k(tau) + O(eps**(order+1))`` as an :class:`EpsSeries` (coefficients in ``tau``).

@@ -114,22 +114,7 @@ class NDofPeriodicSolution(SeriesResult, SymPyPrintable):
 
     def solution(self, order: int | None = None, tau: sp.Symbol = TAU) -> sp.Matrix:
         """``q(tau)`` (column Matrix) truncated at ``order``; ``tau = omega*t``."""
-        n = self.order if order is None else int(order)
-        if n < 0 or n > self.order:
-            raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
-        A0 = self.generating_amplitude
-        out = []
-        for i in range(self.n):
-            e = sp.Integer(0)
-            for k in range(n + 1):
-                cs, ss = self._coords[k][i]
-                for h, (c, s) in enumerate(zip(cs, ss, strict=True)):
-                    if c != 0:
-                        e += A0 * c * self.eps_symbol**k * sp.cos(h * tau)
-                    if s != 0:
-                        e += A0 * s * self.eps_symbol**k * sp.sin(h * tau)
-            out.append(e)
-        return sp.Matrix(out)
+        return sp.Matrix([sp.expand(s.removeO()) for s in self.solution_series(order, tau)])
 
     def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> tuple[EpsSeries, ...]:
         """``q_i(tau) = sum_k eps**k q_ik(tau) + O(eps**(order+1))``, one :class:`EpsSeries` per coordinate.
