@@ -149,6 +149,12 @@ def _exact_values(values: Mapping[Any, Any] | None) -> dict[str, sp.Expr]:
     return out
 
 
+def _rational(m: sp.Matrix) -> sp.Matrix:
+    """``m`` with its floats replaced by the decimals they print as (exact arithmetic from here on)."""
+    floats = m.atoms(sp.Float)
+    return m.xreplace({f: sp.Rational(repr(float(f))) for f in floats if f.is_finite}) if floats else m
+
+
 def exact_transfer_matrix(
     model: Any,
     *,
@@ -162,7 +168,7 @@ def exact_transfer_matrix(
     exact = _exact_values(values)
     E, _ = _design(model, inputs, "inputs")
     S_, _ = _output_names(model, outputs, velocities)
-    mats = [bind(m, exact) for m in (model.M, model.D, model.K, E, S_)]
+    mats = [_rational(bind(m, exact)) for m in (model.M, model.D, model.K, E, S_)]
     _time_free(model, mats)
     M, Dm, K, E, S_ = mats
     if s in set().union(*(m.free_symbols for m in mats)):
