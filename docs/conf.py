@@ -1,12 +1,11 @@
 """Sphinx configuration: Markdown guides (MyST), notebooks with their stored outputs, numpydoc API reference.
 
-Build: ``python -m sphinx -W -j 1 -b html docs docs/_build/html`` (the API pages are generated from the
-subpackages' ``__all__`` on every build, so every public object is listed).
+Build: ``python -m sphinx -W -j 1 -b html docs docs/_build/html`` (the API pages are generated on every build from
+the ``__all__`` of every public module, discovered by walking the package, so every public object is listed).
 """
 
 from __future__ import annotations
 
-import importlib
 import sys
 import warnings
 from pathlib import Path
@@ -42,27 +41,13 @@ html_static_path: list[str] = []
 html_sidebars = {"api/generated/*": ["relations.html", "searchbox.html"]}
 
 
-def _subpackages() -> list[str]:
-    return [f"symosc.{n}" for n in symosc._installed_subpackages() if n != "cli"]
+sys.path.insert(0, str(Path(__file__).parent))
+from _api_pages import write_api_pages  # noqa: E402 - the discovery of the public API and its pages
 
 
 def _write_api_pages() -> None:
-    """One page per subpackage with an autosummary of every name in its ``__all__``."""
-    api = Path(__file__).parent / "api"
-    api.mkdir(exist_ok=True)
-    for stale in (api / "generated").glob("*.rst"):  # pages of names no longer public are rebuilt, not kept
-        stale.unlink()
-    mods = ["symosc", *_subpackages()]
-    index = ["API reference", "=============", "", "Every public object, generated from the docstrings.", ""]
-    index += [".. toctree::", "   :maxdepth: 1", ""] + [f"   {m}" for m in mods]
-    (api / "index.rst").write_text("\n".join(index) + "\n")
-    for modname in mods:
-        mod = importlib.import_module(modname)
-        names = [n for n in getattr(mod, "__all__", ()) if not isinstance(getattr(mod, n), type(sys))]
-        lines = [f"``{modname}``", "=" * (len(modname) + 4), "", f".. automodule:: {modname}", "   :no-members:", ""]
-        lines += [f".. currentmodule:: {modname}", "", ".. autosummary::", "   :toctree: generated", ""]
-        lines += [f"   {n}" for n in names]
-        (api / f"{modname}.rst").write_text("\n".join(lines) + "\n")
+    """One page per public module (discovered by walking the package) with every name of its ``__all__``."""
+    write_api_pages(Path(__file__).parent / "api")
 
 
 _write_api_pages()

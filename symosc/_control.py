@@ -14,7 +14,7 @@ import sympy as sp
 
 from .errors import ModelError, ParameterError
 
-__all__ = ["control_module", "lti_state_space", "transfer_function_from_expr"]
+__all__ = ["control_module", "lti_state_space", "transfer_function_from_expr", "transfer_function_from_matrix"]
 
 
 def control_module(required: bool = False) -> Any:
@@ -30,26 +30,80 @@ def control_module(required: bool = False) -> Any:
     return control
 
 
-def lti_state_space(A: Any, B: Any, C: Any, D: Any, *, backend: str = "auto") -> Any:
-    """``control.StateSpace`` (backend ``"control"`` or ``"auto"`` with control installed) or SciPy's."""
+def lti_state_space(A: Any, B: Any, C: Any, D: Any, *, backend: str = "auto", names: Mapping | None = None) -> Any:
+    """``control.StateSpace`` (backend ``"control"`` or ``"auto"`` with control installed) or SciPy's.
+
+    ``names`` (``{"inputs": [...], "outputs": [...], "states": [...]}``) labels the signals of the python-control
+    system (SciPy's systems have no labels).
+    """
     if backend not in ("auto", "control", "scipy"):
         raise ParameterError(f"backend must be 'auto', 'control' or 'scipy', got {backend!r}")
     ct = None if backend == "scipy" else control_module(required=backend == "control")
     if ct is not None:
-        return ct.ss(A, B, C, D)
+        return ct.ss(A, B, C, D, **dict(names or {}))
     from scipy import signal
 
     return signal.StateSpace(A, B, C, D)
 
 
-def _coefficients(poly_expr: sp.Expr, s: sp.Symbol) -> np.ndarray:
+def _coefficients(poly_expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr]:
+    """Exact coefficients of a polynomial in ``s``, highest power first (a ParameterError for free symbols)."""
     poly = sp.Poly(sp.expand(poly_expr), s)
     coeffs = poly.all_coeffs()
-    try:
-        return np.array([complex(c) for c in coeffs]).real if all(sp.im(c) == 0 for c in coeffs) else None
-    except TypeError as err:
-        free = sorted(str(x) for x in poly_expr.free_symbols - {s})
-        raise ParameterError(f"the transfer function still has free symbols {free}; pass values= for them") from err
+    free = sorted({str(x) for c in coeffs for x in sp.sympify(c).free_symbols})
+    if free:
+        raise ParameterError(f"the transfer function still has free symbols {free}; pass values= for them")
+    return coeffs
+
+
+def _rounded(coeffs: list[sp.Expr], what: str) -> np.ndarray:
+    values = [complex(sp.N(c, 20)) for c in coeffs]
+    if any(v.imag for v in values):
+        raise ModelError(f"complex coefficients in the {what}: the transfer function is not real")
+    return np.array([v.real for v in values])
+
+
+def _ratio(expr: Any, s: sp.Symbol) -> tuple[np.ndarray, np.ndarray]:
+    """Numerator and denominator coefficients of a rational function of ``s``, normalised exactly to a monic
+    denominator and rounded once, at the end."""
+    num, den = sp.fraction(sp.cancel(sp.together(sp.sympify(expr))))
+    if not (num.is_polynomial(s) and den.is_polynomial(s)):
+        raise ModelError(f"{expr} is not rational in {s}: only rational transfer functions convert (no delays)")
+    n, d = _coefficients(num, s), _coefficients(den, s)
+    lead = d[0]
+    return _rounded([c / lead for c in n], "numerator"), _rounded([c / lead for c in d], "denominator")
+
+
+def transfer_function_from_matrix(H: Any, s: sp.Symbol, *, backend: str = "auto", names: Mapping | None = None) -> Any:
+    """A rational transfer matrix ``H(s)`` (SymPy) as ``control.TransferFunction`` (MIMO, named signals with
+    ``names = {"inputs": [...], "outputs": [...]}``) or, for one input and one output, SciPy's."""
+    if backend not in ("auto", "control", "scipy"):
+        raise ParameterError(f"backend must be 'auto', 'control' or 'scipy', got {backend!r}")
+    H = sp.Matrix(H)
+    parts = [[_ratio(H[i, j], s) for j in range(H.shape[1])] for i in range(H.shape[0])]
+    ct = None if backend == "scipy" else control_module(required=backend == "control")
+    if ct is not None:
+        num = [[n for n, _ in row] for row in parts]
+        den = [[d for _, d in row] for row in parts]
+        return ct.tf(num, den, **dict(names or {}))
+    from scipy import signal
+
+    if H.shape[1] != 1:
+        raise ParameterError("SciPy transfer functions have one input: pass a single input, or install python-control")
+    if H.shape[0] == 1:
+        return signal.TransferFunction(*parts[0][0])
+    # one input, several outputs: SciPy wants a common denominator
+    common = sp.lcm([sp.fraction(sp.cancel(h))[1] for h in H])
+    rows = [sp.cancel(h * common) for h in H]
+    den = _coefficients(common, s)
+    nums = [_coefficients(r, s) for r in rows]
+    width = max(len(c) for c in nums)
+    nums = [[sp.S.Zero] * (width - len(c)) + list(c) for c in nums]
+    lead = den[0]
+    return signal.TransferFunction(
+        np.array([_rounded([c / lead for c in row], "numerator") for row in nums]),
+        _rounded([c / lead for c in den], "denominator"),
+    )
 
 
 def transfer_function_from_expr(
@@ -62,19 +116,4 @@ def transfer_function_from_expr(
     from .numeric import bind
 
     e = bind(expr, values) if values else sp.sympify(expr)
-    num, den = sp.fraction(sp.cancel(sp.together(e)))
-    if not (num.is_polynomial(s) and den.is_polynomial(s)):
-        raise ModelError(f"{expr} is not rational in {s}: only rational transfer functions convert (no delays)")
-    n, d = _coefficients(num, s), _coefficients(den, s)
-    if n is None or d is None:
-        raise ModelError("complex coefficients: the transfer function is not real")
-    lead = d[0]
-    n, d = n / lead, d / lead
-    if backend not in ("auto", "control", "scipy"):
-        raise ParameterError(f"backend must be 'auto', 'control' or 'scipy', got {backend!r}")
-    ct = None if backend == "scipy" else control_module(required=backend == "control")
-    if ct is not None:
-        return ct.tf(n, d)
-    from scipy import signal
-
-    return signal.TransferFunction(n, d)
+    return transfer_function_from_matrix(sp.Matrix([[e]]), s, backend=backend)

@@ -85,7 +85,13 @@ def test_run_writes_report_json_and_figure(tmp_path, capsys):
     assert main(["run", str(ROOT / "examples" / "gribkov2015.toml"), "-o", str(out)]) == 0
     text = capsys.readouterr().out
     assert "stable amplitudes" in text and "STABLE" in text
-    assert sorted(p.name for p in out.iterdir()) == [".symosc-output", "gribkov2015-ince-strutt.png", "report.md", "results.json", "timings.json"]
+    assert sorted(p.name for p in out.iterdir()) == [
+        ".symosc-output",
+        "gribkov2015-ince-strutt.png",
+        "report.md",
+        "results.json",
+        "timings.json",
+    ]
     data = json.loads((out / "results.json").read_text())
     np.testing.assert_allclose(data["questions"][0]["frequency_hz"], _hand_frequencies_hz(T1), rtol=1e-9)
 

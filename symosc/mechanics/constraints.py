@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..numeric import compile, resolve
@@ -188,7 +189,7 @@ def rank_on_constraint_set(
     return best
 
 
-class ConstrainedForm(SymPyPrintable):
+class ConstrainedForm(ModelEquality, SymPyPrintable):
     """Lagrange equations of the first kind of a constrained :class:`LagrangianSystem` (multiplier form).
 
     Not built directly: use :attr:`LagrangianSystem.constrained`.
@@ -227,6 +228,9 @@ class ConstrainedForm(SymPyPrintable):
 
     def __init__(self, system: LagrangianSystem):
         self.system = system
+
+    def _equality_data(self) -> tuple:
+        return self.system._equality_data()
 
     def __repr__(self) -> str:
         s = self.system
@@ -423,8 +427,8 @@ class ConstrainedForm(SymPyPrintable):
         return _minimal_form(self, independent)
 
 
-@dataclass(frozen=True)
-class MinimalForm(SymPyPrintable):
+@dataclass(frozen=True, eq=False)
+class MinimalForm(ModelEquality, SymPyPrintable):
     """Equations with the dependent velocities eliminated: ``q' = S u + s0``, ``M_r u' = F_r``.
 
     ``u`` are the independent velocities (the velocity symbols of the independent coordinates); every field
@@ -462,6 +466,11 @@ class MinimalForm(SymPyPrintable):
     mass_matrix: sp.Matrix
     forcing: sp.Matrix
     coordinates: tuple[sp.Symbol, ...]
+
+    def _equality_data(self) -> tuple:
+        dep = sorted(self.dependent.items(), key=lambda kv: str(kv[0]))
+        key = (tuple(self.independent), tuple(self.coordinates), tuple(k for k, _ in dep))
+        return key, (self.mass_matrix, self.forcing, *(v for _, v in dep))
 
     def __repr__(self) -> str:
         u = ", ".join(s.name for s in self.independent)

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from ..errors import ParameterError
 from ..numeric import compile, resolve
@@ -21,7 +22,7 @@ if TYPE_CHECKING:
 __all__ = ["FirstOrderSystem"]
 
 
-class FirstOrderSystem(SymPyPrintable):
+class FirstOrderSystem(ModelEquality, SymPyPrintable):
     """x' = f(t, x) with the state x = (q, q').
 
     Symbolically the system is kept in descriptor form ``E(x, t) x' = G(x, t)`` with
@@ -51,6 +52,9 @@ class FirstOrderSystem(SymPyPrintable):
     def __init__(self, system: LagrangianSystem):
         self.system = system
         self._parts: dict[tuple[str, bool], Any] = {}  # generated code per (backend, jacobian)
+
+    def _equality_data(self) -> tuple:
+        return self.system._equality_data()  # equal when the systems are (same equations)
 
     @property
     def state(self) -> tuple[sp.Symbol, ...]:

@@ -20,6 +20,7 @@ from typing import Any
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from ..errors import ModelError
 from ..symbols import ddot, dot, sort_symbols, t
@@ -58,8 +59,11 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
     return tuple(plain), replace
 
 
-class LagrangianSystem(SymPyPrintable):
+class LagrangianSystem(ModelEquality, SymPyPrintable):
     """A holonomic mechanical system given by its energies.
+
+    Two systems are equal (``==``, and hash alike) when they have the same coordinates and their energies, forces
+    and constraints agree after expansion: the same equations of motion.
 
     Parameters
     ----------
@@ -166,6 +170,10 @@ class LagrangianSystem(SymPyPrintable):
         if len(forces) != n:
             raise ModelError(f"expected {n} generalised forces (one per coordinate), got {len(forces)}")
         return tuple(convert(f, f"force {i + 1}") for i, f in enumerate(forces))
+
+    def _equality_data(self) -> tuple:
+        exprs = (self._T, self._V, self._R, *self._Q, *self._holonomic, *self._nonholonomic)
+        return (self._q, len(self._holonomic), len(self._nonholonomic)), exprs
 
     # ------------------------------------------------------------------ basic data
     @property
@@ -480,6 +488,95 @@ class LagrangianSystem(SymPyPrintable):
         from ._analytic import reduce_coordinates
 
         return reduce_coordinates(self, parametrization, coordinates)
+
+    # ------------------------------------------------------------------ sympy.physics.mechanics
+    @classmethod
+    def from_sympy(cls, model: Any, *, check: bool = True) -> LagrangianSystem:
+        """The system of a ``sympy.physics.mechanics`` model: ``LagrangesMethod``, ``KanesMethod`` or ``System``.
+
+        Frames, points, bodies, joints and loads built with SymPy come in through these objects, and get symosc's
+        linearization, modal and Floquet analysis, Ince–Strutt diagrams and series.  A ``LagrangesMethod`` gives
+        its Lagrangian (``T`` = the parts of degree 1 and 2 in the velocities, ``V`` = minus the rest); a
+        ``KanesMethod`` or ``System`` gives the kinetic energy of its bodies (speeds replaced by coordinate rates
+        through the kinematic differential equations), their ``potential_energy``, and, for a ``System`` (which has
+        a fixed point), the potential of constant forces such as uniform gravity.  Other loads become generalized
+        forces, configuration and velocity constraints holonomic and non-holonomic constraints.  Coordinates keep
+        their names (as plain symbols).
+
+        Parameters
+        ----------
+        model : sympy.physics.mechanics.LagrangesMethod, KanesMethod or System
+            The model.  A ``KanesMethod`` or ``System`` needs its bodies; its equations are formed if they were not.
+        check : bool
+            For an unconstrained ``KanesMethod`` or ``System``: compare the accelerations of the imported system
+            with the model's own at random states, and raise :class:`~symosc.errors.ModelError` when they differ (a
+            velocity constraint imposed through a point velocity, which Lagrange's equations cannot see).
+
+        Returns
+        -------
+        LagrangianSystem
+
+        Raises
+        ------
+        ModelError
+            An object of another type, no bodies, kinematic equations that do not fix the speeds, or (``check``)
+            equations that differ from the model's.
+
+        Examples
+        --------
+        A pendulum built from a frame, a point and a particle:
+
+        >>> import sympy as sp
+        >>> import sympy.physics.mechanics as me
+        >>> q = me.dynamicsymbols("q")
+        >>> m, l, g = sp.symbols("m l g", positive=True)
+        >>> N = me.ReferenceFrame("N")
+        >>> A = N.orientnew("A", "Axis", [q, N.z])
+        >>> O = me.Point("O")
+        >>> O.set_vel(N, 0)
+        >>> P = O.locatenew("P", -l * A.y)
+        >>> _ = P.v2pt_theory(O, N, A)
+        >>> bob = me.Particle("bob", P, m)
+        >>> bob.potential_energy = -m * g * l * sp.cos(q)
+        >>> system = LagrangianSystem.from_sympy(me.LagrangesMethod(me.Lagrangian(N, bob), [q]))
+        >>> system.mass_matrix, system.forcing
+        (Matrix([[l**2*m]]), Matrix([[-g*l*m*sin(q)]]))
+
+        See Also
+        --------
+        to_sympy
+        """
+        from ._sympy_mechanics import from_sympy_mechanics
+
+        return from_sympy_mechanics(cls, model, check=check)
+
+    def to_sympy(self) -> Any:
+        """The system as a ``sympy.physics.mechanics.LagrangesMethod`` (coordinates as ``dynamicsymbols``).
+
+        The Lagrangian is ``T - V``; each generalized force (with ``-dR/dq'`` of the dissipation function) is a load
+        at a point of its own moving with ``q'_i`` along the inertial ``x`` axis, so that SymPy forms exactly
+        ``Q_i``; the constraints are its ``hol_coneqs`` and ``nonhol_coneqs``.  ``LagrangianSystem.from_sympy`` of
+        the result gives back the same mass matrix and forcing.
+
+        Returns
+        -------
+        sympy.physics.mechanics.LagrangesMethod
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from symosc.models import n_link_pendulum
+        >>> lm = n_link_pendulum(1).to_sympy()
+        >>> lm.form_lagranges_equations().applyfunc(sp.trigsimp)
+        Matrix([[l1*m1*(g*sin(phi1(t)) + l1*Derivative(phi1(t), (t, 2)))]])
+
+        See Also
+        --------
+        from_sympy
+        """
+        from ._sympy_mechanics import to_sympy_mechanics
+
+        return to_sympy_mechanics(self)
 
     def hamiltonian(self):
         """The Legendre transform: a :class:`~symosc.mechanics.HamiltonianSystem` (Bulgakov (1954), §3.11)."""

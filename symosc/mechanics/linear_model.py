@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from .._validate import check_complete_names
 from ..errors import ModelError, ParameterError
@@ -22,10 +23,15 @@ if TYPE_CHECKING:
 
 __all__ = ["LinearModel"]
 
+_S = sp.Symbol("s")
 
-@dataclass(frozen=True)
-class LinearModel(SymPyPrintable):
+
+@dataclass(frozen=True, eq=False)
+class LinearModel(ModelEquality, SymPyPrintable):
     """``M q'' + D q' + K q = f`` about an equilibrium; ``K`` and ``f`` may depend on time.
+
+    Two models are equal (and hash alike) when coordinates, point and matrices agree (entries equal after
+    expansion).
 
     Attributes
     ----------
@@ -56,6 +62,10 @@ class LinearModel(SymPyPrintable):
     f: sp.Matrix
     coordinates: tuple[sp.Symbol, ...]
     point: dict = field(default_factory=dict)
+
+    def _equality_data(self) -> tuple:
+        point = tuple(sorted((str(k), sp.sympify(v)) for k, v in self.point.items()))
+        return (tuple(self.coordinates), point), (self.M, self.D, self.K, self.f)
 
     def __repr__(self) -> str:
         n = len(self.coordinates)
@@ -259,6 +269,66 @@ class LinearModel(SymPyPrintable):
         return omega, Phi * np.where(sign == 0, 1.0, sign)
 
     # ------------------------------------------------------------------ control systems
+    def transfer_function(
+        self,
+        inputs: Any = None,
+        outputs: Any = None,
+        *,
+        values: Mapping[Any, Any] | None = None,
+        velocities: bool = False,
+        s: sp.Symbol = _S,
+    ) -> sp.ImmutableMatrix:
+        """The exact transfer matrix ``H(s) = C (M s**2 + D s + K)**-1 E`` from the inputs to the outputs.
+
+        Formed in exact arithmetic over the rational functions of ``s`` and the parameters (damping and gyroscopic
+        terms included): each entry is a cancelled ratio of polynomials, symbolic in the parameters left free.
+
+        Parameters
+        ----------
+        inputs : coordinates, force symbols, indices or matrix (n, m), optional
+            Where the inputs act: a unit generalized force ``Q_q`` on each listed coordinate (default: every
+            coordinate), a symbol of the excitation ``f`` (its column ``df/du``), or a force-distribution matrix
+            ``E`` in ``M q'' + D q' + K q = E u``.
+        outputs : coordinates, indices or matrix (n, p), optional
+            The measured coordinates (default: all), or a matrix ``C`` with ``y = C^T q``.
+        values : mapping, optional
+            Numbers for some or all parameters (keyed by Symbol or name); floats are read as the decimals they print
+            as (``9.81 -> 981/100``), so the result is exact.
+        velocities : bool
+            Measure the rates of the outputs (``H`` times ``s``).
+        s : Symbol
+            The Laplace variable.
+
+        Returns
+        -------
+        sympy.ImmutableMatrix
+            ``p x m`` rational functions of ``s``.
+
+        Raises
+        ------
+        ModelError
+            ``K`` depends on time, or ``M s**2 + D s + K`` is singular for every ``s``.
+
+        Examples
+        --------
+        Hanging double pendulum, unit masses and lengths: from the torque on the lower link to the upper angle
+        (``det(M s**2 + K) = s**4 + 4 g s**2 + 2 g**2``):
+
+        >>> import sympy as sp
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(2, links="point").linearize()
+        >>> H = lin.transfer_function(inputs=["phi2"], outputs=["phi1"], values={"m1": 1, "m2": 1, "l1": 1, "l2": 1})
+        >>> sp.factor(H[0, 0])
+        -s**2/(2*g**2 + 4*g*s**2 + s**4)
+
+        See Also
+        --------
+        to_transfer_function, to_state_space
+        """
+        from ._control import exact_transfer_matrix
+
+        return exact_transfer_matrix(self, inputs=inputs, outputs=outputs, values=values, velocities=velocities, s=s)
+
     def to_state_space(
         self,
         *,
@@ -269,6 +339,10 @@ class LinearModel(SymPyPrintable):
         backend: str = "auto",
     ) -> Any:
         """The model as a state-space system ``x' = A x + B u``, ``y = C x`` with ``x = (q, q')``.
+
+        With python-control the signals carry the model's names: inputs ``Q_q`` (generalized force on coordinate
+        ``q``) or the force symbols given, outputs the coordinates (``q_dot`` with ``velocities=True``), states
+        ``q..., q_dot...``.
 
         Parameters
         ----------
@@ -315,8 +389,23 @@ class LinearModel(SymPyPrintable):
     ) -> Any:
         """Transfer function(s) from the inputs to the outputs (arguments as :meth:`to_state_space`).
 
-        ``control.TransferFunction`` (MIMO allowed) with python-control, else ``scipy.signal.TransferFunction``
-        (one input).
+        ``control.TransferFunction`` (MIMO allowed, signals named as in :meth:`to_state_space`) with python-control,
+        else ``scipy.signal.TransferFunction`` (one input).  The coefficients are those of the exact
+        :meth:`transfer_function`, normalised to a monic denominator exactly and rounded once, at the end: no
+        round-off coefficients where the exact answer has none.
+
+        Parameters
+        ----------
+        inputs : coordinates, force symbols, indices or matrix (n, m), optional
+            Where the inputs act (see :meth:`transfer_function`); default: a generalized force on every coordinate.
+        outputs : coordinates, indices or matrix (n, p), optional
+            The measured coordinates (default: all).
+        values : mapping
+            Numbers for every parameter (keyed by Symbol or name).
+        velocities : bool
+            Measure the rates of the outputs instead of the coordinates.
+        backend : {"auto", "control", "scipy"}
+            ``control.TransferFunction`` when python-control is installed (``"auto"``), else SciPy's.
 
         Parameters
         ----------

@@ -37,6 +37,7 @@ import numpy as np
 import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
+from .._equality import ModelEquality
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
@@ -139,7 +140,7 @@ class ModalData:
         return 0.5 * self.modal_stiffness
 
 
-class BodyOnSprings(SymPyPrintable):
+class BodyOnSprings(ModelEquality, SymPyPrintable):
     """Symbolic model of a rigid body on N vertical springs (see the module docstring).
 
     Build it with :func:`body_on_springs`.  Every matrix is a SymPy object computed on first access.
@@ -165,6 +166,9 @@ class BodyOnSprings(SymPyPrintable):
     positions : tuple of (x_j, z_j)
         Attachment (= sensor) points in ``Oxyz`` (``y = 0``), symbolic.
     """
+
+    def _equality_data(self) -> tuple:
+        return (self.n_springs, self.layout, self.convention), ()
 
     def __init__(self, n_springs: int, layout: str, convention: str):
         self.n_springs = n_springs

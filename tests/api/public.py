@@ -6,6 +6,7 @@ import doctest
 import importlib
 import importlib.util
 import inspect
+import pkgutil
 import re
 import time
 from functools import cache
@@ -24,6 +25,24 @@ def public_objects() -> tuple[tuple[str, str, Any], ...]:
     """``(module, name, object)`` for every name in ``symosc.__all__`` and each subpackage's ``__all__``."""
     out = []
     for modname in ["symosc", *subpackages()]:
+        mod = importlib.import_module(modname)
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name)
+            if not inspect.ismodule(obj):
+                out.append((modname, name, obj))
+    return tuple(out)
+
+
+@cache
+def all_public_exports() -> tuple[tuple[str, str, Any], ...]:
+    """``(module, name, object)`` for every name in the ``__all__`` of every public module: each importable module of
+    symosc with no ``_`` part in its dotted path (found by walking the package, deeper modules included)."""
+    modules = ["symosc"]
+    for info in pkgutil.walk_packages(symosc.__path__, "symosc."):
+        if not any(part.startswith("_") for part in info.name.split(".")[1:]):
+            modules.append(info.name)
+    out = []
+    for modname in modules:
         mod = importlib.import_module(modname)
         for name in getattr(mod, "__all__", ()):
             obj = getattr(mod, name)

@@ -316,7 +316,7 @@ def test_bad_input():
 
         FourPole([[1, 2], [2, 4]])
     with pytest.raises(ParameterError, match="one of"):
-        convert_parameters(sp.eye(2), "S", "Z")
+        convert_parameters(sp.eye(2), "Q", "Z")  # (S and T are parameter sets now)
     with pytest.raises(ParameterError, match="positive integer"):
         chain_power(sp.eye(2), 0)
 

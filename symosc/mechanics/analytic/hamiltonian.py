@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from ..._equality import ModelEquality
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError
@@ -58,7 +59,7 @@ def poisson_bracket(f: Any, g: Any, coordinates: Sequence[sp.Symbol], momenta: S
     return sp.Add(*(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q) for q, p in zip(coordinates, momenta, strict=True)))
 
 
-class HamiltonianSystem(SymPyPrintable):
+class HamiltonianSystem(ModelEquality, SymPyPrintable):
     """Canonical equations ``q' = dH/dp``, ``p' = -dH/dq + Q`` (Bulgakov (1954), eq. (3.117)).
 
     Parameters
@@ -106,6 +107,9 @@ class HamiltonianSystem(SymPyPrintable):
         self._Q = tuple(sp.sympify(f) for f in forces) if forces is not None else (sp.S.Zero,) * len(self._q)
         if len(self._Q) != len(self._q):
             raise ModelError(f"expected {len(self._q)} forces, got {len(self._Q)}")
+
+    def _equality_data(self) -> tuple:
+        return (self._q, self._p), (self._H, *self._Q)
 
     @classmethod
     def from_lagrangian(cls, system: LagrangianSystem) -> HamiltonianSystem:

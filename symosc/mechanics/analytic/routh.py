@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
+from ..._equality import ModelEquality
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError
@@ -62,7 +63,7 @@ class SteadyMotion(SymPyPrintable):
         return f"SteadyMotion({self.point}, momenta {self.momenta}: {verdict})"
 
 
-class RouthReduction(SymPyPrintable):
+class RouthReduction(ModelEquality, SymPyPrintable):
     """The Routh function of a system with cyclic coordinates; build with :func:`routh_reduction`.
 
     Attributes ``routhian``, ``reduced_potential``, ``reduced_system`` and ``cyclic_velocities`` are computed on
@@ -87,6 +88,10 @@ class RouthReduction(SymPyPrintable):
         q = system.coordinates
         self.noncyclic = tuple(x for x in q if x not in self.cyclic)
         self.momenta = tuple(momentum_symbol(x) for x in self.cyclic)
+
+    def _equality_data(self) -> tuple:
+        key, exprs = self.system._equality_data()
+        return (self.cyclic, key), exprs
 
     def __repr__(self) -> str:
         return (

@@ -1,6 +1,7 @@
 """Port algebra: one-ports, four-poles and their connections (Bulgakov 1954, §8.31–8.46, §9.19–9.21).
 
-Element trees and their impedances, four-pole parameter sets and conversions, series/parallel/cascade connections
+Element trees and their impedances, four-pole parameter sets (A, Z, Y, H, G, S, T) and conversions, scikit-rf
+networks, SPICE-like netlists, series/parallel/cascade connections
 with the Brune test, a library of sections with closed-form chain matrices, image and iterative parameters,
 junction voltages of cascades, mechanical analogues and the energy functions of passive networks.
 """
@@ -33,6 +34,7 @@ from .image import (
     working_loss,
 )
 from .junctions import CascadeJunctions, cascade_junctions
+from .netlist import Circuit, CircuitElement, parse_netlist
 from .oneports import (
     BruneSection,
     Capacitor,
@@ -44,6 +46,7 @@ from .oneports import (
     Series,
     equivalent_two_pole,
 )
+from .scattering import skrf_parameters
 from .sections import (
     bridged_t_section,
     ideal_transformer,
@@ -64,6 +67,8 @@ __all__ = [
     "BruneSection",
     "Capacitor",
     "CascadeJunctions",
+    "Circuit",
+    "CircuitElement",
     "Damper",
     "EnergyFunctions",
     "EnergyValues",
@@ -102,11 +107,13 @@ __all__ = [
     "lattice_phase_network",
     "parallel",
     "parallel_series",
+    "parse_netlist",
     "pi_section",
     "series",
     "series_element",
     "series_parallel",
     "shunt_element",
+    "skrf_parameters",
     "t_section",
     "terminated_response",
     "to_electrical",

@@ -77,13 +77,9 @@ def chain_from_netlist(net: Netlist, subs: dict | None = None) -> sp.Matrix:
         M[n + 1, t2] += 1
         M[n + 1, t3] -= 1
         rhs[n + 1] = Ey
-        # one KCL row is redundant (total current balance); least-squares free exact solve
-        try:
-            sol, params = M.gauss_jordan_solve(rhs)
-        except ValueError as exc:
-            raise ModelError("the connected network has no chain matrix (inconsistent port equations)") from exc
-        if params.shape[0]:
-            raise ModelError("the connected network is not determined by its ports (floating parts)")
+        # one KCL row is redundant (total current balance): reduced row echelon form over the field of rational
+        # functions (DomainMatrix: much faster than Matrix.gauss_jordan_solve on entries rational in p)
+        sol = _exact_solve(M, rhs)
         columns.append((sp.cancel(sol[t0] - sol[t1]), sp.cancel(sol[n])))
     return sp.Matrix([[columns[0][0], columns[1][0]], [columns[0][1], columns[1][1]]])
 
@@ -110,3 +106,31 @@ def cascade_netlists(netlists: list[Netlist | None]) -> Netlist | None:
         terminals = net.terminals if terminals is None else (terminals[0], terminals[1], *net.terminals[2:])
         prev = net.terminals
     return Netlist(tuple(branches), terminals)
+
+
+def _exact_solve(M: sp.Matrix, rhs: sp.Matrix) -> list:
+    """The unique solution of the (possibly overdetermined, consistent) system ``M x = rhs``."""
+    from sympy.polys.matrices import DomainMatrix
+
+    whole = DomainMatrix.from_Matrix(M.row_join(rhs))
+    if whole.domain.is_EX or whole.domain.is_EXRAW:
+        try:
+            sol, params = M.gauss_jordan_solve(rhs)
+        except ValueError as exc:
+            raise ModelError("the connected network has no chain matrix (inconsistent port equations)") from exc
+        if params.shape[0]:
+            raise ModelError("the connected network is not determined by its ports (floating parts)")
+        return list(sol)
+    field = whole.to_field()
+    rref, pivots = field.rref()
+    unknowns = M.cols
+    if unknowns in pivots:
+        raise ModelError("the connected network has no chain matrix (inconsistent port equations)")
+    if len(pivots) < unknowns:
+        raise ModelError("the connected network is not determined by its ports (floating parts)")
+    to_expr = field.domain.to_sympy
+    rows = rref.to_list()
+    x = [sp.S.Zero] * unknowns
+    for i, col in enumerate(pivots):
+        x[col] = to_expr(rows[i][unknowns])
+    return x

@@ -91,24 +91,86 @@ class FourPole(SymPyPrintable):
 
     # -- parameter sets ------------------------------------------------------------------------------------
     @classmethod
-    def from_parameters(cls, M: Any, kind: str, p: sp.Symbol = P, convention: str = "book", **kw: Any) -> FourPole:
-        """Build a four-pole from Z, Y, H, G or A parameters (see :func:`convert_parameters`)."""
-        return cls(convert_parameters(M, kind, "A", convention), p, **kw)
+    def from_parameters(
+        cls, M: Any, kind: str, p: sp.Symbol = P, convention: str = "book", *, z0: Any = 50, **kw: Any
+    ) -> FourPole:
+        """Build a four-pole from Z, Y, H, G, S, T or A parameters (see :func:`convert_parameters`)."""
+        return cls(convert_parameters(M, kind, "A", convention, z0=z0), p, **kw)
 
-    def parameters(self, kind: str = "A", convention: str = "book") -> sp.Matrix:
-        """The parameter matrix of ``kind`` ("A", "Z", "Y", "H", "G") in ``convention`` ("book" or "ieee").
+    def parameters(self, kind: str = "A", convention: str = "book", *, z0: Any = 50) -> sp.Matrix:
+        """The parameter matrix of ``kind`` in ``convention``; S and T in the reference impedance(s) ``z0``.
 
         Parameters
         ----------
-        kind : {"A", "Z", "Y", "H", "G"}, optional
-            Parameter set to return, one of "A" (chain; "ABCD" and "chain" are accepted too), "Z", "Y", "H", "G"
-            (default "A").
-        convention : {"book", "ieee"}, optional
-            Sign convention of the result: "book" counts the output current out of the network (Bulgakov (1954), §8.32),
-            "ieee" counts both port currents in (default "book").
+        kind : {"A", "Z", "Y", "H", "G", "S", "T"}
+            Parameter set to return, one of "A" (chain; "ABCD" and "chain" are accepted too), "Z", "Y", "H", "G", "S",
+            "T" (see :func:`convert_parameters`).
+        convention : {"book", "ieee"}
+            Sign convention of Z, Y, H, G: the output current counted out of (book) or into (ieee) the network.
+        z0 : number, positive Symbol or pair
+            Reference impedance(s) of S and T (default 50 ohm).
         """
         _kind(kind, "kind")
-        return convert_parameters(self.chain, "A", kind, convention)
+        return convert_parameters(self.chain, "A", kind, convention, z0=z0)
+
+    def s_parameters(self, z0: Any = 50) -> sp.Matrix:
+        """Scattering parameters ``[b1, b2] = S [a1, a2]`` in the reference impedance(s) ``z0``, symbolic in ``p``.
+
+        Parameters
+        ----------
+        z0 : number, positive Symbol or pair
+            Reference impedance of both ports (default 50 ohm), or ``(Z01, Z02)``; real and positive.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from symosc.networks import series_element
+        >>> Z0 = sp.Symbol("Z0", positive=True)
+        >>> series_element(sp.Symbol("Z")).s_parameters(Z0)
+        Matrix([
+        [   Z/(Z + 2*Z0), 2*Z0/(Z + 2*Z0)],
+        [2*Z0/(Z + 2*Z0),    Z/(Z + 2*Z0)]])
+
+        See Also
+        --------
+        t_parameters, to_skrf, convert_parameters
+        """
+        return convert_parameters(self.chain, "A", "S", z0=z0)
+
+    def t_parameters(self, z0: Any = 50) -> sp.Matrix:
+        """Scattering-transfer parameters ``[b1, a1] = T [a2, b2]`` (scikit-rf's), so that cascades multiply.
+
+        Parameters
+        ----------
+        z0 : number, positive Symbol or pair
+            Reference impedance of both ports (default 50 ohm), or ``(Z01, Z02)``; real and positive.
+        """
+        return convert_parameters(self.chain, "A", "T", z0=z0)
+
+    def to_skrf(self, frequencies: Any, z0: Any = 50, name: str | None = None) -> Any:
+        """The four-pole as a ``skrf.Network`` (scikit-rf, an optional dependency) at ``p = 2 pi i f``.
+
+        Parameters
+        ----------
+        frequencies : array_like
+            Frequencies in hertz (>= 0).
+        z0 : number or pair
+            Reference impedance(s) of the S parameters (default 50 ohm).
+        name : str, optional
+            Name of the network (default: the four-pole's name).
+
+        Raises
+        ------
+        ParameterError
+            Free symbols other than ``p`` in the chain matrix (substitute values first).
+
+        See Also
+        --------
+        s_parameters, symosc.networks.skrf_parameters
+        """
+        from .scattering import to_skrf
+
+        return to_skrf(self, frequencies, z0, name)
 
     @property
     def A(self) -> sp.Matrix:

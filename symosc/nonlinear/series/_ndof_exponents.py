@@ -32,12 +32,13 @@ import sympy as sp
 from ..._deprecation import deprecated_attribute as _deprecated_attribute
 from ..._printing import SymPyPrintable
 from ...errors import ModelError, ParameterError
+from ._series import EpsSeries, SeriesResult
 
 __all__ = ["CharacteristicExponentSeries"]
 
 
 @dataclass(frozen=True)
-class CharacteristicExponentSeries(SymPyPrintable):
+class CharacteristicExponentSeries(SeriesResult, SymPyPrintable):
     """Characteristic (Floquet) exponents ``mu_i(eps) = sum_k c_ik eps**k + O(eps**(order+1))`` in rad/s.
 
     Attributes
@@ -104,6 +105,23 @@ class CharacteristicExponentSeries(SymPyPrintable):
                 if abs(z) > 0
             ]
         )
+
+    def series_expression(self) -> tuple[EpsSeries, ...]:
+        """Every exponent as an :class:`EpsSeries` (complex ``Float`` coefficients, 15 digits): ``sympy.sympify``
+        gives their column (an ``ImmutableMatrix``)."""
+        out = []
+        for label, row in zip(self.labels, self.coefficients, strict=True):
+            cs = tuple(
+                sp.Float(z.real, 15) + sp.I * sp.Float(z.imag, 15) if z.imag else sp.Float(z.real, 15) for z in row
+            )
+            out.append(EpsSeries(cs, self.eps_symbol, self.order, name=str(label)))
+        return tuple(out)
+
+    def _pretty_items(self) -> list:
+        return [
+            (str(label), self.series(i, 8) + sp.O(self.eps_symbol ** (self.order + 1)))
+            for i, label in enumerate(self.labels)
+        ]
 
     def _repr_latex_(self) -> str:
         rows = r" \\ ".join(sp.latex(self.series(i, 8)) for i in range(len(self.labels)))

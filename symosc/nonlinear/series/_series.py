@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 import warnings
 from dataclasses import dataclass
 from fractions import Fraction
@@ -16,8 +17,10 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ...errors import SeriesWarning
+from . import _series_algebra
+from ._series_algebra import SeriesResult
 
-__all__ = ["EpsSeries", "RadiusEstimate"]
+__all__ = ["EpsSeries", "RadiusEstimate", "SeriesResult"]
 
 _ONE = sp.Integer(1)
 _PREC17 = mlib.libmpf.dps_to_prec(17)
@@ -76,12 +79,26 @@ class RadiusEstimate(SymPyPrintable):
 
 @dataclass(frozen=True)
 class EpsSeries(SymPyPrintable):
-    """A truncated power series ``factor * sum_k c_k eps**k + O(eps**(order+1))``.
+    """A truncated power series ``factor * sum_k c_k eps**k + O(eps**(order+1))``, usable as a SymPy expression.
+
+    ``sympy.sympify(s)`` (and ``sympy.S(s)``) gives the sum *with* its order term, exactly as ``sympy.series``
+    returns it; :meth:`removeO` drops it, :meth:`getO` returns it.  Arithmetic with numbers, symbols, SymPy
+    expressions and other series follows the rules of ``sympy.series`` and ``sympy.Order`` (a sum keeps the lower
+    order, ``(a + O(eps**m)) * (b + O(eps**n))`` is known to ``min(m + vb, n + va)`` with ``va``, ``vb`` the lowest
+    powers present, a power ``s**p`` with ``c_0 != 0`` keeps the order) and, unlike SymPy, products and powers are
+    expanded at once; the result is again an :class:`EpsSeries` whenever it is a power series in the same variable,
+    otherwise the SymPy expression SymPy itself would build.  :meth:`subs`, :meth:`diff`, :attr:`free_symbols`,
+    :meth:`expand`, :meth:`evalf`, :meth:`has` act on the series; substituting a *number* for the expansion variable
+    evaluates the truncated sum (the order term states how the error behaves as ``eps -> 0`` and has no value at a
+    point: SymPy returns ``O(1)`` there).  Equality respects the order term: a series equals the SymPy expression
+    ``sympify(series)`` and differs from its truncated sum.  LaTeX and pretty printing show ``eps`` as
+    :math:`\\varepsilon`, in 2-D.
 
     Attributes
     ----------
     coefficients : tuple of SymPy numbers
-        ``c_0 .. c_order`` (``Rational`` in exact arithmetic, ``Float`` otherwise).
+        ``c_0 .. c_order`` (``Rational`` in exact arithmetic, ``Float`` otherwise; any SymPy expressions free of
+        ``symbol`` after arithmetic or substitution).
     symbol : Symbol
         The expansion variable (``eps``).
     order : int
@@ -90,6 +107,27 @@ class EpsSeries(SymPyPrintable):
         An overall factor (``2*pi`` for a period, an irrational generating amplitude, ...).
     name : str
         What the series is (shown in the repr).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from symosc.nonlinear import limit_cycle
+    >>> x, v = sp.symbols("x v")
+    >>> w = limit_cycle((1 - x**2) * v, 4).frequency       # van der Pol, Bulgakov (1954) §5.22
+    >>> sp.sympify(w)
+    1 - eps**2/16 + 17*eps**4/3072 + O(eps**5)
+    >>> (w * w).expr, (w * w).getO()                        # omega**2, with the order term it keeps
+    (23*eps**4/1536 - eps**2/8 + 1, O(eps**5))
+    >>> eps = w.symbol
+    >>> (eps * w + 1).getO(), w.subs(eps, sp.Rational(1, 10))
+    (O(eps**6), 30700817/30720000)
+    >>> w == sp.sympify(w), w == w.removeO()
+    (True, False)
+    >>> print(sp.pretty(w.diff(eps), use_unicode=True))  # doctest: +NORMALIZE_WHITESPACE
+                   3
+           ε   17⋅ε     ⎛ 4⎞
+    ω' = - ─ + ───── + O⎝ε ⎠
+           8    768
     """
 
     coefficients: tuple
@@ -98,15 +136,19 @@ class EpsSeries(SymPyPrintable):
     factor: sp.Expr = _ONE
     name: str = "series"
 
+    #: SymPy's binary operators defer to an operand of higher priority: ``A * series`` calls ``series.__rmul__``
+    _op_priority = 20.0
+
     @property
     def expr(self) -> sp.Expr:
         """The truncated series as a SymPy expression (without the O-term)."""
         poly = sp.Add(*[c * self.symbol**k for k, c in enumerate(self.coefficients)])
         return self.factor * poly if self.factor != 1 else poly
 
+    # ------------------------------------------------------------------ SymPy protocol
     def _sympy_(self) -> sp.Expr:
-        """``sympy.sympify(series)`` gives the truncated sum (as :meth:`removeO`)."""
-        return self.expr
+        """``sympy.sympify(series)`` gives the sum with its order term (as :meth:`as_series`)."""
+        return self.as_series()
 
     def removeO(self) -> sp.Expr:
         """The truncated sum without the order term, as ``sympy.Expr.removeO``.
@@ -117,7 +159,7 @@ class EpsSeries(SymPyPrintable):
         >>> from symosc.nonlinear import limit_cycle
         >>> x, v = sp.symbols("x v")
         >>> w = limit_cycle((1 - x**2) * v, 2).frequency
-        >>> w.removeO(), w.getO(), sp.sympify(w) == w.removeO()
+        >>> w.removeO(), w.getO(), sp.sympify(w) == w.as_series()
         (1 - eps**2/16, O(eps**3), True)
         >>> w.as_series()
         1 - eps**2/16 + O(eps**3)
@@ -129,12 +171,287 @@ class EpsSeries(SymPyPrintable):
         return sp.O(self.symbol ** (self.order + 1), self.symbol)
 
     def as_expr(self) -> sp.Expr:
-        """The truncated sum (the same as :meth:`removeO`)."""
-        return self.expr
+        """The series as a SymPy expression with its order term (as ``sympy.Expr.as_expr``; see :meth:`removeO`)."""
+        return self.as_series()
 
     def as_series(self) -> sp.Expr:
-        """The truncated sum with its order term, as ``sympy.series`` returns it."""
-        return self.expr + self.getO()
+        """The truncated sum with its order term, as ``sympy.series`` returns it (factor multiplied out)."""
+        return _series_algebra.as_sympy_expr(self._folded, self.order, self.symbol)
+
+    @functools.cached_property
+    def _folded(self) -> tuple:
+        """The coefficients with the factor multiplied in."""
+        if self.factor == 1:
+            return tuple(_series_algebra.tidy(c) for c in self.coefficients)
+        return tuple(_series_algebra.tidy(self.factor * c) for c in self.coefficients)
+
+    @property
+    def free_symbols(self) -> set:
+        """The expansion variable and every symbol of the coefficients and the factor (as SymPy's)."""
+        out = {self.symbol} | set(self.factor.free_symbols)
+        for c in self.coefficients:
+            out |= sp.sympify(c).free_symbols
+        return out
+
+    def has(self, *patterns: Any) -> bool:
+        """Whether the series (with its order term) contains any of ``patterns`` (``sympy.Basic.has``).
+
+        Parameters
+        ----------
+        patterns : Basic or type
+            Subexpressions or types to look for.
+        """
+        return self.as_series().has(*patterns)
+
+    def __eq__(self, other: Any) -> bool:
+        if isinstance(other, EpsSeries):
+            return (self.symbol, self.order, self._folded) == (other.symbol, other.order, other._folded)
+        if isinstance(other, SeriesResult):
+            return other.__eq__(self)
+        try:
+            other = sp.sympify(other, strict=True)
+        except sp.SympifyError:
+            return NotImplemented
+        return self.as_series() == other
+
+    def __hash__(self) -> int:
+        return hash(self.as_series())
+
+    # ------------------------------------------------------------------ arithmetic
+    def _with(self, coefficients: tuple, order: int | None, factor: Any = _ONE) -> Any:
+        if order is None:  # an exact polynomial (a product with an exact zero): no order term left
+            return sp.sympify(factor) * _series_algebra.as_sympy_expr(tuple(coefficients), None, self.symbol)
+        return EpsSeries(tuple(coefficients), self.symbol, order, sp.sympify(factor), name="series")
+
+    def _operand(self, other: Any) -> Any:
+        """``other`` as ``(coefficients, order, factor)`` in this series' variable, or a SymPy object, or
+        NotImplemented."""
+        if isinstance(other, SeriesResult):
+            other = other.series_expression()
+        if isinstance(other, EpsSeries):
+            if other.symbol == self.symbol:
+                return other.coefficients, other.order, other.factor
+            return other.as_series()
+        try:
+            other = sp.sympify(other, strict=True)
+        except sp.SympifyError:
+            return NotImplemented
+        data = _series_algebra.from_expr(other, self.symbol)
+        return other if data is None else (*data, _ONE)
+
+    def _binary(self, other: Any, op: str, reflected: bool = False) -> Any:
+        data = self._operand(other)
+        if data is NotImplemented:
+            return NotImplemented
+        if not isinstance(data, tuple):  # not a power series in this variable: what SymPy builds
+            a, b = (data, self.as_series()) if reflected else (self.as_series(), data)
+            return {"add": operator.add, "sub": operator.sub, "mul": operator.mul, "div": operator.truediv}[op](a, b)
+        cs, order, factor = data
+        if op == "sub":
+            op, factor = "add", -factor
+        if op == "add":
+            if factor == self.factor and order is not None:
+                out, o = _series_algebra.add(self.coefficients, self.order, cs, order)
+                return self._with(out, o, self.factor)
+            other_cs = cs if factor == 1 else tuple(_series_algebra.tidy(factor * c) for c in cs)
+            out, o = _series_algebra.add(self._folded, self.order, other_cs, order)
+            return self._with(out, o)
+        if op == "mul":
+            if order is None and not cs:  # an exact zero: 0*O(eps**n) = 0
+                return sp.S.Zero
+            if order is None and len(cs) == 1:  # a constant: into the factor
+                return self._with(self.coefficients, self.order, self.factor * factor * cs[0])
+            out, o = _series_algebra.mul(self.coefficients, self.order, cs, order)
+            return self._with(out, o, self.factor * factor)
+        # division: (reflected) other / self, or self / other
+        num, den = ((cs, order, factor), self._parts()) if reflected else (self._parts(), (cs, order, factor))
+        if den[1] is None and len(den[0]) <= 1:
+            if not den[0] or _series_algebra.is_zero(den[0][0] * den[2]):
+                raise ZeroDivisionError(f"division of {self.name} by zero")
+            return EpsSeries(num[0], self.symbol, num[1], num[2] / (den[0][0] * den[2]), "series")
+        cap = num[1] if den[1] is None else den[1]
+        inv = _series_algebra.power(den[0][: None if cap is None else cap + 1], cap, -1) if cap is not None else None
+        if inv is None:
+            return data_expr(num, self.symbol) / data_expr(den, self.symbol)
+        if num[1] is None and len(num[0]) <= 1:  # a constant over a series: the constant into the factor
+            return self._with(inv[0], inv[1], (num[0][0] if num[0] else 0) * num[2] / den[2])
+        out, o = _series_algebra.mul(num[0], num[1], *inv)
+        return self._with(out, o, num[2] / den[2])
+
+    def _parts(self) -> tuple:
+        return self.coefficients, self.order, self.factor
+
+    def __add__(self, other: Any) -> Any:
+        return self._binary(other, "add")
+
+    __radd__ = __add__
+
+    def __sub__(self, other: Any) -> Any:
+        return self._binary(other, "sub")
+
+    def __rsub__(self, other: Any) -> Any:
+        return (-self)._binary(other, "add")
+
+    def __mul__(self, other: Any) -> Any:
+        return self._binary(other, "mul")
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: Any) -> Any:
+        return self._binary(other, "div")
+
+    def __rtruediv__(self, other: Any) -> Any:
+        return self._binary(other, "div", reflected=True)
+
+    def __neg__(self) -> EpsSeries:
+        return EpsSeries(self.coefficients, self.symbol, self.order, -self.factor, self.name)
+
+    def __pos__(self) -> EpsSeries:
+        return self
+
+    def __pow__(self, exponent: Any) -> Any:
+        try:
+            p = sp.sympify(exponent, strict=True)
+        except sp.SympifyError:
+            return NotImplemented
+        out = _series_algebra.power(self.coefficients, self.order, p) if not p.free_symbols else None
+        if out is None:
+            return sp.Pow(self.as_series(), p)
+        return self._with(out[0], out[1], self.factor**p)
+
+    def __rpow__(self, base: Any) -> Any:
+        return sp.Pow(sp.sympify(base), self.as_series())
+
+    # ------------------------------------------------------------------ substitution and calculus
+    def subs(self, *args: Any, **kwargs: Any) -> Any:
+        """Substitute as ``sympy.Basic.subs``; an :class:`EpsSeries` while the result is a series in one variable.
+
+        Parameters
+        ----------
+        args : pair, mapping or iterable of pairs
+            ``old, new`` or ``{old: new, ...}`` or ``[(old, new), ...]``, applied in turn.
+        kwargs
+            Passed on to ``sympy.Basic.subs`` for the coefficients.
+
+        Returns
+        -------
+        EpsSeries or Expr
+            A parameter replaced: the series with new coefficients.  The expansion variable replaced by a symbol:
+            the series in that symbol.  By a number: the truncated sum at that number (exact for an exact number).
+            Otherwise what ``sympy.Basic.subs`` gives for :meth:`as_series`.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from symosc.nonlinear import lindstedt
+        >>> x, A = sp.symbols("x A")
+        >>> w = lindstedt(-x**3, 2).frequency              # Duffing: omega(eps, A)
+        >>> w.subs(A, 2)
+        omega = -21*eps**2/16 + 3*eps/2 + 1 + O(eps**3)
+        >>> w.subs({A: 2, w.symbol: sp.Rational(1, 10)})   # 1 + 3/20 - 21/1600
+        1819/1600
+        """
+        out: Any = self
+        for old, new in _series_algebra.substitution_pairs(args):
+            out = _series_algebra.subs_one(out, old, new, **kwargs)
+        return out
+
+    def diff(self, *symbols: Any, **kwargs: Any) -> Any:
+        """Derivative (``sympy.diff(series, x)`` works too): in ``eps`` the order drops by one, in a parameter the
+        coefficients are differentiated.
+
+        Parameters
+        ----------
+        symbols : Symbol, or Symbol and count
+            Variables as in ``sympy.diff`` (``eps``, ``eps, 2``, ``A, eps``).
+        kwargs
+            Passed on to ``sympy.diff`` where SymPy takes over (an ``O(1)`` result).
+        """
+        out: Any = self
+        for var in _series_algebra.derivative_variables(symbols):
+            out = _series_algebra.derivative(out, var, **kwargs)
+        return out
+
+    def expand(self, **hints: Any) -> EpsSeries:
+        """The series with ``sympy.expand`` applied to each coefficient (and the factor multiplied in).
+
+        Parameters
+        ----------
+        hints
+            Hints of ``sympy.expand`` (``trig=True``, ...).
+        """
+        return EpsSeries(tuple(sp.expand(c, **hints) for c in self._folded), self.symbol, self.order, _ONE, self.name)
+
+    def evalf(self, n: int = 15, **options: Any) -> EpsSeries:
+        """The series with floating-point coefficients of ``n`` significant digits (``sympy.N``).
+
+        Parameters
+        ----------
+        n : int
+            Significant digits.
+        options
+            Options of ``sympy.Basic.evalf``.
+        """
+        cs = tuple(sp.sympify(c).evalf(n, **options) for c in self._folded)
+        return EpsSeries(cs, self.symbol, self.order, _ONE, self.name)
+
+    n = evalf
+
+    @classmethod
+    def from_sympy(
+        cls, expr: Any, symbol: sp.Symbol | None = None, *, name: str = "series", strict: bool = True
+    ) -> Any:
+        """The :class:`EpsSeries` of a SymPy series ``c_0 + c_1*x + c_2*x**2 + O(x**3)`` (``sympy.series`` output).
+
+        Parameters
+        ----------
+        expr : Expr
+            A polynomial in ``symbol`` plus an order term ``O(symbol**m)`` at 0.
+        symbol : Symbol, optional
+            The expansion variable (default: the variable of the order term).
+        name : str
+            What the series is (shown in the repr).
+        strict : bool
+            Raise ``ValueError`` when ``expr`` is no such series (True), or return ``expr`` unchanged (False).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from symosc.nonlinear import EpsSeries
+        >>> x = sp.Symbol("x")
+        >>> s = EpsSeries.from_sympy(sp.series(sp.exp(x), x, 0, 4))
+        >>> s.coefficients, s.order
+        ((1, 1, 1/2, 1/6), 3)
+        """
+        e = sp.sympify(expr)
+        o = e.getO() if isinstance(e, sp.Expr) else None
+        x = symbol if symbol is not None else (o.variables[0] if o is not None and len(o.variables) == 1 else None)
+        data = _series_algebra.from_expr(e, x) if x is not None else None
+        if data is None or data[1] is None:
+            if strict:
+                raise ValueError(f"{expr} is not a power series with an order term O(x**m) at x = 0")
+            return e
+        return cls(data[0], x, data[1], _ONE, name)
+
+    # ------------------------------------------------------------------ printing
+    def _sympystr(self, printer: Any = None) -> str:
+        return repr(self)
+
+    def _latex(self, printer: Any = None) -> str:
+        shown = _series_algebra.display(self._display_expr(), self.symbol, latex=True)
+        return printer._print(shown) if printer is not None else sp.latex(shown)
+
+    def _pretty(self, printer: Any = None) -> Any:
+        from sympy.printing.pretty.stringpict import prettyForm, stringPict
+
+        shown = _series_algebra.display(self._display_expr(), self.symbol, latex=False)
+        body = printer._print(shown) if printer is not None else prettyForm(sp.pretty(shown))
+        label = _series_algebra.pretty_label(self.name, printer)
+        return body if label is None else prettyForm(*stringPict.next(label, " = ", body))
+
+    def _display_expr(self) -> sp.Expr:
+        """The series for display: the factor kept outside the sum (``2*pi*(1 + ...) + O(...)``)."""
+        return self.expr + self.getO() if self.factor == 1 else sp.Add(self.expr, self.getO(), evaluate=False)
 
     def coefficient(self, k: int) -> sp.Expr:
         """Coefficient of ``eps**k`` (including ``factor``).
@@ -298,7 +615,13 @@ class EpsSeries(SymPyPrintable):
         return f"{self.name} = {self.expr} + O({self.symbol}**{self.order + 1})"
 
     def _repr_latex_(self) -> str:
-        return f"${sp.latex(self.expr)} + O\\left({sp.latex(self.symbol ** (self.order + 1))}\\right)$"
+        return f"${self._latex()}$"
+
+
+def data_expr(data: tuple, x: sp.Symbol) -> sp.Expr:
+    """SymPy expression of ``(coefficients, order, factor)``."""
+    cs, order, factor = data
+    return factor * _series_algebra.as_sympy_expr(tuple(cs), order, x)
 
 
 @functools.lru_cache(maxsize=256)

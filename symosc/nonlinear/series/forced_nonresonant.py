@@ -25,13 +25,14 @@ from ..._printing import SymPyPrintable
 from ..._validate import check_finite, check_int, check_positive, validated
 from ...errors import ConvergenceError, ModelError, ParameterError
 from ...numeric import compile as _compile
-from ._series import EpsSeries
+from ...symbols import t as _t
+from ._series import EpsSeries, SeriesResult
 
 __all__ = ["NonResonantForcedSolution", "nonresonant_forced_solution"]
 
 
 @dataclass(frozen=True)
-class NonResonantForcedSolution(SymPyPrintable):
+class NonResonantForcedSolution(SeriesResult, SymPyPrintable):
     """Series ``q(t) = sum_k mu**k q_k(t)`` of the forced periodic solution (Bulgakov (1954), §5.23).
 
     Attributes
@@ -79,6 +80,37 @@ class NonResonantForcedSolution(SymPyPrintable):
         h = np.arange(self.harmonics.shape[1])
         coeff = sum(m**k * self.harmonics[k] for k in range(n + 1))
         return (np.exp(1j * self.Omega * np.multiply.outer(tt, h)) @ coeff).real
+
+    def solution_series(self, order: int | None = None, t: sp.Symbol = _t) -> EpsSeries:
+        """``q(t) = sum_k mu**k q_k(t) + O(mu**(order+1))`` with ``q_k(t) = Re sum_n c_kn exp(i n Omega t)`` written
+        out in cosines and sines (``Float`` coefficients): what ``sympy.sympify`` gives.
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``mu`` kept (default: all, ``self.order``).
+        t : Symbol
+            The time variable (default :data:`symosc.t`).
+        """
+        n = self.order if order is None else check_int("order", order, minimum=0, maximum=self.order)
+        W = sp.Float(self.Omega, 17)
+        coefficients = []
+        for row in self.harmonics[: n + 1]:
+            terms = [sp.Float(float(row[0].real), 17)]
+            for h, c in enumerate(row[1:], start=1):
+                if c.real:
+                    terms.append(sp.Float(float(c.real), 17) * sp.cos(h * W * t))
+                if c.imag:
+                    terms.append(-sp.Float(float(c.imag), 17) * sp.sin(h * W * t))
+            coefficients.append(sp.Add(*terms))
+        return EpsSeries(tuple(coefficients), self.C1.symbol, n, name="q")
+
+    def series_expression(self) -> EpsSeries:
+        """The solution ``q(t)`` with its order term (:meth:`solution_series`)."""
+        return self.solution_series()
+
+    def _pretty_items(self) -> list:
+        return [("C1", self.C1), ("C2", self.C2)]
 
     def initial_state(self, mu: float, order: int | None = None) -> np.ndarray:
         """``(C1(mu), C2(mu))``: the initial state of the periodic solution, series truncated at ``order``.

@@ -23,7 +23,7 @@ from ..._validate import validated
 from ...errors import ModelError, ParameterError
 from ...numeric import compile as _compile
 from ._fourier import ExactArith, RingArith, Trig, _Arith
-from ._series import EpsSeries, to_sympy_number
+from ._series import EpsSeries, SeriesResult, to_sympy_number
 
 __all__ = ["LindstedtSeries", "lindstedt"]
 
@@ -34,8 +34,11 @@ TAU = sp.Symbol("tau")
 
 
 @dataclass(frozen=True)
-class LindstedtSeries(SymPyPrintable):
+class LindstedtSeries(SeriesResult, SymPyPrintable):
     """Periodic family of ``x'' + x = eps*f(x)`` through ``x(0) = A, x'(0) = 0`` (Newcomb–Lindstedt).
+
+    As a SymPy object the result is its solution ``x(tau) = sum_k eps**k x_k(tau, A) + O(eps**(order+1))`` with
+    ``tau = omega*t`` (:meth:`solution_series`).
 
     Attributes
     ----------
@@ -81,15 +84,41 @@ class LindstedtSeries(SymPyPrintable):
         tau : Symbol, optional
             Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
         """
+        return sp.expand(self.solution_series(order, tau).removeO())
+
+    def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> EpsSeries:
+        """``x(tau) = sum_k eps**k x_k(tau) + O(eps**(order+1))`` as an :class:`EpsSeries` (coefficients in ``tau``
+        and ``A``).
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept (default: all, ``self.order``).
+        tau : Symbol
+            The phase variable ``tau = omega*t``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> x = sp.Symbol("x")
+        >>> lindstedt(-x**3, 1).solution_series()
+        x = A*cos(tau) + eps*(-A**3*cos(tau)/32 + A**3*cos(3*tau)/32) + O(eps**2)
+        """
         n = self.order if order is None else int(order)
         if n < 0 or n > self.order:
             raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
-        out = sp.Integer(0)
-        for k, cs in enumerate(self._harmonics[: n + 1]):
-            for h, c in enumerate(cs):
-                if c != 0:
-                    out += c * self.eps_symbol**k * sp.cos(h * tau)
-        return sp.expand(self.amplitude * out)
+        coefficients = tuple(
+            sp.expand(self.amplitude * sp.Add(*[c * sp.cos(h * tau) for h, c in enumerate(cs) if c != 0]))
+            for cs in self._harmonics[: n + 1]
+        )
+        return EpsSeries(coefficients, self.eps_symbol, n, name=self.x.name)
+
+    def series_expression(self) -> EpsSeries:
+        """The solution ``x(tau)`` with its order term (:meth:`solution_series`): what ``sympy.sympify`` gives."""
+        return self.solution_series()
+
+    def _pretty_items(self) -> list:
+        return [(sp.Symbol("omega"), self.frequency)]
 
     def frequency_in_amplitude(self) -> sp.Expr:
         """``omega`` at ``eps = 1`` as a polynomial in ``A`` truncated where it is complete (book form (5.58)).

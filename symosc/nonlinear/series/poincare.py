@@ -17,6 +17,7 @@ References: Bulgakov (1954) §§5.16–5.22; Andersen & Geer, SIAM J. Appl. Math
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -34,7 +35,7 @@ from ..._validate import validated
 from ...errors import ModelError, ParameterError
 from ._fourier import ExactArith, FloatArith, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
-from ._series import EpsSeries, to_sympy_number
+from ._series import EpsSeries, SeriesResult, to_sympy_number
 
 __all__ = ["LimitCycleSeries", "limit_cycle"]
 
@@ -49,11 +50,15 @@ _ARITHMETICS = ("exact", "float", "mpmath")
 # public API
 # ---------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class LimitCycleSeries(SymPyPrintable):
+class LimitCycleSeries(SeriesResult, SymPyPrintable):
     """The periodic solution of ``x'' + x = eps*f(x, x', eps)`` by Poincaré's method.
 
     The phase variable is ``tau = omega*t``; the phase is fixed by ``x'(0) = 0``, so ``x(0)`` is the amplitude
     (the crossing of the half-line ``v = 0, x > 0``).
+
+    As a SymPy object the result is its solution ``x(tau) = sum_k eps**k x_k(tau) + O(eps**(order+1))``
+    (:meth:`solution_series`): ``sympy.sympify(lc)``, ``lc + 1``, ``lc * lc``, ``lc.subs(eps, 0.1)`` act on it;
+    the frequency, period and amplitude are the series attributes below.
 
     Attributes
     ----------
@@ -143,19 +148,47 @@ class LimitCycleSeries(SymPyPrintable):
         tau : Symbol, optional
             Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
         """
+        return sp.expand(self.solution_series(order, tau).removeO())
+
+    def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> EpsSeries:
+        """``x(tau) = sum_k eps**k x_k(tau) + O(eps**(order+1))`` as an :class:`EpsSeries` (coefficients in ``tau``).
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept (default: all, ``self.order``).
+        tau : Symbol
+            The phase variable ``tau = omega*t``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> x, v = sp.symbols("x v")
+        >>> lc = limit_cycle((1 - x**2) * v, 1)
+        >>> lc.solution_series()
+        x = eps*(3*sin(tau)/4 - sin(3*tau)/4) + 2*cos(tau) + O(eps**2)
+        >>> sp.sympify(lc) == lc.solution_series()
+        True
+        """
         n = self.order if order is None else self._check_order(order)
         A0 = self.generating_amplitude
-        nh = max(len(cs) for cs, _ in self._harmonics[: n + 1])
-        out = sp.Integer(0)
-        for h in range(nh):
-            cc = sp.Add(
-                *[cs[h] * self.eps_symbol**k for k, (cs, _) in enumerate(self._harmonics[: n + 1]) if h < len(cs)]
-            )
-            sc = sp.Add(
-                *[ss[h] * self.eps_symbol**k for k, (_, ss) in enumerate(self._harmonics[: n + 1]) if h < len(ss)]
-            )
-            out += cc * sp.cos(h * tau) + sc * sp.sin(h * tau)
-        return sp.expand(A0 * out) if A0 != 1 else out
+        coefficients = []
+        for cs, ss in self._harmonics[: n + 1]:
+            terms = [c * sp.cos(h * tau) for h, c in enumerate(cs) if c != 0]
+            terms += [s * sp.sin(h * tau) for h, s in enumerate(ss) if s != 0]
+            coefficients.append(sp.expand(A0 * sp.Add(*terms)))
+        return EpsSeries(tuple(coefficients), self.eps_symbol, n, name=self.x.name)
+
+    def series_expression(self) -> EpsSeries:
+        """The solution ``x(tau)`` with its order term (:meth:`solution_series`): what ``sympy.sympify`` gives."""
+        return self._solution_series
+
+    @functools.cached_property
+    def _solution_series(self) -> EpsSeries:
+        return self.solution_series()
+
+    def _pretty_items(self) -> list:
+        return [(sp.Symbol("omega"), self.frequency), (sp.Symbol("a"), self.amplitude)]
 
     def evaluate_solution(self, eps: float, tau: Any, order: int | None = None) -> np.ndarray:
         """Numeric ``(x, dx/dt)`` of the truncated series at phase(s) ``tau`` (dx/dt = omega dx/dtau).
@@ -258,10 +291,7 @@ class LimitCycleSeries(SymPyPrintable):
         return f"{shown.name} = {shown.expr} + ...{more}"
 
     def _repr_latex_(self) -> str:
-        return (
-            f"$\\omega = {sp.latex(self.frequency.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))}),\\quad "
-            f"a = {sp.latex(self.amplitude.expr)} + O({sp.latex(self.eps_symbol ** (self.order + 1))})$"
-        )
+        return f"$\\omega = {self.frequency._latex()},\\quad a = {self.amplitude._latex()}$"
 
 
 #: largest series order accepted by limit_cycle in exact arithmetic (see the error message for the cost)

@@ -34,7 +34,7 @@ from ._fourier import FixedArith, Trig, _Arith, make_arith
 from ._ndof_exponents import CharacteristicExponentSeries
 from ._ndof_exponents import exponent_series as _exponent_series
 from ._poincare_core import _polynomial_terms, _trig_power_coefficients
-from ._series import EpsSeries, to_sympy_number
+from ._series import EpsSeries, SeriesResult, to_sympy_number
 
 __all__ = ["NDofPeriodicSolution", "periodic_solution_ndof"]
 
@@ -69,8 +69,11 @@ def _modes(M: sp.Matrix, K: sp.Matrix, dps: int) -> tuple[list, mpmath.matrix]:
 
 
 @dataclass(frozen=True)
-class NDofPeriodicSolution(SymPyPrintable):
+class NDofPeriodicSolution(SeriesResult, SymPyPrintable):
     """Periodic solution of ``M q'' + K q = eps*f(q, q')`` continued from one linear mode.
+
+    As a SymPy object the result is the column ``q(tau)`` of coordinate series (``sympy.sympify`` gives an
+    ``ImmutableMatrix`` whose entries carry ``O(eps**(order+1))``; :meth:`solution_series`), ``tau = omega*t``.
 
     Attributes
     ----------
@@ -142,22 +145,39 @@ class NDofPeriodicSolution(SymPyPrintable):
         tau : Symbol, optional
             Symbol of the phase ``tau = omega*t`` in the result (default ``tau``).
         """
+        return sp.Matrix([sp.expand(s.removeO()) for s in self.solution_series(order, tau)])
+
+    def solution_series(self, order: int | None = None, tau: sp.Symbol = TAU) -> tuple[EpsSeries, ...]:
+        """``q_i(tau) = sum_k eps**k q_ik(tau) + O(eps**(order+1))``, one :class:`EpsSeries` per coordinate.
+
+        Parameters
+        ----------
+        order : int, optional
+            Highest power of ``eps`` kept (default: all, ``self.order``).
+        tau : Symbol
+            The phase variable ``tau = omega*t``.
+        """
         n = self.order if order is None else int(order)
         if n < 0 or n > self.order:
             raise ParameterError(f"solution is known to order {self.order}; asked for {order}")
         A0 = self.generating_amplitude
         out = []
         for i in range(self.n):
-            e = sp.Integer(0)
+            cs_k = []
             for k in range(n + 1):
                 cs, ss = self._coords[k][i]
-                for h, (c, s) in enumerate(zip(cs, ss, strict=True)):
-                    if c != 0:
-                        e += A0 * c * self.eps_symbol**k * sp.cos(h * tau)
-                    if s != 0:
-                        e += A0 * s * self.eps_symbol**k * sp.sin(h * tau)
-            out.append(e)
-        return sp.Matrix(out)
+                terms = [A0 * c * sp.cos(h * tau) for h, c in enumerate(cs) if c != 0]
+                terms += [A0 * s * sp.sin(h * tau) for h, s in enumerate(ss) if s != 0]
+                cs_k.append(sp.Add(*terms))
+            out.append(EpsSeries(tuple(cs_k), self.eps_symbol, n, name=str(self.q[i])))
+        return tuple(out)
+
+    def series_expression(self) -> tuple[EpsSeries, ...]:
+        """The coordinates ``q(tau)`` with their order terms (:meth:`solution_series`)."""
+        return self.solution_series()
+
+    def _pretty_items(self) -> list:
+        return [(sp.Symbol("omega"), self.frequency)]
 
     def initial_state(self, eps: float, order: int | None = None) -> np.ndarray:
         """``(q(0), q'(0))`` of the truncated series (the phase where ``eta_m' = 0``).
