@@ -1,0 +1,20 @@
+"""Numerical continuation of periodic solutions: harmonic balance, shooting, collocation, stability, bifurcations."""
+
+from .branch import Bifurcation, Branch, PeriodicSolution
+from .follow import continue_periodic, switch_branch
+from .harmonic_balance import HarmonicBalance, harmonic_balance
+from .shooting import Shooting, shooting
+from .stability import orbit_multipliers
+
+__all__ = [
+    "Bifurcation",
+    "Branch",
+    "HarmonicBalance",
+    "PeriodicSolution",
+    "Shooting",
+    "continue_periodic",
+    "harmonic_balance",
+    "orbit_multipliers",
+    "shooting",
+    "switch_branch",
+]
