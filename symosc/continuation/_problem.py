@@ -41,6 +41,10 @@ class Formulation:
         """``G``, ``G_u`` (dense ndarray or sparse matrix) and ``G_p`` (dense, one column per parameter)."""
         raise NotImplementedError
 
+    def weights(self, u: np.ndarray) -> np.ndarray:
+        """Weights of the unknowns in the arclength inner product."""
+        return np.ones(len(u))
+
     def begin_step(self, u: np.ndarray) -> None:
         """Called with the last accepted point before each corrector (reference of the phase condition)."""
 

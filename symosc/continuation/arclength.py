@@ -59,7 +59,9 @@ def bordered(J: Any, Gl: np.ndarray, row: np.ndarray) -> Any:
         return A
     import scipy.sparse as sps
 
-    return sps.bmat([[J, sps.csc_matrix(Gl.reshape(-1, 1))], [sps.csc_matrix(row.reshape(1, -1)), None]]).tocsc()
+    return sps.bmat(
+        [[J, sps.csc_matrix(Gl.reshape(-1, 1))], [sps.csc_matrix(row[:-1].reshape(1, -1)), sps.csc_matrix([[row[-1]]])]]
+    ).tocsc()
 
 
 class LinearSystem:
@@ -127,7 +129,12 @@ def tangent(
     rhs = np.zeros(len(X))
     rhs[-1] = 1.0
     t = ls.solve(rhs)
-    return t / np.linalg.norm(t), ls
+    return t / np.sqrt(t @ (weights(prob, X) * t)), ls
+
+
+def weights(prob: Formulation, X: np.ndarray) -> np.ndarray:
+    """Weights of the arclength inner product (the formulation's for u, 1 for the parameter)."""
+    return np.append(prob.weights(X[:-1]), 1.0)
 
 
 def correct(
@@ -141,7 +148,8 @@ def correct(
     opt: Options,
     last: list | None = None,
 ) -> tuple[np.ndarray, int]:
-    """Newton's method on ``G = 0, t . (X - X0) = s`` from ``Xp``; returns the point and the iterations used.
+    """Newton's method on ``G = 0, t . (X - X0) = s`` from ``Xp`` (``t``: the weighted tangent, a row of the
+    bordered matrix); returns the point and the iterations used.
 
     ``last`` (a list) receives the Jacobian of the last iteration, evaluated within the tolerance of the point."""
     X = Xp.copy()
@@ -195,7 +203,7 @@ def run(
         row[-1] = direction
         t, ls = tangent(prob, X, p, k, row)
     else:
-        t, ls = tangent(prob, X, p, k, t0)
+        t, ls = tangent(prob, X, p, k, weights(prob, X) * t0)
     data = point_data(prob, X, p, k, opt)
     _append(out, X, t, data, prob)
     state = tests.initial(prob, X, t, ls, data) if tests else None
@@ -204,9 +212,10 @@ def run(
         prob.begin_step(X[:-1])
         try:
             jac: list = []
-            Xn, its = correct(prob, X + ds * t, p, k, t, X, ds, opt, jac)
-            tn, lsn = tangent(prob, Xn, p, k, t, jac[0] if jac else None)
-            if tn @ t < np.cos(opt.max_angle) and ds > opt.min_step:
+            Wt = weights(prob, X) * t
+            Xn, its = correct(prob, X + ds * t, p, k, Wt, X, ds, opt, jac)
+            tn, lsn = tangent(prob, Xn, p, k, Wt, jac[0] if jac else None)
+            if tn @ Wt < np.cos(opt.max_angle) and ds > opt.min_step:
                 raise ConvergenceError("the tangent turned too much")
         except ConvergenceError:
             ds *= 0.5
@@ -220,7 +229,7 @@ def run(
             frac = (edge - X[-1]) / (Xn[-1] - X[-1]) if Xn[-1] != X[-1] else 0.0
             try:
                 Xe, _ = correct_at_parameter(prob, X + frac * (Xn - X), p, k, edge, opt)
-                te, lse = tangent(prob, Xe, p, k, t)
+                te, lse = tangent(prob, Xe, p, k, weights(prob, Xe) * t)
                 de = point_data(prob, Xe, p, k, opt)
                 if tests:
                     tests.check(prob, X, t, Xe, te, lse, de, ds, state, out, p, k, opt)
@@ -237,8 +246,9 @@ def run(
             prob = new
             prob.begin_step(X[:-1])
             t = np.append(transfer(t[:-1]), t[-1])
-            X, _ = correct(prob, X, p, k, t, X, 0.0, opt)
-            t, ls = tangent(prob, X, p, k, t)
+            Wt = weights(prob, X) * t
+            X, _ = correct(prob, X, p, k, Wt, X, 0.0, opt)
+            t, ls = tangent(prob, X, p, k, Wt)
             out.formulation = prob
             if tests:
                 state = tests.initial(prob, X, t, ls, point_data(prob, X, p, k, opt))

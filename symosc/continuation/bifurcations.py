@@ -72,16 +72,13 @@ class Tests:
             a, b = state.get(kind, np.nan), new[kind]
             if not (np.isfinite(a) and np.isfinite(b)) or np.sign(a) == np.sign(b) or a == 0:
                 continue
-            s1 = float(t0 @ (X1 - X0))
+            Wt = _arc.weights(prob, X0) * t0
+            s1 = float(Wt @ (X1 - X0))
             bif = locate(kind, prob, X0, t0, s1, a, b, p, k, opt, index=len(out.X) - 1)
             if bif is not None:
-                found.append((float(t0 @ (_state(bif) - X0)) if bif.state is not None else 0.0, bif))
+                found.append((float(Wt @ (bif.state - X0)), bif))
         out.bifurcations.extend(b for _, b in sorted(found, key=lambda item: item[0]))
         return new
-
-
-def _state(b: Bifurcation) -> np.ndarray:
-    return b.state
 
 
 def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcation | None:
@@ -89,11 +86,12 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
     from scipy.optimize import brentq
 
     cache: dict[float, tuple] = {}
+    Wt = _arc.weights(prob, X0) * t0
 
     def at(s: float) -> tuple:
         if s not in cache:
-            X, _ = _arc.correct(prob, X0 + s * t0, p, k, t0, X0, s, opt)
-            t, ls = _arc.tangent(prob, X, p, k, t0)
+            X, _ = _arc.correct(prob, X0 + s * t0, p, k, Wt, X0, s, opt)
+            t, ls = _arc.tangent(prob, X, p, k, Wt)
             data = _arc.point_data(prob, X, p, k, opt) if kind in _MULTIPLIER_KINDS else None
             rho = data.multipliers if data is not None else np.array([])
             cache[s] = (X, t, ls, data, test_values(kind, t, ls, rho, prob.autonomous))

@@ -147,18 +147,7 @@ def _kinds(detect: Any, stability: bool) -> tuple[str, ...]:
 
 def _start(prob: Any, start: Any, p: np.ndarray) -> tuple[np.ndarray, Any]:
     """Converged unknowns at the start point (growing the truncation when adaptive)."""
-    from .harmonic_balance import newton
-
-    u = prob._initial(start, None)
-    while True:
-        prob.begin_step(u)
-        u = newton(prob, u, p)
-        data = prob.point(u, p, stability=False)
-        refined = prob.adapt(u, p, data)
-        if refined is None:
-            return u, prob
-        new, transfer = refined
-        u, prob = transfer(u), new
+    return prob.converge(start)
 
 
 def _branch(raw: _arc.Raw, problem: Any, k: int, p: np.ndarray, name: str | None = None) -> Branch:
@@ -267,6 +256,7 @@ def switch_branch(
     direction = check_choice("direction", direction, (1, -1))
     k = problem.model.param_index(branch.name)
     lo, hi = (float(branch.parameter.min()), float(branch.parameter.max())) if span is None else _check_span(span)
+    lo, hi = min(lo, hi), max(lo, hi)
     p = problem.values.copy()
     for name, val in branch.values.items():
         p[problem.model.param_index(name)] = val
@@ -285,9 +275,10 @@ def switch_branch(
     opt = _arc.Options(min(step, max_step), length * 1e-8, max_step, check_int("max_points", max_points, minimum=2))
     opt.stability = check_bool("stability", stability)
     ds = opt.step
+    Ww = _arc.weights(prob, X) * w
     for _ in range(12):
         try:
-            X1, _ = _arc.correct(prob, X + ds * w, p, k, w, X, ds, opt)
+            X1, _ = _arc.correct(prob, X + ds * w, p, k, Ww, X, ds, opt)
             break
         except ConvergenceError:
             ds /= 2

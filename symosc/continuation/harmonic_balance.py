@@ -330,29 +330,51 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         >>> round(sol.amplitude, 6), sol.harmonics >= 3, sol.residual < 1e-9
         (0.440461, True, True)
         """
-        from .branch import PeriodicSolution  # noqa: F401 - the result type
-
         check_int("max_iterations", max_iterations, minimum=1)
         prob = self.with_values(values) if values else self
-        p = prob.values
-        u0 = prob._initial(guess, frequency)
-        while True:
-            prob.begin_step(u0)
-            u = newton(prob, u0, p, max_iterations=max_iterations)
-            data = prob.point(u, p)
-            refined = prob.adapt(u, p, data)
-            if refined is None:
-                break
-            new, transfer = refined
-            u0 = transfer(u)
-            prob = new
+        u, prob = prob.converge(guess, frequency, max_iterations=max_iterations)
+        data = prob.point(u, prob.values)
         if data.residual > prob.tol:
             raise ConvergenceError(
                 f"harmonic balance with {prob.harmonics} harmonics reaches a relative residual {data.residual:.2e} "
                 f"> tol={prob.tol:g}; pass harmonics=None (adaptive) or more harmonics",
                 achieved=data.residual,
             )
-        return solution_from(prob, u, p, data)
+        return solution_from(prob, u, prob.values, data)
+
+    def converge(
+        self, guess: Any, frequency: float | None = None, *, max_iterations: int = 50
+    ) -> tuple[np.ndarray, HarmonicBalance]:
+        """Converged unknowns at the problem's values and the (possibly refined) problem."""
+        p = self.values
+        if guess is None and self.autonomous:  # avoid the trivial solution: try amplitudes until a cycle is found
+            last: Exception | None = None
+            frequency = _linear_frequency(self) if frequency is None else frequency
+            for amp in (1.0, 2.0, 0.5, 4.0, 0.25, 8.0, 0.1, 20.0):
+                c = np.zeros((self.model.n, 3))
+                c[0, 1] = amp
+                try:
+                    u, prob = self.converge(c, frequency, max_iterations=max_iterations)
+                except ConvergenceError as exc:
+                    last = exc
+                    continue
+                if np.max(np.abs(prob.coefficients_of(u)[:, 1:])) > 1e-8:
+                    return u, prob
+            raise ConvergenceError(
+                "harmonic balance found no nontrivial periodic solution from first-harmonic guesses of amplitude "
+                f"0.1 to 20 ({last}); give a guess"
+            )
+        prob = self
+        u0 = prob._initial(guess, frequency)
+        while True:
+            prob.begin_step(u0)
+            u = newton(prob, u0, p, max_iterations=max_iterations)
+            data = prob.point(u, p, stability=False)
+            refined = prob.adapt(u, p, data)
+            if refined is None:
+                return u, prob
+            prob, transfer = refined
+            u0 = transfer(u)
 
     def _initial(self, guess: Any, frequency: float | None) -> np.ndarray:
         from .branch import PeriodicSolution

@@ -190,14 +190,20 @@ class Shooting(Formulation, SymPyPrintable):
         -------
         PeriodicSolution
         """
-        from .harmonic_balance import newton, solution_from
+        from .harmonic_balance import solution_from
 
         check_int("max_iterations", max_iterations, minimum=1)
         prob = self.with_values(values) if values else self
-        u0 = prob._initial(guess, None)
-        prob.begin_step(u0)
-        u = newton(prob, u0, prob.values, max_iterations=max_iterations, tol=1e-11)
+        u, prob = prob.converge(guess, max_iterations=max_iterations)
         return solution_from(prob, u, prob.values, prob.point(u, prob.values))
+
+    def converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
+        """Converged unknowns at the problem's values (and the problem)."""
+        from .harmonic_balance import newton
+
+        u0 = self._initial(guess, frequency)
+        self.begin_step(u0)
+        return newton(self, u0, self.values, max_iterations=max_iterations, tol=1e-11), self
 
 
 def _dense_maxima(interp: Any, T: float, n: int) -> np.ndarray:
