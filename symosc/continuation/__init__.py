@@ -2,6 +2,7 @@
 
 from .collocation import Collocation, collocation
 from .branch import Bifurcation, Branch, PeriodicSolution
+from .folds import FoldCurve, continue_fold
 from .follow import continue_periodic, switch_branch
 from .harmonic_balance import HarmonicBalance, harmonic_balance
 from .shooting import Shooting, shooting
@@ -11,10 +12,12 @@ __all__ = [
     "Bifurcation",
     "Branch",
     "Collocation",
+    "FoldCurve",
     "HarmonicBalance",
     "PeriodicSolution",
     "Shooting",
     "collocation",
+    "continue_fold",
     "continue_periodic",
     "harmonic_balance",
     "orbit_multipliers",

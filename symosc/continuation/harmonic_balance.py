@@ -275,8 +275,15 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         )
 
     def adapt(self, u: np.ndarray, p: np.ndarray, data: PointData):
-        if not self.adaptive or data.residual <= self.tol:
+        if data.residual <= self.tol:
             return None
+        if not self.adaptive:
+            where = ", ".join(f"{s.name}={v:.8g}" for s, v in zip(self.model.params, p, strict=True))
+            raise ConvergenceError(
+                f"harmonic balance with harmonics={self.harmonics} reaches a relative residual {data.residual:.2e} "
+                f"> tol={self.tol:g} at {where}; pass harmonics=None (adaptive), more harmonics or a larger tol",
+                achieved=data.residual,
+            )
         H = self.harmonics
         if H >= _MAX_HARMONICS:
             raise ConvergenceError(

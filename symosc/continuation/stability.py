@@ -40,8 +40,30 @@ def _integrated_monodromy(
     return sol.y[d:, -1].reshape(d, d)
 
 
+def _series_monodromy(model: Any, p: np.ndarray, solution: Any, rtol: float) -> np.ndarray:
+    """``X(T)`` of ``x' = A(t) x`` with A the Jacobian along the solution's Fourier series (symosc.periodic)."""
+    from ..periodic import monodromy
+    from . import _fourier
+
+    f = model.first_order(p)
+    c, om = solution.coefficients, solution.frequency
+    dc = _fourier.derivative(c)
+
+    def A(tt: float) -> np.ndarray:
+        y = np.concatenate([_fourier.evaluate(c, [om * tt])[0], _fourier.evaluate(dc, [om * tt])[0] * om])
+        return f.all(tt, y)[1]
+
+    return monodromy(A, solution.period, rtol=rtol, atol=rtol * 1e-2, reversor=None, check_periodic=False).monodromy
+
+
 def orbit_multipliers(
-    problem: Any, solution: Any, *, method: str = "monodromy", rtol: float = 1e-12, harmonics: int | None = None
+    problem: Any,
+    solution: Any,
+    *,
+    method: str = "monodromy",
+    along: str = "integrated",
+    rtol: float = 1e-12,
+    harmonics: int | None = None,
 ) -> np.ndarray:
     """Floquet multipliers of a periodic solution, by the monodromy matrix or by Hill's method.
 
@@ -52,9 +74,13 @@ def orbit_multipliers(
     solution : PeriodicSolution
         The solution (from ``problem.solve`` or ``Branch.solution``).
     method : {"monodromy", "hill"}
-        ``"monodromy"``: integrate the orbit through the solution's initial state over one period together with the
-        variational equations (compiled right-hand side and Jacobian).  ``"hill"``: eigenvalues of Hill's matrix
-        (harmonic-balance solutions only).
+        ``"monodromy"``: integrate the variational equations over one period (compiled Jacobian).  ``"hill"``:
+        eigenvalues of Hill's matrix (harmonic-balance solutions only).
+    along : {"integrated", "series"}
+        Monodromy only: along the orbit integrated from the solution's initial state together with the variational
+        equations (the exact orbit's multipliers), or along the solution's own Fourier series
+        (:func:`symosc.periodic.monodromy` of ``A(t)``: the same linear periodic system as Hill's method, so that
+        the two stability computations can be compared independently of the truncation of the orbit).
     rtol : float
         Relative tolerance of the integration (monodromy).
     harmonics : int, optional
@@ -89,10 +115,16 @@ def orbit_multipliers(
     if not isinstance(solution, PeriodicSolution):
         raise ParameterError(f"solution must be a PeriodicSolution, got {type(solution).__name__}")
     check_choice("method", method, ("monodromy", "hill"))
+    check_choice("along", along, ("integrated", "series"))
     rtol = check_positive("rtol", rtol)
     p = problem.with_values(solution.values).values
     if method == "monodromy":
-        M = _integrated_monodromy(problem.model, p, solution.initial_state, solution.period, rtol=rtol)
+        if along == "series":
+            if solution.coefficients is None:
+                raise ParameterError("along='series' needs a harmonic-balance solution (Fourier coefficients)")
+            M = _series_monodromy(problem.model, p, solution, rtol)
+        else:
+            M = _integrated_monodromy(problem.model, p, solution.initial_state, solution.period, rtol=rtol)
         rho = np.linalg.eigvals(M)
         return rho[np.lexsort((-rho.imag, -np.abs(rho)))]
     if problem.method != "harmonic balance" or solution.coefficients is None:
