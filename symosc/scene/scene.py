@@ -16,6 +16,7 @@ from ._log import DerivationLog
 from ._models import build_model
 from ._parse import Ctx
 from ._questions import Question, QuestionSpec
+from ._questions_continuation import SPEC as _CONTINUATION
 from ._result import SceneResult
 
 __all__ = ["QUESTIONS", "Scene", "load", "loads"]
@@ -202,6 +203,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
             },
             oq.identify,
         ),
+        _CONTINUATION,
     )
 }
 
@@ -213,6 +215,7 @@ _REQUIRED = {
     "lindstedt": ("order",),
     "resonance_curve": ("frequency_range",),
     "identify": ("record", "n_modes"),
+    "continuation": ("range",),
 }
 
 
