@@ -101,7 +101,8 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         vals = ", ".join(f"{s.name}={v:g}" for s, v in zip(self.parameters, self.values, strict=True) if np.isfinite(v))
         H = f"H={self.harmonics}{' (adaptive)' if self.adaptive else ''}"
         how = "exact convolution" if self.exact else "oversampled AFT"
-        return f"HarmonicBalance({self.equations}; {kind}; {H}, {self.samples} samples, {how}; {vals})"
+        vals = f"; {vals}" if vals else ""
+        return f"HarmonicBalance({self.equations}; {kind}; {H}, {self.samples} samples, {how}{vals})"
 
     def with_values(self, values: Mapping[Any, Any]) -> HarmonicBalance:
         """A copy with some parameter values changed."""
