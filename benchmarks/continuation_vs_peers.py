@@ -47,8 +47,15 @@ def duffing() -> None:
     diffs = []
     for f in folds:
         start = br.parameter[f.index]
-        brs = continue_periodic(sh, w, (start, start + 0.02 * np.sign(f.parameter - start)),
-                                start=br.solution(f.index), step=0.002, max_step=0.004, detect=["fold"])  # fmt: skip
+        brs = continue_periodic(
+            sh,
+            w,
+            (start, start + 0.02 * np.sign(f.parameter - start)),
+            start=br.solution(f.index),
+            step=0.002,
+            max_step=0.004,
+            detect=["fold"],
+        )
         diffs.append(abs(brs.of_kind("fold")[0].parameter - f.parameter))
     peer = time.perf_counter() - t0
     inside = int(np.sum(br.parameter <= 3.0))
@@ -100,8 +107,12 @@ def van_der_pol() -> None:
     t0 = time.perf_counter()
     T_ref = long_period(10.0)
     peer = time.perf_counter() - t0
-    row(f"van der Pol eps 0.01->10 (shooting, {len(br)} points), T(10) = {T_ours:.12f}", ours, peer,
-        f"vs 200-period Radau: {abs(T_ours - T_ref):.1e}")  # fmt: skip
+    row(
+        f"van der Pol eps 0.01->10 (shooting, {len(br)} points), T(10) = {T_ours:.12f}",
+        ours,
+        peer,
+        f"vs 200-period Radau: {abs(T_ours - T_ref):.1e}",
+    )
     # collocation at eps = 10 from the shooting orbit, and scipy's solve_bvp on the same orbit
     sol = br.solution(len(br) - 1)
     t0 = time.perf_counter()
@@ -110,8 +121,15 @@ def van_der_pol() -> None:
     t0 = time.perf_counter()
     T0 = sol.period
     s = np.linspace(0, 1, 400)
-    y_guess = solve_ivp(lambda tt, y: [y[1], 10 * (1 - y[0] ** 2) * y[1] - y[0]], (0, T0), sol.initial_state,
-                        method="Radau", rtol=1e-10, atol=1e-12, dense_output=True).sol(s * T0)  # fmt: skip
+    y_guess = solve_ivp(
+        lambda tt, y: [y[1], 10 * (1 - y[0] ** 2) * y[1] - y[0]],
+        (0, T0),
+        sol.initial_state,
+        method="Radau",
+        rtol=1e-10,
+        atol=1e-12,
+        dense_output=True,
+    ).sol(s * T0)
 
     def fb(ss, y, p):
         return p[0] * np.vstack([y[1], 10 * (1 - y[0] ** 2) * y[1] - y[0]])
@@ -121,8 +139,12 @@ def van_der_pol() -> None:
 
     bvp = solve_bvp(fb, bc, s, y_guess, p=[T0], tol=1e-9, max_nodes=200000)
     peer = time.perf_counter() - t0
-    row(f"van der Pol eps=10: collocation ({co.size} intervals) vs scipy solve_bvp ({len(bvp.x)} nodes)", ours, peer,
-        f"T: {abs(co.period - T_ours):.1e} (coll-shoot), {abs(bvp.p[0] - T_ours):.1e} (solve_bvp-shoot)")  # fmt: skip
+    row(
+        f"van der Pol eps=10: collocation ({co.size} intervals) vs scipy solve_bvp ({len(bvp.x)} nodes)",
+        ours,
+        peer,
+        f"T: {abs(co.period - T_ours):.1e} (coll-shoot), {abs(bvp.p[0] - T_ours):.1e} (solve_bvp-shoot)",
+    )
     # the order-20 series at small eps
     from symosc.nonlinear import limit_cycle
 
@@ -162,9 +184,13 @@ def pendulum() -> None:
     one = solve_ivp(f, (0, T), y0, method="DOP853", rtol=1e-12, atol=1e-13).y[:, -1]
     two = solve_ivp(f, (0, 2 * T), y0, method="DOP853", rtol=1e-12, atol=1e-13).y[:, -1]
     peer = time.perf_counter() - t0
-    row(f"forced pendulum: pitchfork F={bp.parameter:.10f}, period doubling F={pd.parameter:.10f}", ours, peer,
+    row(
+        f"forced pendulum: pitchfork F={bp.parameter:.10f}, period doubling F={pd.parameter:.10f}",
+        ours,
+        peer,
         f"min|rho+1| by simulation {np.min(np.abs(rho + 1)):.1e}; doubled orbit |y(2T)-y0| "
-        f"{np.linalg.norm(two - y0):.0e}, |y(T)-y0| {np.linalg.norm(one - y0):.1e}")  # fmt: skip
+        f"{np.linalg.norm(two - y0):.0e}, |y(T)-y0| {np.linalg.norm(one - y0):.1e}",
+    )
 
 
 def main() -> None:

@@ -1,7 +1,7 @@
 """Numerical continuation of periodic solutions: harmonic balance, shooting, collocation, stability, bifurcations."""
 
-from .collocation import Collocation, collocation
 from .branch import Bifurcation, Branch, PeriodicSolution
+from .collocation import Collocation, collocation
 from .folds import FoldCurve, continue_fold
 from .follow import continue_periodic, switch_branch
 from .harmonic_balance import HarmonicBalance, harmonic_balance

@@ -184,7 +184,8 @@ class PeriodicModel:
             if n > 3:
                 raise ModelError(
                     "shooting, collocation and the monodromy matrix need the explicit form M^-1 F, formed "
-                    f"symbolically for at most 3 coordinates (this model has {n}); use harmonic balance with Hill's method"
+                    f"symbolically for at most 3 coordinates (this model has {n}); "
+                    "use harmonic balance with Hill's method"
                 )
             acc = self.M.LUsolve(self.F)
         return sp.Matrix(list(self.qd)).col_join(sp.Matrix(acc))

@@ -110,7 +110,7 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
     except (ConvergenceError, RuntimeError, ValueError):
         located, s = False, s1 * f0 / (f0 - f1) if f0 != f1 else 0.5 * s1
     try:
-        X, t, ls, data, value = at(s)
+        X, t, _, data, value = at(s)
     except ConvergenceError:
         return None
     if data is None:
@@ -147,7 +147,7 @@ def kernel_direction(prob: Any, X: np.ndarray, p: np.ndarray, k: int, old: np.nd
     _, J, Gl = _arc.evaluate_full(prob, X, p, k)
     J = J.toarray() if hasattr(J, "toarray") else J
     A = np.hstack([J, Gl.reshape(-1, 1)])
-    _, sv, Vh = sla.svd(A)
+    _, _, Vh = sla.svd(A)
     V = Vh[-2:].T  # the two right singular vectors of the smallest singular values (A is n x (n+1))
     old = old / np.linalg.norm(old)
     # remove the old tangent's projection from the kernel; what is left is the new branch's direction

@@ -335,8 +335,13 @@ class Branch(SymPyPrintable):
             ax.plot([b.parameter], [yb], "o", mfc="none", color="k")
             ax.annotate(_SHORT[b.kind], (b.parameter, yb), textcoords="offset points", xytext=(4, 4), fontsize=8)
         ax.set_xlabel(self.name)
-        ax.set_ylabel({"amplitude": f"max |{self.coordinates[0] if self.coordinates else 'q'}|",
-                       "frequency": "angular frequency (rad/s)", "period": "period (s)"}[y])  # fmt: skip
+        ax.set_ylabel(
+            {
+                "amplitude": f"max |{self.coordinates[0] if self.coordinates else 'q'}|",
+                "frequency": "angular frequency (rad/s)",
+                "period": "period (s)",
+            }[y]
+        )
         ax.set_title(f"{self.method}: solid stable, dashed unstable")
         return ax
 

@@ -166,8 +166,10 @@ class Collocation(Formulation, SymPyPrintable):
         rows, cols, vals = self._pattern(h, a, b)
         vals_sy = (-T * A).ravel()
         eye = np.eye(d)
-        vals_sk = (np.eye(m)[None, :, None, :, None] * eye[None, None, :, None, :]
-                   - T * h[:, None, None, None, None] * a[None, :, None, :, None] * A[:, :, :, None, :]).ravel()  # fmt: skip
+        vals_sk = (
+            np.eye(m)[None, :, None, :, None] * eye[None, None, :, None, :]
+            - T * h[:, None, None, None, None] * a[None, :, None, :, None] * A[:, :, :, None, :]
+        ).ravel()
         data = np.concatenate([vals_sy, vals_sk, vals])
         nrow = N * m * d + N * d
         ncol = N * d * (1 + m)
@@ -409,8 +411,9 @@ def _sample_solution(prob: Any, sol: Any, tt: np.ndarray) -> tuple[np.ndarray, n
 
     p = prob.with_values(sol.values).values
     f = prob.model.first_order(p)
-    res = solve_ivp(f.rhs, (0.0, sol.period), sol.initial_state, method="DOP853", rtol=1e-11, atol=1e-13,
-                    dense_output=True)  # fmt: skip
+    res = solve_ivp(
+        f.rhs, (0.0, sol.period), sol.initial_state, method="DOP853", rtol=1e-11, atol=1e-13, dense_output=True
+    )
     y = res.sol(np.clip(tt, 0.0, sol.period)).T
     dy = f.all(tt, y)[0]
     return y, dy[:, : 2 * n]

@@ -183,11 +183,11 @@ def continue_fold(
     >>> from symosc.continuation import harmonic_balance, continue_periodic, continue_fold
     >>> x, v, t, w, F = sp.symbols("x v t w F")
     >>> hb = harmonic_balance(-0.1 * v - x - 0.5 * x**3 + F * sp.cos(w * t), x, v, t, forcing_frequency=w,
-    ...                       values={"F": 0.3}, harmonics=5)
+    ...                       values={"F": 0.3})
     >>> br = continue_periodic(hb, w, (0.6, 2.0), detect=["fold"])
     >>> curve = continue_fold(hb, br, br.bifurcations[0], F, (0.01, 0.3), max_step=0.01)
     >>> [tuple(round(c, 3) for c in cusp) for cusp in curve.cusps]      # (F, w) of the cusp
-    [(0.07, 1.101)]
+    [(0.073, 1.09)]
     """
     if not isinstance(problem, Formulation) or problem.method == "collocation":
         raise ParameterError("problem must be a HarmonicBalance or Shooting problem (dense Jacobian)")
@@ -212,7 +212,7 @@ def continue_fold(
     q[k] = lam
     base.begin_step(u)
     _, J, _ = base.evaluate(u, q)
-    U_, s_, Vh = np.linalg.svd(J)
+    U_, _, Vh = np.linalg.svd(J)
     system = _FoldSystem(base, k, U_[:, -1], Vh[-1])
     length = hi - lo
     step = length / 200 if step is None else check_positive("step", step)

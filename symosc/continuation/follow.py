@@ -106,11 +106,10 @@ def continue_periodic(
     >>> import sympy as sp
     >>> from symosc.continuation import harmonic_balance, continue_periodic
     >>> x, v, t, w = sp.symbols("x v t w")
-    >>> hb = harmonic_balance(-0.1 * v - x - 0.5 * x**3 + 0.3 * sp.cos(w * t), x, v, t, forcing_frequency=w,
-    ...                       harmonics=5)
+    >>> hb = harmonic_balance(-0.1 * v - x - 0.5 * x**3 + 0.3 * sp.cos(w * t), x, v, t, forcing_frequency=w)
     >>> br = continue_periodic(hb, w, (0.6, 2.0))
     >>> [(b.kind, round(b.parameter, 4)) for b in br.bifurcations]
-    [('fold', 1.6227), ('fold', 1.2385)]
+    [('fold', 1.5556), ('fold', 1.2616)]
     >>> bool(br.stable[0]), bool(br.stable[-1])
     (True, True)
     """
@@ -128,8 +127,17 @@ def continue_periodic(
     prob = problem.with_values({problem.model.params[k]: lo})
     p = prob.values.copy()
     u0, prob = _start(prob, start, p)
-    raw = _arc.run(prob, k, p, u0, lo, (min(lo, hi), max(lo, hi)), opt, Tests(kinds) if kinds else None,
-                   direction=1.0 if hi > lo else -1.0)
+    raw = _arc.run(
+        prob,
+        k,
+        p,
+        u0,
+        lo,
+        (min(lo, hi), max(lo, hi)),
+        opt,
+        Tests(kinds) if kinds else None,
+        direction=1.0 if hi > lo else -1.0,
+    )
     return _branch(raw, problem, k, p)
 
 
@@ -240,8 +248,7 @@ def switch_branch(
     >>> import sympy as sp
     >>> from symosc.continuation import harmonic_balance, continue_periodic, switch_branch
     >>> x, v, t, w = sp.symbols("x v t w")
-    >>> hb = harmonic_balance(-0.1 * v - x - 0.5 * x**3 + 0.3 * sp.cos(w * t), x, v, t, forcing_frequency=w,
-    ...                       harmonics=5)
+    >>> hb = harmonic_balance(-0.1 * v - x - 0.5 * x**3 + 0.3 * sp.cos(w * t), x, v, t, forcing_frequency=w)
     >>> br = continue_periodic(hb, w, (0.6, 2.0), detect=["branch_point"])
     >>> br.bifurcations
     []

@@ -107,8 +107,9 @@ class Shooting(Formulation, SymPyPrintable):
             return np.concatenate([fy, (A @ X).ravel(), (A @ S + fp).ravel()])
 
         z0 = np.concatenate([y0, np.eye(d).ravel(), np.zeros(d * npar)])
-        sol = solve_ivp(rhs, (0.0, T), z0, method=self.integrator, rtol=self.rtol, atol=self.rtol * 1e-2,
-                        dense_output=dense)  # fmt: skip
+        sol = solve_ivp(
+            rhs, (0.0, T), z0, method=self.integrator, rtol=self.rtol, atol=self.rtol * 1e-2, dense_output=dense
+        )
         if not sol.success:
             raise ConvergenceError(f"shooting: integration failed ({sol.message})")
         z = sol.y[:, -1]

@@ -111,7 +111,9 @@ def orbit_multipliers(
     from .branch import PeriodicSolution
 
     if not isinstance(problem, Formulation):
-        raise ParameterError(f"problem must be a HarmonicBalance, Shooting or Collocation, got {type(problem).__name__}")
+        raise ParameterError(
+            f"problem must be a HarmonicBalance, Shooting or Collocation, got {type(problem).__name__}"
+        )
     if not isinstance(solution, PeriodicSolution):
         raise ParameterError(f"solution must be a PeriodicSolution, got {type(solution).__name__}")
     check_choice("method", method, ("monodromy", "hill"))
@@ -133,7 +135,7 @@ def orbit_multipliers(
     prob = problem.at_size(H)
     if not problem.autonomous:
         ratio = solution.values[problem.model.forcing_frequency.name] / solution.frequency
-        m = int(round(ratio))
+        m = round(ratio)
         if m != prob.period_multiple:
             prob = prob.with_harmonics(H, period_multiple=m)
     u = prob.pack(solution.coefficients, solution.frequency if problem.autonomous else None)

@@ -16,8 +16,12 @@ from ._result import Figure, QuestionResult, Table
 
 __all__ = ["SPEC", "draw_branch"]
 
-_SHORT = {"fold": "fold (saddle-node)", "period_doubling": "period doubling", "neimark_sacker": "Neimark–Sacker",
-          "branch_point": "branch point"}  # fmt: skip
+_SHORT = {
+    "fold": "fold (saddle-node)",
+    "period_doubling": "period doubling",
+    "neimark_sacker": "Neimark–Sacker",
+    "branch_point": "branch point",
+}
 
 
 def _span(ctx: Any, value: Any, key: str) -> tuple[float, float]:
@@ -58,8 +62,7 @@ def _problem(q: Question):
             values["R"] = q.excitation["amplitude"]
         if q.excitation.get("frequency") is not None:
             values["nu"] = q.excitation["frequency"]
-        hb = harmonic_balance(acc, x, v, t, forcing_frequency=nu, values=values, harmonics=harmonics,
-                              tol=q.opts["tol"])  # fmt: skip
+        hb = harmonic_balance(acc, x, v, t, forcing_frequency=nu, values=values, harmonics=harmonics, tol=q.opts["tol"])
         return hb, q.opts.get("parameter") or "nu", x
     d = q.model.data
     eps = sp.Symbol("eps", positive=True)
@@ -74,28 +77,43 @@ def continuation(q: Question) -> QuestionResult:
     hb, name, _ = _problem(q)
     names = [s.name for s in hb.parameters]
     if name not in names:
-        raise q.fail(f"parameter {name!r} is not a parameter of this model", f"use one of {', '.join(names)}",
-                     "parameter")  # fmt: skip
-    missing = [s.name for s, val in zip(hb.parameters, hb.values, strict=True) if not np.isfinite(val) and s.name != name]
+        raise q.fail(
+            f"parameter {name!r} is not a parameter of this model", f"use one of {', '.join(names)}", "parameter"
+        )
+    missing = [
+        s.name for s, val in zip(hb.parameters, hb.values, strict=True) if not np.isfinite(val) and s.name != name
+    ]
     if missing:
         raise q.fail(f"missing values for {', '.join(missing)}", "give them in [parameters] or [excitation]")
     lo, hi = q.opts["range"]
     length = abs(hi - lo)
-    with q.log.step("harmonic balance + pseudo-arclength continuation",
-                    f"{name} from {lo:g} to {hi:g}, harmonics {'adaptive' if hb.adaptive else hb.harmonics}"):  # fmt: skip
-        br = continue_periodic(hb, name, (lo, hi), max_step=length / q.opts["points"] * 4,
-                               max_points=4 * q.opts["points"])  # fmt: skip
+    with q.log.step(
+        "harmonic balance + pseudo-arclength continuation",
+        f"{name} from {lo:g} to {hi:g}, harmonics {'adaptive' if hb.adaptive else hb.harmonics}",
+    ):
+        br = continue_periodic(
+            hb, name, (lo, hi), max_step=length / q.opts["points"] * 4, max_points=4 * q.opts["points"]
+        )
     rows = tuple(
-        (_SHORT[b.kind], f"{b.parameter:.10g}", f"{b.amplitude:.8g}", f"{b.frequency:.8g}",
-         ", ".join(f"{r:.4g}" for r in b.multipliers))  # fmt: skip
+        (
+            _SHORT[b.kind],
+            f"{b.parameter:.10g}",
+            f"{b.amplitude:.8g}",
+            f"{b.frequency:.8g}",
+            ", ".join(f"{r:.4g}" for r in b.multipliers),
+        )
         for b in br.bifurcations
     )
-    table = Table(("bifurcation", name, "amplitude", "frequency, rad/s", "Floquet multipliers"), rows,
-                  "Bifurcations located on the branch")  # fmt: skip
+    table = Table(
+        ("bifurcation", name, "amplitude", "frequency, rad/s", "Floquet multipliers"),
+        rows,
+        "Bifurcations located on the branch",
+    )
     lines = (
         f"{len(br)} points, {int(br.stable.sum())} stable; harmonics {int(br.size.min())}..{int(br.size.max())}; "
         f"largest relative residual {float(br.residual.max()):.1e}",
-        f"bifurcations: {', '.join(f'{_SHORT[b.kind]} at {name} = {b.parameter:.8g}' for b in br.bifurcations) or 'none'}",
+        "bifurcations: "
+        + (", ".join(f"{_SHORT[b.kind]} at {name} = {b.parameter:.8g}" for b in br.bifurcations) or "none"),
     )
     fig = Figure(
         f"{q.stem}-continuation.png",
@@ -103,14 +121,22 @@ def continuation(q: Question) -> QuestionResult:
         "branch",
         {
             "parameter": br.parameter.tolist(),
-            "y": {"amplitude": br.amplitude, "frequency": br.frequency,
-                  "period": 2 * np.pi / br.frequency}[q.opts["plot"]].tolist(),  # fmt: skip
+            "y": {"amplitude": br.amplitude, "frequency": br.frequency, "period": 2 * np.pi / br.frequency}[
+                q.opts["plot"]
+            ].tolist(),
             "stable": br.stable.tolist(),
             "name": name,
             "what": q.opts["plot"],
-            "marks": [(b.parameter, {"amplitude": b.amplitude, "frequency": b.frequency,
-                                     "period": 2 * np.pi / b.frequency}[q.opts["plot"]]) for b in br.bifurcations],
-        },  # fmt: skip
+            "marks": [
+                (
+                    b.parameter,
+                    {"amplitude": b.amplitude, "frequency": b.frequency, "period": 2 * np.pi / b.frequency}[
+                        q.opts["plot"]
+                    ],
+                )
+                for b in br.bifurcations
+            ],
+        },
     )
     data = {
         "parameter": name,
@@ -128,8 +154,9 @@ def draw_branch(ax: Any, *, parameter: list, y: list, stable: list, name: str, w
     start = 0
     for k in range(1, len(p) + 1):
         if k == len(p) or st[k] != st[start]:
-            ax.plot(p[start : min(k + 1, len(p))], yy[start : min(k + 1, len(p))], "-" if st[start] else "--",
-                    color="C0")  # fmt: skip
+            ax.plot(
+                p[start : min(k + 1, len(p))], yy[start : min(k + 1, len(p))], "-" if st[start] else "--", color="C0"
+            )
             start = k
     for a, b in marks:
         ax.plot([a], [b], "o", mfc="none", color="k")

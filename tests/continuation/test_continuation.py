@@ -50,12 +50,13 @@ def test_duffing_branch_has_two_folds_and_the_middle_part_unstable(duffing):
 
 
 def test_fold_agrees_with_shooting(duffing):
-    hb, br = duffing
+    _, br = duffing
     fold = br.of_kind("fold")[0]
     sh = shooting(DUFFING, x, v, t, forcing_frequency=w, values={"F": 0.3})
     start = br.parameter[fold.index]
-    brs = continue_periodic(sh, w, (start, start + 0.01), start=br.solution(fold.index), step=0.002,
-                            max_step=0.004, detect=["fold"])  # fmt: skip
+    brs = continue_periodic(
+        sh, w, (start, start + 0.01), start=br.solution(fold.index), step=0.002, max_step=0.004, detect=["fold"]
+    )
     (f2,) = brs.of_kind("fold")
     assert f2.parameter == pytest.approx(fold.parameter, abs=1e-8)
     assert f2.amplitude == pytest.approx(fold.amplitude, abs=1e-6)

@@ -28,8 +28,7 @@ VDP = eps * (1 - x**2) * v - x
 
 @pytest.fixture(scope="module")
 def duffing_hb():
-    return harmonic_balance(DUFFING, x, v, t, forcing_frequency=w, values={"F": 1.0, "w": 2.0}, harmonics=10,
-                             tol=1e-4)
+    return harmonic_balance(DUFFING, x, v, t, forcing_frequency=w, values={"F": 1.0, "w": 2.0}, harmonics=10, tol=1e-4)
 
 
 @pytest.fixture(scope="module")
@@ -78,13 +77,19 @@ def test_exact_convolution_equals_fine_quadrature(duffing_hb):
     zdd = -(np.cos(np.outer(tau, k)) @ (k**2 * a) + np.sin(np.outer(tau, k)) @ (k**2 * b))
     om = p[duffing_hb.model.param_index("w")]
     r = om**2 * zdd + 0.1 * om * zd + z + z**3 - np.cos(tau)
-    ref = np.concatenate([[r.mean()], np.ravel(np.column_stack([2 * np.cos(np.outer(tau, k)).T @ r / N,
-                                                                2 * np.sin(np.outer(tau, k)).T @ r / N]))])  # fmt: skip
+    ref = np.concatenate(
+        [
+            [r.mean()],
+            np.ravel(np.column_stack([2 * np.cos(np.outer(tau, k)).T @ r / N, 2 * np.sin(np.outer(tau, k)).T @ r / N])),
+        ]
+    )
     np.testing.assert_allclose(G, ref, atol=1e-12)
     # the Jacobian is the exact derivative of the residual (central differences agree to their own error)
     h = 1e-6
-    col = (duffing_hb.evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
-           - duffing_hb.evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]) / (2 * h)  # fmt: skip
+    col = (
+        duffing_hb.evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
+        - duffing_hb.evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]
+    ) / (2 * h)
     np.testing.assert_allclose(J[:, 3], col, atol=1e-7)
 
 
@@ -142,8 +147,9 @@ def test_lagrangian_two_degrees_of_freedom_agrees_with_shooting():
     k, W = sp.symbols("k W", positive=True)
     T = (dot(q1) ** 2 + dot(q2) ** 2) / 2
     V = q1**2 / 2 + q2**2 / 2 + k * (q1 - q2) ** 2 / 2 + q1**4 / 4
-    system = LagrangianSystem(T, V, [q1, q2], dissipation=0.05 * (dot(q1) ** 2 + dot(q2) ** 2),
-                              forces=[0.2 * sp.cos(W * tt), 0])  # fmt: skip
+    system = LagrangianSystem(
+        T, V, [q1, q2], dissipation=0.05 * (dot(q1) ** 2 + dot(q2) ** 2), forces=[0.2 * sp.cos(W * tt), 0]
+    )
     values = {"k": 0.5, "W": 1.3}
     sol = harmonic_balance(system, forcing_frequency=W, values=values, harmonics=9).solve()
     sh = shooting(system.first_order(), forcing_frequency=W, values=values).solve(sol)
