@@ -90,6 +90,10 @@ class PeriodicModel:
             params.add(forcing_frequency)
         self.params: tuple[sp.Symbol, ...] = sort_symbols(params)
 
+    def __getstate__(self) -> dict:
+        """Pickle the equations; the compiled functions are rebuilt on use (from the C build cache)."""
+        return {k: v for k, v in self.__dict__.items() if k not in ("_hb_cache", "first_order_function", "explicit")}
+
     # ------------------------------------------------------------------ values
     def values_vector(self, values: Mapping[Any, Any], *, skip: tuple[sp.Symbol, ...] = ()) -> np.ndarray:
         """Parameter values in the order of :attr:`params` (``skip``: symbols whose value may be missing -> nan)."""

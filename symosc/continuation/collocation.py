@@ -478,7 +478,8 @@ def collocation(
     >>> x, v, t, eps = sp.symbols("x v t eps")
     >>> a = eps * (1 - x**2) * v - x
     >>> guess = harmonic_balance(a, x, v, t, autonomous=True, values={"eps": 1.0}).solve()
-    >>> sol = collocation(a, x, v, t, autonomous=True, values={"eps": 1.0}).solve(guess)
+    >>> co = collocation(a, x, v, t, autonomous=True, values={"eps": 1.0})
+    >>> sol = co.solve(guess)
     >>> round(sol.period, 8)                                  # van der Pol, eps = 1
     6.66328686
     """

@@ -79,6 +79,13 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         self._ref: np.ndarray | None = None
         self._w = None if model.autonomous else model.param_index(model.forcing_frequency)
 
+    def __getstate__(self) -> dict:
+        return {k: v for k, v in self.__dict__.items() if k != "_raw"}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._raw = self.model.hb_function(self.period_multiple)[0].raw
+
     # ------------------------------------------------------------------ description
     @property
     def parameters(self) -> tuple[sp.Symbol, ...]:

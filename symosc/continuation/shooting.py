@@ -54,6 +54,9 @@ class Shooting(Formulation, SymPyPrintable):
         self._ref: np.ndarray | None = None
         self._cache: dict = {}
 
+    def __getstate__(self) -> dict:
+        return {k: (v if k != "_cache" else {}) for k, v in self.__dict__.items()}
+
     def __repr__(self) -> str:
         kind = "autonomous" if self.autonomous else f"forced by {self.model.forcing_frequency}"
         return f"Shooting({self.model.describe}; {kind}; {self.integrator}, rtol={self.rtol:g})"
