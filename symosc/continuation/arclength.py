@@ -85,6 +85,13 @@ class LinearSystem:
             return sla.lu_solve(self.lu, b, check_finite=False)
         return self.lu.solve(b)
 
+    def det_log(self) -> tuple[float, float]:
+        """Sign and log of the absolute value of the determinant."""
+        d = np.diag(self.lu[0]) if self.dense else self.lu.U.diagonal()
+        with np.errstate(divide="ignore"):
+            log = float(np.sum(np.log(np.abs(d))))
+        return self.det_sign(), log
+
     def det_sign(self) -> float:
         if self.dense:
             lu, piv = self.lu

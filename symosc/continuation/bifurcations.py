@@ -85,8 +85,17 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
     """Zero of the test function ``kind`` between arclength 0 (value f0) and s1 (value f1) from ``X0``."""
     from scipy.optimize import brentq
 
+    import dataclasses
+
+    # near a branch point the corrector's matrix is nearly singular and Newton's method converges only linearly
+    opt = dataclasses.replace(opt, max_newton=60)
     cache: dict[float, tuple] = {}
     Wt = _arc.weights(prob, X0) * t0
+    log0 = None
+    if kind == "branch_point":  # a continuous test function for Brent: det scaled by its size at the start
+        log0 = _arc.tangent(prob, X0, p, k, Wt)[1].det_log()[1]
+        f0 = float(np.sign(f0))
+        f1 = float(np.sign(f1))
 
     def at(s: float) -> tuple:
         if s not in cache:
@@ -94,7 +103,12 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
             t, ls = _arc.tangent(prob, X, p, k, Wt)
             data = _arc.point_data(prob, X, p, k, opt) if kind in _MULTIPLIER_KINDS else None
             rho = data.multipliers if data is not None else np.array([])
-            cache[s] = (X, t, ls, data, test_values(kind, t, ls, rho, prob.autonomous))
+            if log0 is not None:
+                sign, log = ls.det_log()
+                value = sign * float(np.exp(np.clip(log - log0, -700, 700)))
+            else:
+                value = test_values(kind, t, ls, rho, prob.autonomous)
+            cache[s] = (X, t, ls, data, value)
         return cache[s]
 
     def f(s: float) -> float:
@@ -107,12 +121,22 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
     located = True
     try:
         s = brentq(f, 0.0, s1, xtol=1e-14 * max(1.0, abs(s1)), rtol=1e-15, maxiter=80)
-    except (ConvergenceError, RuntimeError, ValueError):
-        located, s = False, s1 * f0 / (f0 - f1) if f0 != f1 else 0.5 * s1
-    try:
         X, t, _, data, value = at(s)
-    except ConvergenceError:
-        return None
+    except (ConvergenceError, RuntimeError, ValueError):
+        # the corrector fails very close to a branch point: interpolate in the tightest bracket found
+        pts = sorted([(0.0, f0, X0), (s1, f1, None)] + [(q, c[4], c[0]) for q, c in cache.items()])
+        pairs = [(a, b) for a, b in zip(pts, pts[1:], strict=False) if np.sign(a[1]) != np.sign(b[1])]
+        if not pairs:
+            return None
+        (sa, fa, Xa), (sb, fb, Xb) = min(pairs, key=lambda ab: ab[1][0] - ab[0][0])
+        if Xb is None:
+            Xb, _ = _arc.correct(prob, X0 + sb * t0, p, k, Wt, X0, sb, opt)
+        theta = fa / (fa - fb) if fa != fb else 0.5
+        X = Xa + theta * (Xb - Xa)
+        located = abs(sb - sa) <= 1e-6 * max(abs(s1), 1e-300)
+        value = float(abs(sb - sa))
+        t = t0
+        data = _arc.point_data(prob, X, p, k, opt)
     if data is None:
         data = _arc.point_data(prob, X, p, k, opt)
     rho = data.multipliers
@@ -123,7 +147,7 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
             return None
     if kind == "period_doubling" and rho.size and np.min(np.abs(rho + 1)) > 1e-3:
         return None
-    if kind == "branch_point":
+    if kind == "branch_point" and located:
         value = 0.0
     return Bifurcation(
         kind=kind,
