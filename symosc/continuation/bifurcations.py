@@ -83,9 +83,10 @@ class Tests:
 
 def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcation | None:
     """Zero of the test function ``kind`` between arclength 0 (value f0) and s1 (value f1) from ``X0``."""
-    from scipy.optimize import brentq
-
     import dataclasses
+    import itertools
+
+    from scipy.optimize import brentq
 
     # near a branch point the corrector's matrix is nearly singular and Newton's method converges only linearly
     opt = dataclasses.replace(opt, max_newton=60)
@@ -124,8 +125,8 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
         X, t, _, data, value = at(s)
     except (ConvergenceError, RuntimeError, ValueError):
         # the corrector fails very close to a branch point: interpolate in the tightest bracket found
-        pts = sorted([(0.0, f0, X0), (s1, f1, None)] + [(q, c[4], c[0]) for q, c in cache.items()])
-        pairs = [(a, b) for a, b in zip(pts, pts[1:], strict=False) if np.sign(a[1]) != np.sign(b[1])]
+        pts = sorted([(0.0, f0, X0), (s1, f1, None)] + [(q, c[4], c[0]) for q, c in cache.items()], key=lambda z: z[0])
+        pairs = [(a, b) for a, b in itertools.pairwise(pts) if np.sign(a[1]) != np.sign(b[1])]
         if not pairs:
             return None
         (sa, fa, Xa), (sb, fb, Xb) = min(pairs, key=lambda ab: ab[1][0] - ab[0][0])

@@ -66,9 +66,10 @@ def continue_periodic(
         The continuation parameter: any parameter of the model (the forcing frequency, an amplitude, ``eps``, ...).
     span : (float, float)
         Start and end values of the parameter (the end may be smaller than the start).
-    start : PeriodicSolution, array or None
-        Starting solution or guess at ``span[0]`` (a series or averaging result turned into a
-        :class:`PeriodicSolution`, a simulation, Fourier coefficients), see the formulation's ``solve``.
+    start : PeriodicSolution, LimitCycleSeries, array or None
+        Starting solution or guess at ``span[0]``: a solution of any formulation (a shooting solution started from
+        a simulated state, for instance), a Poincaré series from :func:`symosc.nonlinear.limit_cycle` (harmonic
+        balance of an autonomous problem), Fourier coefficients (harmonic balance) or an initial state (shooting).
     step : float, optional
         First arclength step (default: 1/200 of the span's length).
     max_step : float, optional

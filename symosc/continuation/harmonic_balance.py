@@ -318,9 +318,10 @@ class HarmonicBalance(Formulation, SymPyPrintable):
 
         Parameters
         ----------
-        guess : PeriodicSolution, array or None
-            Starting point: a solution (of any method), Fourier coefficients of shape ``(n, 2H'+1)`` (any H'), or
-            None for the linearized response (forced) / a first-harmonic guess of amplitude 1 (autonomous).
+        guess : PeriodicSolution, LimitCycleSeries, array or None
+            Starting point: a solution (of any method), a Poincaré series of :func:`symosc.nonlinear.limit_cycle`
+            (evaluated at the problem's value of its small parameter), Fourier coefficients of shape ``(n, 2H'+1)``
+            (any H'), or None for the linearized response (forced) / first-harmonic guesses (autonomous).
         values : mapping, optional
             Parameter values that replace the problem's for this solve.
         frequency : float, optional
@@ -401,6 +402,9 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         if isinstance(guess, PeriodicSolution):
             c = guess.coefficients if guess.coefficients is not None else _coefficients_from_state(self, guess)
             return self.pack(c, frequency or guess.frequency)
+        if hasattr(guess, "eps_symbol") and hasattr(guess, "solution") and self.autonomous:
+            c, om = _coefficients_from_series(self, guess)
+            return self.pack(c, frequency or om)
         if guess is not None:
             c = np.atleast_2d(np.asarray(guess, dtype=float))
             if c.shape[0] != n or c.shape[1] % 2 != 1:
@@ -430,12 +434,35 @@ def _linear_frequency(prob: HarmonicBalance) -> float:
 
 
 def _coefficients_from_state(prob: HarmonicBalance, sol: Any) -> np.ndarray:
-    """Fourier coefficients of the orbit of a shooting/collocation solution (sampled by integration)."""
-    tt, y = sol.orbit(samples=4 * (2 * prob.harmonics + 1))
+    """Fourier coefficients of the orbit of a shooting/collocation solution (one period integrated from its state)."""
+    from scipy.integrate import solve_ivp
+
     n = prob.model.n
-    N = len(tt) - 1
+    N = 4 * (2 * prob.harmonics + 1)
+    p = prob.with_values(sol.values).values
+    f = prob.model.first_order(p)
+    tt = sol.period * np.arange(N) / N
+    res = solve_ivp(f.rhs, (0.0, sol.period), sol.initial_state, t_eval=tt, method="DOP853", rtol=1e-11, atol=1e-13)
     _, _, _, P = _fourier.basis(prob.harmonics, N)
-    return (P @ y[:N, :n]).T
+    return (P @ res.y[:n].T).T
+
+
+def _coefficients_from_series(prob: HarmonicBalance, series: Any) -> tuple[np.ndarray, float]:
+    """Fourier coefficients and frequency of a Poincaré series (``symosc.nonlinear.limit_cycle``) at the problem's
+    value of its small parameter."""
+    name = series.eps_symbol.name
+    try:
+        e = float(prob.values[prob.model.param_index(name)])
+    except ParameterError as exc:
+        raise ParameterError(f"guess: the series' parameter {name!r} is not a parameter of the problem") from exc
+    tau = sp.Symbol("tau")
+    expr = series.solution(series.order)
+    fn = sp.lambdify([tau, series.eps_symbol], expr.subs(sp.Symbol("tau"), tau), "numpy")
+    N = 4 * (2 * prob.harmonics + 1)
+    grid = 2 * np.pi * np.arange(N) / N
+    _, _, _, P = _fourier.basis(prob.harmonics, N)
+    values = np.broadcast_to(np.asarray(fn(grid, e), dtype=float), grid.shape)
+    return (P @ values).reshape(1, -1), float(series.frequency.evaluate(e))
 
 
 def _sorted_multipliers(rho: np.ndarray) -> np.ndarray:
