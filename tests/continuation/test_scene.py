@@ -27,9 +27,9 @@ def test_van_der_pol_scene_in_eps():
 model = "van_der_pol"
 [[questions]]
 kind = "continuation"
-range = [0.1, 1.0]
+range = [0.1, 0.5]
 plot = "frequency"
-points = 20
+points = 10
 """
     )
     data = scene.run().to_json()["questions"][0]
