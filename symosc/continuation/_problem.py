@@ -58,12 +58,3 @@ class Formulation:
 
     def frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
         raise NotImplementedError
-
-    def monodromy_multipliers(self, u: np.ndarray, p: np.ndarray) -> np.ndarray:
-        """Floquet multipliers from the variational equations integrated along the orbit through the point's
-        initial state (an independent check of the formulation's own multipliers)."""
-        from .stability import _integrated_monodromy
-
-        data = self.point(u, p, stability=False)
-        M = _integrated_monodromy(self.model, p, data.initial_state, 2 * np.pi / data.frequency)
-        return np.linalg.eigvals(M)

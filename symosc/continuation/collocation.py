@@ -371,7 +371,7 @@ class Collocation(Formulation, SymPyPrintable):
         -------
         PeriodicSolution
         """
-        from .harmonic_balance import solution_from
+        from ._solve import solution_from
 
         check_int("max_iterations", max_iterations, minimum=1)
         prob = self.with_values(values) if values else self
@@ -380,7 +380,7 @@ class Collocation(Formulation, SymPyPrintable):
 
     def converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
         """Converged unknowns at the problem's values and the (possibly refined) problem."""
-        from .harmonic_balance import newton
+        from ._solve import newton
 
         prob = self
         u = prob._initial(guess, frequency)

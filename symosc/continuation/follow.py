@@ -168,7 +168,7 @@ def _branch(raw: _arc.Raw, problem: Any, k: int, p: np.ndarray, name: str | None
     mult = np.full((len(data), nmult), np.nan + 0j)
     for i, d in enumerate(data):
         mult[i, : len(d.multipliers)] = d.multipliers
-    from .harmonic_balance import _is_stable
+    from ._solve import _is_stable
 
     stable = np.array([_is_stable(d.multipliers, problem.autonomous) for d in data])
     params = problem.model.params

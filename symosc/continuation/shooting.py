@@ -194,7 +194,7 @@ class Shooting(Formulation, SymPyPrintable):
         -------
         PeriodicSolution
         """
-        from .harmonic_balance import solution_from
+        from ._solve import solution_from
 
         check_int("max_iterations", max_iterations, minimum=1)
         prob = self.with_values(values) if values else self
@@ -203,7 +203,7 @@ class Shooting(Formulation, SymPyPrintable):
 
     def converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
         """Converged unknowns at the problem's values (and the problem)."""
-        from .harmonic_balance import newton
+        from ._solve import newton
 
         u0 = self._initial(guess, frequency)
         self.begin_step(u0)
