@@ -255,6 +255,8 @@ def switch_branch(
     []
     """
     _check_problem(problem)
+    if problem.method == "collocation":
+        raise ParameterError("problem must be a HarmonicBalance or Shooting problem (switching needs a dense Jacobian)")
     if not isinstance(branch, Branch):
         raise ParameterError(f"branch must be a Branch from continue_periodic, got {type(branch).__name__}")
     if not isinstance(bifurcation, Bifurcation) or bifurcation.kind not in ("branch_point", "period_doubling"):
