@@ -53,7 +53,7 @@ def test_values(kind: str, t: np.ndarray, ls: Any, rho: np.ndarray, autonomous: 
     return float(np.real(prod))
 
 
-class Tests:
+class Monitor:
     """Evaluates the test functions along a branch and locates their zeros."""
 
     def __init__(self, kinds: tuple[str, ...]) -> None:

@@ -27,7 +27,7 @@ from .._validate import check_int, check_positive
 from ..errors import ParameterError
 from . import arclength as _arc
 from ._problem import Formulation, PointData
-from .bifurcations import Tests
+from .bifurcations import Monitor
 from .branch import Bifurcation, Branch
 
 __all__ = ["FoldCurve", "continue_fold"]
@@ -221,7 +221,7 @@ def continue_fold(
     opt.stability = False
     branches = []
     for direction in (-1.0, 1.0):
-        raw = _arc.run(system, k2, p, fold.state.copy(), mu0, (lo, hi), opt, Tests(("fold",)), direction=direction)
+        raw = _arc.run(system, k2, p, fold.state.copy(), mu0, (lo, hi), opt, Monitor(("fold",)), direction=direction)
         branches.append(raw)
     pts = [(r.X[::-1] if i == 0 else r.X[1:], r.data[::-1] if i == 0 else r.data[1:]) for i, r in enumerate(branches)]
     X = pts[0][0] + pts[1][0]

@@ -11,7 +11,7 @@ import sympy as sp
 from .._validate import check_bool, check_choice, check_finite, check_int, check_positive
 from ..errors import ConvergenceError, ParameterError
 from . import arclength as _arc
-from .bifurcations import Tests, kernel_direction
+from .bifurcations import Monitor, kernel_direction
 from .branch import KINDS, Bifurcation, Branch
 
 __all__ = ["continue_periodic", "switch_branch"]
@@ -136,7 +136,7 @@ def continue_periodic(
         lo,
         (min(lo, hi), max(lo, hi)),
         opt,
-        Tests(kinds) if kinds else None,
+        Monitor(kinds) if kinds else None,
         direction=1.0 if hi > lo else -1.0,
     )
     return _branch(raw, problem, k, p)
@@ -296,5 +296,5 @@ def switch_branch(
         raise ConvergenceError("could not step off the bifurcation onto the new branch")
     if not lo <= X1[-1] <= hi:
         raise ConvergenceError(f"the new branch leaves the span at once ({branch.name} = {X1[-1]:g}); widen span")
-    raw = _arc.run(prob, k, p, X1[:-1], X1[-1], (lo, hi), opt, Tests(_kinds(detect, opt.stability)), t0=w)
+    raw = _arc.run(prob, k, p, X1[:-1], X1[-1], (lo, hi), opt, Monitor(_kinds(detect, opt.stability)), t0=w)
     return _branch(raw, prob, k, p, name=branch.name)
