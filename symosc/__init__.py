@@ -42,6 +42,7 @@ _SUBPACKAGES = frozenset(
         "algebra",
         "cli",
         "codegen",
+        "continuation",
         "identification",
         "linear",
         "mechanics",

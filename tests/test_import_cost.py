@@ -46,6 +46,7 @@ def imported_modules(statement: str) -> set[str]:
         "symosc.networks",
         "symosc.operational",
         "symosc.mechanics",
+        "symosc.continuation",
     ],
 )
 def test_subpackage_imports_no_scipy_and_no_optional_library(module):

@@ -36,3 +36,10 @@ def resonance(ax: Any, *, nu: list, amplitudes: list, stable: list) -> Any:
     ax.set_ylabel("amplitude $a$")
     ax.legend()
     return ax
+
+
+def branch(ax: Any, **data: Any) -> Any:
+    """A branch of periodic solutions (the ``continuation`` question)."""
+    from ._questions_continuation import draw_branch
+
+    return draw_branch(ax, **data)

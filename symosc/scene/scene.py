@@ -17,6 +17,7 @@ from ._log import DerivationLog
 from ._models import build_model
 from ._parse import Ctx
 from ._questions import Question, QuestionSpec
+from ._questions_continuation import SPEC as _CONTINUATION
 from ._result import SceneResult
 
 __all__ = ["QUESTIONS", "Scene", "load", "loads"]
@@ -203,6 +204,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
             },
             oq.identify,
         ),
+        _CONTINUATION,
     )
 }
 
@@ -214,6 +216,7 @@ _REQUIRED = {
     "lindstedt": ("order",),
     "resonance_curve": ("frequency_range",),
     "identify": ("record", "n_modes"),
+    "continuation": ("range",),
 }
 
 

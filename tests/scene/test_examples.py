@@ -131,6 +131,33 @@ def test_example_duffing_resonance():
     assert [n_states(jumps[1] - 1e-3), n_states(jumps[1] + 1e-3)] == [3, 1]
 
 
+def test_example_duffing_continuation():
+    """The folds of the continued branch are saddle-nodes of the period map: the orbit integrated with SciPy from the
+    reported state closes after one forcing period, and its monodromy matrix has a multiplier 1."""
+    _, res = _run("duffing_continuation")
+    w0, zeta, mu, R = 1.0, 0.05, 0.5, 0.3
+    folds = [b for b in res["continuation"].data["bifurcations"] if b["kind"] == "fold"]
+    assert len(folds) == 2
+    for b in folds:
+        nu = b["parameter"]
+
+        def rhs(t, y, nu=nu):
+            x, v = y[0], y[1]
+            A = np.array([[0.0, 1.0], [-(w0**2) - 3 * mu * x**2, -2 * zeta * w0]])
+            force = R * np.cos(nu * t)
+            return np.concatenate(
+                [[v, -2 * zeta * w0 * v - w0**2 * x - mu * x**3 + force], (A @ y[2:].reshape(2, 2)).ravel()]
+            )
+
+        y0 = np.array(b["initial_state"])
+        z = solve_ivp(rhs, (0, 2 * np.pi / nu), np.concatenate([y0, np.eye(2).ravel()]), rtol=1e-12, atol=1e-13).y[
+            :, -1
+        ]
+        assert np.linalg.norm(z[:2] - y0) < 1e-8
+        rho = np.linalg.eigvals(z[2:].reshape(2, 2))
+        assert np.min(np.abs(rho - 1)) < 1e-6
+
+
 def test_example_carson_solution():
     """Against sympy.dsolve of y'' + 3y' + 2y = 1, y(0) = y'(0) = 0."""
     _, res = _run("carson_solution")
