@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 from .._printing import SymPyPrintable
-from .._validate import check_bool, check_int, check_positive
+from .._validate import check_bool, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from ._model import PeriodicModel, build_model
 from ._problem import Formulation, PointData
@@ -419,6 +419,7 @@ def _sample_solution(prob: Any, sol: Any, tt: np.ndarray) -> tuple[np.ndarray, n
     return y, dy[:, : 2 * n]
 
 
+@validated
 def collocation(
     acceleration: Any,
     x: Any = None,

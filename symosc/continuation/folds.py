@@ -23,7 +23,7 @@ import sympy as sp
 
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
-from .._validate import check_int, check_positive
+from .._validate import check_int, check_positive, validated
 from ..errors import ParameterError
 from . import arclength as _arc
 from ._problem import Formulation, PointData
@@ -138,6 +138,7 @@ class FoldCurve(SymPyPrintable):
         return ax
 
 
+@validated
 def continue_fold(
     problem: Any,
     branch: Branch,

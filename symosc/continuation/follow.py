@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .._validate import check_bool, check_choice, check_finite, check_int, check_positive
+from .._validate import check_bool, check_choice, check_finite, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from . import arclength as _arc
 from .bifurcations import Monitor, kernel_direction
@@ -36,6 +36,7 @@ def _check_span(span: Any) -> tuple[float, float]:
     return a, b
 
 
+@validated
 def continue_periodic(
     problem: Any,
     parameter: sp.Symbol | str,
@@ -195,6 +196,7 @@ def _branch(raw: _arc.Raw, problem: Any, k: int, p: np.ndarray, name: str | None
     )
 
 
+@validated
 def switch_branch(
     problem: Any,
     branch: Branch,

@@ -19,7 +19,7 @@ import numpy as np
 import sympy as sp
 
 from .._printing import SymPyPrintable
-from .._validate import check_bool, check_int, check_positive
+from .._validate import check_bool, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from . import _fourier
 from ._model import PeriodicModel, build_model
@@ -466,6 +466,7 @@ def _coefficients_from_series(prob: HarmonicBalance, series: Any) -> tuple[np.nd
     return (P @ values).reshape(1, -1), float(series.frequency.evaluate(e))
 
 
+@validated
 def harmonic_balance(
     acceleration: Any,
     x: Any = None,

@@ -17,7 +17,7 @@ import numpy as np
 import sympy as sp
 
 from .._printing import SymPyPrintable
-from .._validate import check_bool, check_choice, check_int, check_positive
+from .._validate import check_bool, check_choice, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from ._model import PeriodicModel, build_model
 from ._problem import Formulation, PointData
@@ -227,6 +227,7 @@ def _dense_maxima(interp: Any, T: float, n: int) -> np.ndarray:
     return out
 
 
+@validated
 def shooting(
     acceleration: Any,
     x: Any = None,

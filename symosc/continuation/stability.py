@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validate import check_choice, check_positive
+from .._validate import check_choice, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = ["orbit_multipliers"]
@@ -56,6 +56,7 @@ def _series_monodromy(model: Any, p: np.ndarray, solution: Any, rtol: float) -> 
     return monodromy(A, solution.period, rtol=rtol, atol=rtol * 1e-2, reversor=None, check_periodic=False).monodromy
 
 
+@validated
 def orbit_multipliers(
     problem: Any,
     solution: Any,
