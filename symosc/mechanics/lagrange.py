@@ -462,6 +462,81 @@ class LagrangianSystem(SymPyPrintable):
 
         return reduce_coordinates(self, parametrization, coordinates)
 
+    # ------------------------------------------------------------------ numbers
+    #: points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>` (catalogue models set it;
+    #: assign a :class:`~symosc.mechanics.Geometry` to animate any system)
+    geometry = None
+
+    def simulate(
+        self,
+        t: Any,
+        initial: Mapping[Any, Any] | Sequence[float],
+        values: Mapping[Any, Any],
+        *,
+        method: str = "LSODA",
+        rtol: float = 1e-9,
+        atol: float = 1e-11,
+        backend: str = "auto",
+        geometry: Any = None,
+    ):
+        """Integrate the equations of motion and return a :class:`~symosc.mechanics.Trajectory`.
+
+        The right-hand side and its analytic Jacobian are the compiled ones of :meth:`first_order` (generated C when
+        a compiler exists); a prescribed motion such as a vibrating pivot is part of the equations, so it is
+        simulated as it is.
+
+        Parameters
+        ----------
+        t : array_like or float
+            Output times (increasing; the motion starts at ``t[0]``), or a duration ``T`` (0..T, 1001 points).
+        initial : mapping or array_like
+            Coordinate name -> initial value; velocities ``"<name>_dot"`` (zero unless given).  An array is the
+            full state ``(q, q')``.
+        values : mapping
+            Parameter values keyed by Symbol or name (for a vibrating pivot also ``a`` and ``p``).
+        method : {"LSODA", "DOP853", "RK45", "Radau", "BDF"}
+            Integrator: LSODA (``scipy.integrate.odeint``, switches to BDF with the analytic Jacobian when the
+            problem is stiff), or a ``solve_ivp`` method (Radau and BDF use the analytic Jacobian).
+        rtol, atol : float
+            Relative and absolute tolerances.
+        backend : {"auto", "c", "numpy"}
+            Evaluator of the right-hand side (see :meth:`FirstOrderSystem.rhs`).
+        geometry : Geometry, optional
+            Points and lines for :meth:`Trajectory.animate`; default :attr:`geometry`.
+
+        Returns
+        -------
+        Trajectory
+            Times, coordinates and velocities by name, the energy (or Jacobi integral) and its drift when it is
+            conserved.
+
+        Raises
+        ------
+        ConvergenceError
+            When the integrator cannot reach the last time.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from symosc.models import n_link_pendulum
+        >>> pend = n_link_pendulum(2)
+        >>> values = {"m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "g": 9.81}
+        >>> traj = pend.simulate(np.linspace(0, 5, 501), {"phi1": 0.3, "phi2": -0.2}, values, rtol=1e-11)
+        >>> sorted(traj.q), traj.energy_drift < 1e-8
+        (['phi1', 'phi2'], True)
+
+        See Also
+        --------
+        first_order, symosc.mechanics.Trajectory
+        """
+        from .simulation import simulate_lagrangian
+
+        if self.is_constrained:
+            raise ModelError("simulate() needs an unconstrained system: call reduce_coordinates(...) first")
+        return simulate_lagrangian(
+            self, t, initial, values, method=method, rtol=rtol, atol=atol, backend=backend, geometry=geometry
+        )
+
     def hamiltonian(self):
         """The Legendre transform: a :class:`~symosc.mechanics.HamiltonianSystem` (Bulgakov (1954), §3.11)."""
         from .analytic.hamiltonian import HamiltonianSystem
