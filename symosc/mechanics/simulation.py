@@ -42,7 +42,8 @@ class Geometry(SymPyPrintable):
     lines : tuple of tuple of str
         Pairs of point names joined by a line (links, springs, edges of a body).
     masses : tuple of str
-        Points drawn as bodies (filled circles); the others are drawn as hinges.
+        Points drawn as bodies (filled circles); the others are drawn as hinges, except those whose name starts with
+        an underscore (bends of a line, such as the coils of a spring).
     fixed : tuple of str
         Points drawn as supports (a short hatched ground line under them).
 
@@ -331,12 +332,17 @@ def _tex_name(name: str, dot: bool = False) -> str:
 
 # ---------------------------------------------------------------------------------------- integration
 def initial_state(coordinates: tuple, initial: Mapping[Any, Any] | np.ndarray) -> np.ndarray:
-    """The state ``(q, q')`` from a mapping (coordinate name -> value, ``"<name>_dot"`` -> velocity) or an array."""
+    """The state ``(q, q')`` from a mapping (coordinate name -> value, ``"<name>_dot"`` -> velocity) or an array
+    (the full state, or the coordinates alone with zero velocities)."""
     n = len(coordinates)
     if not isinstance(initial, Mapping):
         y0 = check_finite_array("initial", initial, ndim=1)
+        if y0.shape == (n,):  # coordinates only: at rest
+            return np.concatenate([y0.astype(float), np.zeros(n)])
         if y0.shape != (2 * n,):
-            raise ParameterError(f"initial must be a mapping by name or a state of shape ({2 * n},), got {y0.shape}")
+            raise ParameterError(
+                f"initial must be a mapping by name, the coordinates ({n},) or a state ({2 * n},), got {y0.shape}"
+            )
         return y0.astype(float)
     names = [c if isinstance(c, str) else c.name for c in coordinates]
     slots = {name: i for i, name in enumerate(names)}

@@ -6,6 +6,8 @@ from typing import Any
 
 import numpy as np
 
+from ._time_response import animation, time_series  # noqa: F401 - drawers of time_response figures
+
 
 def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: float = 1.0) -> Any:
     """The modified Ince–Strutt diagram (Gribkov & Khokhlov 2015, Fig. 3), with the excitation point marked."""

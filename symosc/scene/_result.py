@@ -265,9 +265,12 @@ class SceneResult(SymPyPrintable):
 
                     for f in todo:
                         fig, ax = plt.subplots(figsize=(6.5, 4.5))
-                        getattr(_figures, f.drawer)(ax, **f.data)
-                        fig.tight_layout()
-                        fig.savefig(tmpdir / f.filename, dpi=110)
+                        drawn = getattr(_figures, f.drawer)(ax, **f.data)
+                        if hasattr(drawn, "save"):  # an animation writes itself (GIF)
+                            drawn.save(tmpdir / f.filename)
+                        else:
+                            fig.tight_layout()
+                            fig.savefig(tmpdir / f.filename, dpi=110)
                         plt.close(fig)
                         figs[f.filename] = f.filename
             if fmt == "json":

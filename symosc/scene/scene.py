@@ -12,6 +12,7 @@ from typing import Any
 from .._printing import SymPyPrintable
 from . import _questions as mq
 from . import _questions_other as oq
+from . import _time_response as tr
 from ._errors import SceneError, closest
 from ._log import DerivationLog
 from ._models import build_model
@@ -203,6 +204,13 @@ QUESTIONS: dict[str, QuestionSpec] = {
             },
             oq.identify,
         ),
+        QuestionSpec(
+            "time_response",
+            "simulated motion from an initial state (plot, data, GIF)",
+            _LIN,
+            tr.OPTIONS,
+            tr.time_response,
+        ),
     )
 }
 
@@ -214,6 +222,7 @@ _REQUIRED = {
     "lindstedt": ("order",),
     "resonance_curve": ("frequency_range",),
     "identify": ("record", "n_modes"),
+    "time_response": ("duration",),
 }
 
 

@@ -249,7 +249,7 @@ def animate_trajectory(
     links = LineCollection([], colors="0.2", linewidths=2.0, zorder=2)
     ax.add_collection(links)
     mass_idx = [index[m] for m in geo.masses]
-    hinge_idx = [i for i in range(len(names)) if i not in mass_idx]
+    hinge_idx = [i for i in range(len(names)) if i not in mass_idx and not names[i].startswith("_")]
     (masses,) = ax.plot([], [], "o", color="C0", ms=9, zorder=3, label="bodies")
     (hinges,) = ax.plot([], [], "o", color="white", mec="0.2", ms=5, zorder=4)
     for name in geo.fixed:
