@@ -424,9 +424,15 @@ def integrate_state(
     check_choice("method", method, METHODS)
     rtol, atol = check_positive("rtol", rtol), check_positive("atol", atol)
     if method == "LSODA":
-        from scipy.integrate import odeint
+        import warnings
 
-        y, info = odeint(rhs, y0, times, Dfun=jac, rtol=rtol, atol=atol, tfirst=True, full_output=True, mxstep=200_000)
+        from scipy.integrate import ODEintWarning, odeint
+
+        with warnings.catch_warnings():  # a failure is raised below as ConvergenceError, with the reason
+            warnings.simplefilter("ignore", ODEintWarning)
+            y, info = odeint(
+                rhs, y0, times, Dfun=jac, rtol=rtol, atol=atol, tfirst=True, full_output=True, mxstep=200_000
+            )
         if info["message"] != "Integration successful.":
             reached = float(info["tcur"][info["tcur"] > 0].max()) if np.any(info["tcur"] > 0) else float(times[0])
             raise ConvergenceError(

@@ -28,9 +28,9 @@ use; choose it to reproduce their numbers.  The same flag must be given to the r
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
 import dataclasses
 import itertools
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any

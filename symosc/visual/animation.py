@@ -63,8 +63,13 @@ class Animation:
         return f"Animation({self.frames} frames, {1000.0 / self.interval:.3g} frames/s, {span})"
 
     def images(self) -> list:
-        """The frames as RGB ``PIL.Image`` objects (blitted: the axes and labels are drawn once)."""
-        from PIL import Image
+        """The frames as RGB ``PIL.Image`` objects.
+
+        Blitted: the axes, ticks and labels are drawn once, each frame draws only the moving lines and points; the
+        time label is written with Pillow (matplotlib's text layout would be most of the cost of a frame).
+        """
+        from matplotlib.text import Text
+        from PIL import Image, ImageDraw, ImageFont
 
         fig = self.figure
         fig.set_dpi(self._dpi)
@@ -74,13 +79,24 @@ class Animation:
             a.set_animated(True)
         canvas.draw()
         background = canvas.copy_from_bbox(fig.bbox)
+        width, height = canvas.get_width_height()
+        font = ImageFont.load_default(size=max(10, int(self._dpi * 0.15)))
         out = []
         for k in range(self.frames):
             artists = self._draw(k)
             canvas.restore_region(background)
+            labels = []
             for a in artists:
-                a.axes.draw_artist(a)
-            out.append(Image.frombuffer("RGBA", canvas.get_width_height(), bytes(canvas.buffer_rgba())).convert("RGB"))
+                if isinstance(a, Text):
+                    labels.append(a)
+                else:
+                    a.axes.draw_artist(a)
+            image = Image.frombuffer("RGBA", (width, height), bytes(canvas.buffer_rgba())).convert("RGB")
+            pen = ImageDraw.Draw(image)
+            for a in labels:
+                x, y = a.get_transform().transform(a.get_position())
+                pen.text((x, height - y), a.get_text(), fill=(0, 0, 0), font=font)
+            out.append(image)
         for a in artists:
             a.set_animated(False)
         return out
@@ -124,9 +140,9 @@ class Animation:
         import uuid
 
         frames = []
-        for im in self.images():
+        for im in _quantized(self.images()):
             buf = io.BytesIO()
-            im.save(buf, format="PNG", optimize=False)
+            im.save(buf, format="PNG", compress_level=1)
             frames.append(base64.b64encode(buf.getvalue()).decode("ascii"))
         uid = "symosc" + uuid.uuid4().hex[:10]
         data = ",".join(f'"{f}"' for f in frames)
