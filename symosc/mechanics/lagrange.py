@@ -80,6 +80,11 @@ class LagrangianSystem(SymPyPrintable):
         then carry multipliers: see :attr:`constrained` (Bulgakov (1954), §3.3-3.5).
     nonholonomic : sequence of Expr, optional
         Non-holonomic constraints linear in the velocities, ``E(q, t) q' + e(q, t) = 0`` (eq. (3.28)).
+    simplify : bool
+        Apply the identities ``sin**2 + cos**2 = 1``, ``sin u sin v + cos u cos v = cos(u - v)`` and
+        ``sin u cos v - cos u sin v = sin(u - v)`` to the kinetic energy's terms before anything is derived
+        (:func:`symosc.algebra.trig_reduce_groups`: a hash lookup per term, no search), so that the mass matrix, the
+        forces, LaTeX and generated code come out in the short form.  ``False`` keeps the terms as written.
 
     Examples
     --------
@@ -113,7 +118,9 @@ class LagrangianSystem(SymPyPrintable):
         forces: Sequence[Any] | Mapping[Any, Any] | None = None,
         constraints: Sequence[Any] = (),
         nonholonomic: Sequence[Any] = (),
+        simplify: bool = True,
     ) -> None:
+        self._simplify = bool(simplify)
         q, replace = _plain_coordinates(coordinates)
         self._q = q
         self._qd = tuple(dot(s) for s in q)
@@ -292,10 +299,15 @@ class LagrangianSystem(SymPyPrintable):
         collected by its factor that depends on the coordinates and time."""
         parts = _terms.velocity_parts(self._T, self._qd, "T")
         dep = self._dependent
-        return {
+        out = {
             k: _terms.group_terms([x for term in v for x in _terms.expand_terms(term, dep)], dep)
             for k, v in parts.items()
         }
+        if self._simplify:  # sin**2 + cos**2 and angle-difference pairs, found by hashing (presentation-ready M, F)
+            from ..algebra.trig import trig_reduce_groups
+
+            out = {k: trig_reduce_groups(g) for k, g in out.items()}
+        return out
 
     @staticmethod
     def _sum(groups: _terms.Groups) -> sp.Expr:
@@ -309,6 +321,8 @@ class LagrangianSystem(SymPyPrintable):
         for key, groups in self._parts.items():
             if len(key) == 2:
                 i, j = key
+                if self._simplify:  # common factors of each coefficient taken out: l1*(l2*m3 + lc2*m2)*cos(...)
+                    groups = [(d, sp.factor_terms(c)) for d, c in groups]
                 if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
                     M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
                 else:
@@ -349,7 +363,16 @@ class LagrangianSystem(SymPyPrintable):
             if self._R != 0:
                 pieces[k].append(-self._R.diff(qd[k]))
             pieces[k].append(self._Q[k])
+        if self._simplify:  # cancel the velocity terms of the product rule, collect by factor
+            return sp.Matrix([self._tidy(p) for p in pieces])
         return sp.Matrix([sp.Add(*p) for p in pieces])
+
+    def _tidy(self, pieces: list[sp.Expr]) -> sp.Expr:
+        """``sum(pieces)`` expanded in the coordinates, velocities and time, like terms merged and each
+        coefficient's common factors taken out (``g*(l1*m2 + lc1*m1)*sin(phi1)``)."""
+        dep = self._dependent | set(self._qd)
+        terms = [x for piece in pieces for x in _terms.expand_terms(piece, dep)]
+        return sp.Add(*(sp.factor_terms(c) * d for d, c in _terms.group_terms(terms, dep) if c != 0))
 
     @cached_property
     def _potential_groups(self) -> _terms.Groups:

@@ -268,7 +268,7 @@ class LinearModel(SymPyPrintable):
         >>> lin = n_link_pendulum(1).linearize()
         >>> traj = lin.simulate(np.linspace(0, np.pi, 3), {"phi1": 0.1}, {"m1": 1.0, "l1": 1.0, "g": 4.0})
         >>> traj.q["phi1"].round(8).tolist()        # 0.1 cos(2 t)
-        [0.1, 0.1, 0.1]
+        [0.1, -0.1, 0.1]
 
         See Also
         --------

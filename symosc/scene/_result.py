@@ -117,6 +117,7 @@ class QuestionResult(SymPyPrintable):
     tables: tuple[Table, ...] = ()
     figures: tuple[Figure, ...] = ()
     data: dict = field(default_factory=dict)
+    math: tuple = field(default=(), repr=False)  # (line index, lhs, rhs): SymPy objects the HTML report typesets
 
     def __repr__(self) -> str:
         return f"QuestionResult({self.kind!r}, {self.title!r})"
@@ -157,6 +158,7 @@ class SceneResult(SymPyPrintable):
     parameters: dict
     results: tuple[QuestionResult, ...]
     log: tuple[LogEntry, ...]
+    parameter_text: dict = field(default_factory=dict)  # name -> value as the scene file wrote it ("45 mm")
 
     def __getitem__(self, kind: str) -> QuestionResult:
         for r in self.results:
@@ -168,14 +170,17 @@ class SceneResult(SymPyPrintable):
         return f"SceneResult({self.title!r}, questions={[r.kind for r in self.results]})"
 
     def _repr_html_(self) -> str:
-        return self.html()
+        from ._html import fragment
+
+        return fragment(self)
 
     def _log_table(self) -> Table:
         rows = tuple((str(i + 1), e.step, f"{e.seconds * 1e3:.1f}", e.detail) for i, e in enumerate(self.log))
         return Table(("#", "step", "ms", "detail"), rows, "Derivation log (what was derived for these questions)")
 
     def _params_line(self) -> str:
-        return ", ".join(f"{k} = {v:.6g}" for k, v in self.parameters.items()) or "none"
+        shown = self.parameter_text
+        return ", ".join(f"{k} = {shown.get(k) or format(v, '.6g')}" for k, v in self.parameters.items()) or "none"
 
     def report(self) -> str:
         """Plain-text report for the terminal."""
@@ -184,7 +189,7 @@ class SceneResult(SymPyPrintable):
             out.append(f"source: {self.source}")
         if self.system:
             out.append(f"system: {self.system}")
-        out.append(f"parameters (SI): {self._params_line()}")
+        out.append(f"parameters: {self._params_line()}")
         for r in self.results:
             out += ["", f"-- {r.title}"]
             out += list(r.lines)
@@ -199,7 +204,7 @@ class SceneResult(SymPyPrintable):
             out.append(f"Source: {self.source}  ")
         if self.system:
             out.append(f"System: {self.system}  ")
-        out += [f"Parameters (SI): {self._params_line()}", ""]
+        out += [f"Parameters: {self._params_line()}", ""]
         for r in self.results:
             out += [f"## {r.title}", ""]
             out += [line + "  " for line in r.lines]
@@ -212,20 +217,11 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def html(self, figures: dict[str, str] | None = None) -> str:
-        e = html.escape
-        out = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{e(self.title)}</title></head><body>"]
-        out.append(f"<h1>{e(self.title)}</h1><p>Source: {e(self.source)}<br>System: {e(self.system)}<br>")
-        out.append(f"Parameters (SI): {e(self._params_line())}</p>")
-        for r in self.results:
-            out.append(f"<h2>{e(r.title)}</h2><p>" + "<br>".join(e(x) for x in r.lines) + "</p>")
-            out += [t.html() for t in r.tables]
-            for f in r.figures:
-                if figures and f.filename in figures:
-                    out.append(
-                        f"<figure><img src='{e(figures[f.filename])}'><figcaption>{e(f.caption)}</figcaption></figure>"
-                    )
-        out.append("<h2>Derivation log</h2>" + self._log_table().html() + "</body></html>")
-        return "\n".join(out)
+        """A self-contained HTML page: stylesheet, equations as MathML, figures embedded (when ``figures`` maps
+        their names to files) or linked."""
+        from ._html import document
+
+        return document(self, figures)
 
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict: parameters, each question's data and the derivation log."""
@@ -277,7 +273,7 @@ class SceneResult(SymPyPrintable):
                 main = None
             else:
                 main = tmpdir / f"report.{fmt}"
-                text = self.markdown(figs) if fmt == "md" else self.html(figs)
+                text = self.markdown(figs) if fmt == "md" else self.html({k: str(tmpdir / v) for k, v in figs.items()})
                 main.write_text(text + ("\n" + "\n".join(notes) if notes else ""), encoding="utf-8")
             (tmpdir / "results.json").write_text(
                 json.dumps(self.to_json(), indent=2, default=_json_default), encoding="utf-8"

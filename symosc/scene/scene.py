@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from .._printing import SymPyPrintable
+from . import _html
 from . import _questions as mq
 from . import _questions_other as oq
 from . import _time_response as tr
@@ -291,6 +292,7 @@ class Scene(SymPyPrintable):
             parameters=dict(self.values),
             results=tuple(results),
             log=tuple(self.log.entries),
+            parameter_text=_html.parameter_text(self),
         )
 
 

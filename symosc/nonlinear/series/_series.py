@@ -256,7 +256,9 @@ class EpsSeries(SymPyPrintable):
         return f"{self.name} = {self.expr} + O({self.symbol}**{self.order + 1})"
 
     def _repr_latex_(self) -> str:
-        return f"${sp.latex(self.expr)} + O\\left({sp.latex(self.symbol ** (self.order + 1))}\\right)$"
+        from ..._printing import latex
+
+        return f"${latex(self.expr)} + O\\left({latex(self.symbol ** (self.order + 1))}\\right)$"
 
 
 @functools.lru_cache(maxsize=256)
