@@ -545,7 +545,7 @@ class LagrangianSystem(SymPyPrintable):
         >>> pend = n_link_pendulum(2)
         >>> values = {"m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "g": 9.81}
         >>> traj = pend.simulate(np.linspace(0, 5, 501), {"phi1": 0.3, "phi2": -0.2}, values, rtol=1e-11)
-        >>> sorted(traj.q), traj.energy_drift < 1e-8
+        >>> sorted(traj.q), bool(traj.energy_drift < 1e-8)
         (['phi1', 'phi2'], True)
 
         See Also

@@ -140,7 +140,7 @@ class Trajectory(SymPyPrintable):
     >>> from symosc.models import n_link_pendulum
     >>> pend = n_link_pendulum(1)
     >>> traj = pend.simulate(np.linspace(0, 2, 5), {"phi1": 0.1}, {"m1": 1.0, "l1": 1.0, "g": 9.81})
-    >>> traj.q["phi1"].shape, traj.energy_drift < 1e-8
+    >>> traj.q["phi1"].shape, bool(traj.energy_drift < 1e-8)
     ((5,), True)
 
     See Also
@@ -418,7 +418,7 @@ def integrate_state(
     --------
     >>> import numpy as np
     >>> y, nfev = integrate_state(lambda t, y: -y, None, np.array([0.0, 1.0]), np.array([1.0]))
-    >>> abs(y[-1, 0] - np.exp(-1)) < 1e-8
+    >>> bool(abs(y[-1, 0] - np.exp(-1)) < 1e-8)
     True
     """
     check_choice("method", method, METHODS)

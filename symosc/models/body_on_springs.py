@@ -395,7 +395,7 @@ class BodyOnSprings(SymPyPrintable):
         ...             k1=7.4e5, k2=7.4e5, k3=7.4e5, k4=7.4e5)
         >>> q0 = model.modal(vals, force=[0, -2000, 0, 0]).q0
         >>> traj = model.simulate(np.linspace(0, 1, 101), q0, vals)
-        >>> traj.energy_drift < 1e-6
+        >>> bool(traj.energy_drift < 1e-6)
         True
         """
         from .._validate import check_choice, check_positive

@@ -166,6 +166,7 @@ def resonance_curve(q: Question) -> QuestionResult:
             "nu": fr.nu.tolist(),
             "amplitudes": np.where(np.isfinite(fr.amplitudes), fr.amplitudes, np.nan).tolist(),
             "stable": fr.stable.tolist(),
+            "folds": [[f.nu, f.amplitude] for f in fr.folds],
         },
     )
     data = {
