@@ -322,7 +322,7 @@ class LagrangianSystem(SymPyPrintable):
             if len(key) == 2:
                 i, j = key
                 if self._simplify:  # common factors of each coefficient taken out: l1*(l2*m3 + lc2*m2)*cos(...)
-                    groups = [(d, sp.factor_terms(c)) for d, c in groups]
+                    groups = [(d, _common_factor(c)) for d, c in groups]
                 if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
                     M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
                 else:
@@ -332,6 +332,8 @@ class LagrangianSystem(SymPyPrintable):
     @cached_property
     def forcing(self) -> sp.Matrix:
         """F(q, q', t) in M q'' = F: everything but the acceleration terms, moved to the right."""
+        if self._simplify:
+            return self._forcing_collected()
         q, qd = self._q, self._qd
         n = len(q)
         qt = [*q, t]
@@ -363,16 +365,66 @@ class LagrangianSystem(SymPyPrintable):
             if self._R != 0:
                 pieces[k].append(-self._R.diff(qd[k]))
             pieces[k].append(self._Q[k])
-        if self._simplify:  # cancel the velocity terms of the product rule, collect by factor
-            return sp.Matrix([self._tidy(p) for p in pieces])
         return sp.Matrix([sp.Add(*p) for p in pieces])
 
-    def _tidy(self, pieces: list[sp.Expr]) -> sp.Expr:
-        """``sum(pieces)`` expanded in the coordinates, velocities and time, like terms merged and each
-        coefficient's common factors taken out (``g*(l1*m2 + lc1*m1)*sin(phi1)``)."""
-        dep = self._dependent | set(self._qd)
-        terms = [x for piece in pieces for x in _terms.expand_terms(piece, dep)]
-        return sp.Add(*(sp.factor_terms(c) * d for d, c in _terms.group_terms(terms, dep) if c != 0))
+    def _forcing_collected(self) -> sp.Matrix:
+        """The same F as :attr:`forcing`, each term filed at once under its factor in the coordinates and time and
+        its velocity monomial, so that the product rule's velocity terms cancel and like terms merge without any
+        ``expand``; each coefficient's common factors are taken out (``-g*l1*(m1 + m2)*sin(phi1)``)."""
+        q, qd = self._q, self._qd
+        n = len(q)
+        dep = self._dependent
+        velocity = {v: i for i, v in enumerate(qd)}
+        acc: list[dict] = [{} for _ in range(n)]
+
+        def file(k: int, expr: sp.Expr, mono: tuple, scale: int) -> None:
+            for x in _distribute(expr, dep | set(qd)):
+                num, rest = x.as_coeff_Mul()
+                d, c, m = [], [], list(mono)
+                for f in sp.Mul.make_args(rest):
+                    base, exp = (f.base, f.exp) if f.is_Pow and f.exp.is_Integer and f.exp > 0 else (f, 1)
+                    if base in velocity:
+                        m += [velocity[base]] * int(exp)
+                    elif f.free_symbols & dep:
+                        d.append(f)
+                    else:
+                        c.append(f)
+                key = (tuple(d), tuple(sorted(m)))
+                acc[k].setdefault(key, []).append(scale * num * _terms._product(c))
+
+        qt = [*q, t]
+        for key, groups in self._parts.items():
+            grads = _terms.grouped_gradient(groups, qt)
+            for k in range(n):  # dT/dq_k: the coefficient's gradient times the velocity monomial
+                for x in grads[k]:
+                    file(k, x, key, 1)
+            for v, g in enumerate(grads):  # d/dt of dT/dq'_i along the motion (accelerations excluded)
+                rate_mono = (v,) if v < n else ()
+                for x in g:
+                    if len(key) == 1:
+                        file(key[0], x, rate_mono, -1)
+                    elif len(key) == 2 and key[0] == key[1]:
+                        file(key[0], x, (*rate_mono, key[0]), -2)
+                    elif len(key) == 2:
+                        file(key[0], x, (*rate_mono, key[1]), -1)
+                        file(key[1], x, (*rate_mono, key[0]), -1)
+        dV = _terms.grouped_gradient(self._potential_groups, q)
+        for k in range(n):
+            for x in dV[k]:
+                file(k, x, (), -1)
+            if self._R != 0:
+                file(k, self._R.diff(qd[k]), (), -1)
+            if self._Q[k] != 0:
+                file(k, self._Q[k], (), 1)
+        rows = []
+        for k in range(n):
+            terms = []
+            for (d, mono), consts in acc[k].items():
+                c = sp.Add(*consts)
+                if c != 0:
+                    terms.append(_common_factor(c) * _terms._product(d) * sp.Mul(*(qd[i] for i in mono)))
+            rows.append(sp.Add(*terms))
+        return sp.Matrix(rows)
 
     @cached_property
     def _potential_groups(self) -> _terms.Groups:
@@ -565,3 +617,61 @@ class LagrangianSystem(SymPyPrintable):
         from .analytic.hamiltonian import HamiltonianSystem
 
         return HamiltonianSystem.from_lagrangian(self)
+
+
+def _distribute(expr: sp.Expr, dep: set) -> list[sp.Expr]:
+    """The additive terms of ``expr`` with every product distributed over its sums that contain ``dep`` symbols
+    (sums of constants are kept whole); no other rewriting."""
+    out: list[sp.Expr] = []
+    for term in sp.Add.make_args(expr):
+        if not term.is_Mul:
+            out.append(term)
+            continue
+        parts: list[list[sp.Expr]] = [[]]
+        for f in term.args:
+            if f.is_Add and f.free_symbols & dep:
+                inner = [x for a in f.args for x in _distribute(a, dep)]
+                parts = [[*p, x] for p in parts for x in inner]
+            else:
+                for p in parts:
+                    p.append(f)
+        out.extend(sp.Mul(*p) for p in parts)
+    return out
+
+
+def _common_factor(c: sp.Expr) -> sp.Expr:
+    """``c`` with the factors common to all its terms taken out: ``g*l1*m1 + g*l1*m2 -> g*l1*(m1 + m2)`` (powers of
+    symbols and a common rational coefficient; a linear pass, unlike ``sympy.factor_terms``)."""
+    if c.is_Mul:
+        return sp.Mul(*(_common_factor(f) if f.is_Add else f for f in c.args))
+    terms = sp.Add.make_args(c)
+    if len(terms) < 2:
+        return c
+    split = []
+    for term in terms:
+        num, rest = term.as_coeff_Mul()
+        powers: dict = {}
+        for f in sp.Mul.make_args(rest):
+            base, exp = (f.base, f.exp) if f.is_Pow and f.exp.is_Integer and f.exp > 0 else (f, sp.S.One)
+            powers[base] = powers.get(base, 0) + exp
+        split.append((num, powers))
+    common = dict(split[0][1])
+    for _, powers in split[1:]:
+        common = {b: min(e, powers[b]) for b, e in common.items() if b in powers}
+        if not common:
+            break
+    nums = [n for n, _ in split]
+    num = abs(nums[0]) if nums[0].is_Rational and nums[0] != 0 and all(abs(n) == abs(nums[0]) for n in nums) else 1
+    if all(n.is_negative for n in nums):  # -g*l1*(m1 + m2), not g*l1*(-m1 - m2)
+        num = -num
+    if not common and num == 1:
+        return c
+
+    def power(b: sp.Expr, e: Any) -> sp.Expr:
+        return b if e == 1 else b**e
+
+    inner = [
+        sp.Mul(n / num, *(power(b, e - common.get(b, 0)) for b, e in powers.items() if e != common.get(b, 0)))
+        for n, powers in split
+    ]
+    return sp.Mul(num, *(power(b, e) for b, e in common.items()), sp.Add(*inner))
