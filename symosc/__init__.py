@@ -51,6 +51,7 @@ _SUBPACKAGES = frozenset(
         "operational",
         "periodic",
         "scene",
+        "visual",
     }
 )
 

@@ -13,7 +13,7 @@ from typing import Any
 from ._deprecation import warn_deprecated
 from .errors import ParameterError
 
-__all__ = ["label_curves", "new_axes", "outside_legend", "plot_method"]
+__all__ = ["label_curves", "new_axes", "outside_legend", "plot_method", "tex_name"]
 
 
 def new_axes(ax: Any = None, **subplots: Any) -> Any:
@@ -104,3 +104,14 @@ def label_curves(
 def outside_legend(ax: Any, **kwargs: Any) -> Any:
     """A legend to the right of the axes, where it hides no curve (``tight_layout`` makes room for it)."""
     return ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize=8, **kwargs)
+
+
+_GREEK = {"phi", "theta", "psi", "alpha", "beta", "gamma", "varphi", "chi", "xi", "eta", "zeta", "rho", "sigma"}
+
+
+def tex_name(name: str, dot: bool = False) -> str:
+    """A coordinate name as a mathtext label: ``"phi1" -> "$\\phi_{1}$"`` (dotted for a velocity)."""
+    base = name.rstrip("0123456789")
+    digits = name[len(base) :]
+    sym = (f"\\{base}" if base in _GREEK else base) + (f"_{{{digits}}}" if digits else "")
+    return f"$\\dot{{{sym}}}$" if dot else f"${sym}$"

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .._plotting import new_axes, plot_method
+from .._plotting import new_axes, plot_method, tex_name
 from .._printing import SymPyPrintable
 from .._validate import check_choice, check_finite_array, check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
@@ -81,7 +81,23 @@ class Geometry(SymPyPrintable):
         return f"Geometry(points: {', '.join(self.points)}; {len(self.lines)} lines)"
 
     def positions(self, times: np.ndarray, states: np.ndarray, coordinates: tuple, values: Mapping) -> dict:
-        """Point name -> array ``(len(times), 2)`` of positions along a trajectory (``states``: ``(k, >= n)``)."""
+        """Point name -> array ``(len(times), 2)`` of positions along a trajectory.
+
+        Parameters
+        ----------
+        times : ndarray, shape (k,)
+            Times (a moving pivot depends on them).
+        states : ndarray, shape (k, >= n)
+            The coordinates in the first ``n`` columns (velocities may follow).
+        coordinates : tuple of str or Symbol
+            Coordinate names, in the order of the columns.
+        values : mapping
+            Values of the parameters the points depend on.
+
+        Returns
+        -------
+        dict of str to ndarray
+        """
         from ..numeric import compile, resolve
         from ..symbols import t
 
@@ -254,7 +270,7 @@ class Trajectory(SymPyPrintable):
         else:
             series = self.q if what == "coordinates" else self.qd
             for name, v in series.items():
-                ax.plot(self.t, v, label=_tex_name(name, dot=what == "velocities"))
+                ax.plot(self.t, v, label=tex_name(name, dot=what == "velocities"))
             ax.set_ylabel("coordinates" if what == "coordinates" else "velocities")
         ax.set_xlabel("time $t$, s")
         ax.grid(True, lw=0.4, alpha=0.5)
@@ -320,14 +336,6 @@ class Trajectory(SymPyPrintable):
         return animate_trajectory(
             self, path, fps=fps, speed=speed, max_frames=max_frames, trail=trail, geometry=geometry, dpi=dpi, size=size
         )
-
-
-def _tex_name(name: str, dot: bool = False) -> str:
-    base = name.rstrip("0123456789")
-    digits = name[len(base) :]
-    greek = {"phi", "theta", "psi", "alpha", "beta", "gamma", "varphi", "chi", "xi", "eta", "zeta", "rho", "sigma"}
-    sym = (f"\\{base}" if base in greek else base) + (f"_{{{digits}}}" if digits else "")
-    return f"$\\dot{{{sym}}}$" if dot else f"${sym}$"
 
 
 # ---------------------------------------------------------------------------------------- integration

@@ -183,7 +183,22 @@ class InceStruttDiagram(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
-        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``."""
+        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``, each curve
+        labelled directly (labels placed where they overlap neither each other nor the legend).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Draw here; a new figure otherwise.
+        a_range : (float, float)
+            Range of the frequency parameter shown.
+        shade : bool
+            Shade the stable bands ``a_n < a < b_(n+1)``.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:

@@ -158,7 +158,7 @@ def time_response(q: Any) -> QuestionResult:
 # ------------------------------------------------------------------------------------------ drawers
 def time_series(ax: Any, *, t: Any, series: Mapping[str, Any], title: str = "") -> Any:
     """Outputs against time, one labelled line each (the energy, if asked, on a second axis)."""
-    from ..mechanics.simulation import _tex_name
+    from .._plotting import tex_name
 
     lines = []
     energy = series.get("energy")
@@ -166,7 +166,7 @@ def time_series(ax: Any, *, t: Any, series: Mapping[str, Any], title: str = "") 
         if name == "energy":
             continue
         base, dot = (name[:-4], True) if name.endswith("_dot") else (name, False)
-        lines += ax.plot(t, v, label=_tex_name(base, dot=dot))
+        lines += ax.plot(t, v, label=tex_name(base, dot=dot))
     ax.set_xlabel("time $t$, s")
     ax.set_ylabel("coordinates (SI)")
     ax.grid(True, lw=0.4, alpha=0.5)

@@ -8,20 +8,10 @@ frames with matplotlib; the explorers (:func:`pivot_explorer`, :func:`resonance_
 """
 
 from .animation import Animation, animate_trajectory
-from .widgets import (
-    MathieuExplorer,
-    PivotExplorer,
-    ResonanceExplorer,
-    mathieu_explorer,
-    pivot_explorer,
-    resonance_explorer,
-)
+from .widgets import mathieu_explorer, pivot_explorer, resonance_explorer
 
 __all__ = [
     "Animation",
-    "MathieuExplorer",
-    "PivotExplorer",
-    "ResonanceExplorer",
     "animate_trajectory",
     "mathieu_explorer",
     "pivot_explorer",

@@ -13,17 +13,31 @@ from typing import Any
 
 import numpy as np
 
+from .._printing import SymPyPrintable
 from .._validate import check_int, check_positive
 from ..errors import ParameterError
 
 __all__ = ["Animation", "animate_trajectory"]
 
 
-class Animation:
+class Animation(SymPyPrintable):
     """A matplotlib animation of a simulated motion.
 
     Frames are rendered by blitting on an Agg canvas (the background is drawn once), so a few hundred frames take
-    a few seconds.
+    a few seconds.  Made by :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>`.
+
+    Parameters
+    ----------
+    figure : matplotlib Figure
+        The figure the frames are drawn on (Agg canvas).
+    draw : callable
+        ``draw(k)`` updates the moving artists to frame ``k`` and returns them.
+    times : ndarray
+        Simulated time of each frame.
+    interval : float
+        Milliseconds between frames.
+    dpi : int
+        Resolution of the frames.
 
     Attributes
     ----------
@@ -57,6 +71,13 @@ class Animation:
         self.frames = int(times.size)
         self.path: Path | None = None
         self._dpi = int(dpi)
+        self._source: tuple | None = None  # (trajectory, options): what the animation is rebuilt from when unpickled
+
+    def __reduce__(self) -> tuple:
+        """Pickled as the trajectory and the options: the figure and its drawing function are rebuilt on loading."""
+        if self._source is None:
+            raise TypeError("this Animation was not made by Trajectory.animate and cannot be pickled")
+        return (_rebuild, self._source)
 
     def __repr__(self) -> str:
         span = f"t = {self.times[0]:.4g} .. {self.times[-1]:.4g} s"
@@ -290,6 +311,12 @@ def animate_trajectory(
 
     interval = 1000.0 * step / speed if step > 0 else 1000.0 / fps
     out = Animation(fig, draw, times, interval, dpi)
+    options = {"fps": fps, "speed": speed, "max_frames": max_frames, "trail": trail, "dpi": dpi, "size": size}
+    out._source = (trajectory, {**options, "geometry": geometry})
     if path is not None:
         out.save(path)
     return out
+
+
+def _rebuild(trajectory: Any, options: dict) -> Animation:
+    return animate_trajectory(trajectory, None, **options)

@@ -25,9 +25,6 @@ import numpy as np
 from .._validate import check_positive, validated
 
 __all__ = [
-    "MathieuExplorer",
-    "PivotExplorer",
-    "ResonanceExplorer",
     "mathieu_explorer",
     "pivot_explorer",
     "resonance_explorer",

@@ -94,7 +94,7 @@ def test_the_checks_can_fail():
     ax.annotate("a_1", (0.5, 0.5))
     ax.annotate("b_2", (0.5, 0.5))
     assert _overlaps(fig) == [("a_1", "b_2")]
-    fig2, ax2 = plt.subplots()
+    _, ax2 = plt.subplots()
     ax2.plot([0, 1], [0, 1], label="x")
     ax2.plot([0, 1], [1, 0], color="C5", ls=":")
     ax2.legend(handles=ax2.get_lines()[:1])
