@@ -521,7 +521,6 @@ def validated(fn):
         one (computed on the first call with a string argument)."""
         kinds = _docstring_parameters(inspect.getdoc(fn) or "")
         return frozenset(p for p in maybe_refused if not _documented_string(kinds.get(p, ("", ""))[0]))
-
     conventional_names = frozenset(conventional)
     # positional index from which a conventional parameter can be given positionally (never, if none)
     first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)

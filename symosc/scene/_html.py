@@ -107,7 +107,19 @@ def _figure(path: str | None, name: str, caption: str) -> str:
 
 
 def fragment(result: Any, figures: dict[str, str] | None = None) -> str:
-    """The report as an HTML fragment (a ``<div>`` with its own stylesheet), for notebooks and pages."""
+    """The scene's results as an HTML fragment (a ``<div>`` with its own stylesheet), for notebooks and pages.
+
+    Parameters
+    ----------
+    result : SceneResult
+        The answers.
+    figures : dict, optional
+        Figure file name -> path of the drawn file (embedded) or link.
+
+    Returns
+    -------
+    str
+    """
     e = html.escape
     written = getattr(result, "parameter_text", {}) or {}
     out = [f"<div class='symosc-report'><style>{_CSS}</style>", f"<h1>{e(result.title)}</h1><dl class='meta'>"]
@@ -141,7 +153,19 @@ def fragment(result: Any, figures: dict[str, str] | None = None) -> str:
 
 
 def document(result: Any, figures: dict[str, str] | None = None) -> str:
-    """The report as a complete, self-contained HTML page."""
+    """The scene's results as a complete, self-contained HTML page (see :func:`fragment`).
+
+    Parameters
+    ----------
+    result : SceneResult
+        The answers.
+    figures : dict, optional
+        Figure file name -> path of the drawn file (embedded) or link.
+
+    Returns
+    -------
+    str
+    """
     title = html.escape(result.title)
     return (
         "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
