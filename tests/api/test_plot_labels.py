@@ -1,6 +1,8 @@
 """Figures people can read: every drawn curve is named (legend entry or direct label) and no two labels overlap.
 
-Each public ``.plot`` is rendered on an Agg canvas; the text boxes come from the renderer (what a viewer sees).
+The checks run on every public ``.plot`` in ``test_plot_protocol.py`` (on the figure it draws there, rendered on an
+Agg canvas: the text boxes come from the renderer, what a viewer sees); here they are shown to fail when they should,
+and applied to the scene figures.
 """
 
 from __future__ import annotations
@@ -10,14 +12,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import pytest
 from matplotlib.lines import Line2D
 from matplotlib.text import Annotation
-
-from .examples import PLOT_ARGS
-from .public import example_instances, public_classes
-
-PLOTTING = [c for c in public_classes() if callable(getattr(c, "plot", None))]
 
 
 def _curves(ax) -> list[Line2D]:
@@ -32,7 +28,7 @@ def _curves(ax) -> list[Line2D]:
     return out
 
 
-def _unnamed(ax) -> list[str]:
+def unnamed_curves(ax) -> list[str]:
     """Curves with neither a legend entry nor a direct label: a legend must exist when curves carry labels, and
     a curve without one needs an annotation of its own style (same color and line style as a labelled one)."""
     legend = ax.get_legend() or next((a.get_legend() for a in ax.figure.axes if a.get_legend()), None)
@@ -54,7 +50,7 @@ def _unnamed(ax) -> list[str]:
     return bad
 
 
-def _overlaps(fig) -> list[tuple[str, str]]:
+def overlapping_texts(fig) -> list[tuple[str, str]]:
     """Pairs of visible texts inside the axes (annotations, in-axes text, legends) whose boxes intersect."""
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
@@ -74,31 +70,18 @@ def _overlaps(fig) -> list[tuple[str, str]]:
     ]
 
 
-@pytest.mark.parametrize("cls", PLOTTING, ids=lambda c: c.__name__)
-def test_every_curve_is_named_and_no_labels_overlap(cls):
-    obj = example_instances().get(cls)
-    kwargs = PLOT_ARGS.get(cls.__name__, {})
-    plt.close("all")
-    try:
-        ax = obj.plot(**kwargs)
-        assert _unnamed(ax) == [], f"{cls.__name__}: curves without a legend entry or label"
-        assert _overlaps(ax.figure) == [], f"{cls.__name__}: overlapping labels"
-    finally:
-        plt.close("all")
-
-
 def test_the_checks_can_fail():
     """An unlabelled curve and two labels on one spot are reported."""
     fig, ax = plt.subplots()
     ax.plot([0, 1], [0, 1])
     ax.annotate("a_1", (0.5, 0.5))
     ax.annotate("b_2", (0.5, 0.5))
-    assert _overlaps(fig) == [("a_1", "b_2")]
+    assert overlapping_texts(fig) == [("a_1", "b_2")]
     _, ax2 = plt.subplots()
     ax2.plot([0, 1], [0, 1], label="x")
     ax2.plot([0, 1], [1, 0], color="C5", ls=":")
     ax2.legend(handles=ax2.get_lines()[:1])
-    assert len(_unnamed(ax2)) == 1
+    assert len(unnamed_curves(ax2)) == 1
     plt.close("all")
 
 
@@ -114,6 +97,6 @@ def test_scene_figures_are_labelled(tmp_path):
         fig, ax = plt.subplots(figsize=(6.5, 4.5))
         getattr(_figures, drawer)(ax, **data)
         fig.tight_layout()
-        assert _unnamed(ax) == [], drawer
-        assert _overlaps(fig) == [], drawer
+        assert unnamed_curves(ax) == [], drawer
+        assert overlapping_texts(fig) == [], drawer
         plt.close(fig)

@@ -70,9 +70,8 @@ def test_series_converts_with_sympify():
 
 def test_model_latex_shows_the_equations_and_simplifies():
     """Single pendulum: m l^2 phi'' = -m g l sin(phi) (after sin^2 + cos^2 = 1)."""
-    from symosc.models import n_link_pendulum
-
     from symosc.mechanics import LagrangianSystem
+    from symosc.models import n_link_pendulum
 
     system = n_link_pendulum(1)
     raw = LagrangianSystem(system.kinetic_energy, system.potential_energy, system.coordinates, simplify=False)
