@@ -538,6 +538,11 @@ class LagrangianSystem(SymPyPrintable):
         return reduce_coordinates(self, parametrization, coordinates)
 
     # ------------------------------------------------------------------ numbers
+    @cached_property
+    def _simulation_cache(self) -> dict:
+        """Compiled pieces :meth:`simulate` reuses (first-order form, energy); not pickled (a cached property)."""
+        return {}
+
     #: points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>` (catalogue models set it;
     #: assign a :class:`~symosc.mechanics.Geometry` to animate any system)
     geometry = None

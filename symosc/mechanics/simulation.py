@@ -475,14 +475,15 @@ def simulate_lagrangian(
     """Implementation of :meth:`LagrangianSystem.simulate` and :meth:`FirstOrderSystem.simulate`."""
     start = _time.perf_counter()
     times = output_times(t)
-    fo = system.first_order()
+    cache = system._simulation_cache  # the first-order form and the energy, compiled once per system
+    fo = cache.get("first_order") or cache.setdefault("first_order", system.first_order())
     y0 = initial_state(system.coordinates, initial)
     if not isinstance(values, Mapping):
         raise ParameterError(f"values must be a mapping of parameter names to numbers, got {type(values).__name__}")
     rhs = fo.rhs(values, backend=backend)
     jac = fo.jacobian(values, backend=backend) if method in ("LSODA", "Radau", "BDF") else None
     states, nfev = integrate_state(rhs, jac, times, y0, method=method, rtol=rtol, atol=atol)
-    energy, name, conserved = _energy_along(system, fo, values, times, states)
+    energy, name, conserved = _energy_along(system, cache, values, times, states)
     used = _used_values(system.parameters, values)
     return Trajectory(
         t=times,
@@ -507,23 +508,25 @@ def _used_values(parameters: tuple, values: Mapping[Any, Any]) -> dict[str, floa
     return {p.name: float(v) for p, v in zip(parameters, resolve(parameters, values), strict=True)}
 
 
-def _energy_along(system: Any, fo: Any, values: Mapping, times: np.ndarray, states: np.ndarray):
-    """``(E over t, its name, conserved)`` for a Lagrangian system."""
+def _energy_along(system: Any, cache: dict, values: Mapping, times: np.ndarray, states: np.ndarray):
+    """``(E over t, its name, conserved)`` for a Lagrangian system (the compiled energy kept in ``cache``)."""
     from ..numeric import compile, resolve
     from ..symbols import t
 
-    conserved_forces = system.dissipation == 0 and all(f == 0 for f in system.forces)
-    _T2, T1, T0 = system.kinetic_energy_parts
-    if not system.is_rheonomic and conserved_forces:
-        expr, name, conserved = (
-            (system.energy, "energy", True)
-            if T1 == 0 and T0 == 0
-            else (system.energy_function, "Jacobi integral", True)
-        )
-    else:
-        expr, name, conserved = system.energy, "energy (not conserved)", False
-    args = [t, *system.coordinates, *system.velocities, *system.parameters]
-    fn = compile(expr, args, name="energy", check=False)
+    if "energy" not in cache:
+        conserved_forces = system.dissipation == 0 and all(f == 0 for f in system.forces)
+        _, T1, T0 = system.kinetic_energy_parts
+        if not system.is_rheonomic and conserved_forces:
+            expr, name, conserved = (
+                (system.energy, "energy", True)
+                if T1 == 0 and T0 == 0
+                else (system.energy_function, "Jacobi integral", True)
+            )
+        else:
+            expr, name, conserved = system.energy, "energy (not conserved)", False
+        args = [t, *system.coordinates, *system.velocities, *system.parameters]
+        cache["energy"] = (compile(expr, args, name="energy", check=False), name, conserved)
+    fn, name, conserved = cache["energy"]
     p = [float(v) for v in resolve(system.parameters, values)]
     cols = [states[:, i] for i in range(states.shape[1])]
     e = np.broadcast_to(np.asarray(fn.raw(times, *cols, *p), dtype=float), times.shape).copy()
