@@ -52,6 +52,7 @@ _SUBPACKAGES = frozenset(
         "operational",
         "periodic",
         "scene",
+        "visual",
     }
 )
 

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-__all__ = ["SymPyPrintable", "latex_value", "strip_math"]
+__all__ = ["SymPyPrintable", "latex", "latex_value", "mathml", "strip_math"]
 
 _MAX_FIELDS = 6
 _MAX_ITEMS = 6
@@ -29,6 +29,68 @@ def strip_math(text: str) -> str:
         if s.startswith(d) and s.endswith(d) and len(s) >= 2 * len(d):
             return s[len(d) : -len(d)].strip()
     return s
+
+
+#: symbol names printed as another symbol: the small parameter of the series is ``eps`` in code, epsilon in print
+_ALIASES = {"eps": (r"\varepsilon", "&#x3B5;")}
+
+
+def _special_symbols(expr: Any) -> list[sp.Symbol]:
+    syms = getattr(expr, "free_symbols", set())
+    return [s for s in syms if s.name in _ALIASES or s.name.endswith(("_dot", "_ddot"))]
+
+
+def latex(expr: Any, **settings: Any) -> str:
+    r"""``sympy.latex`` with symosc's conventions: ``eps`` as ``\varepsilon``, ``q_dot``/``q_ddot`` as dotted ``q``.
+
+    >>> import sympy as sp
+    >>> print(latex(1 - sp.Symbol("eps") ** 2 / 16 + sp.Symbol("phi1_dot")))
+    - \frac{\varepsilon^{2}}{16} + \dot{\phi_{1}} + 1
+    """
+    names = {}
+    for s in _special_symbols(expr):
+        if s.name in _ALIASES:
+            names[s] = _ALIASES[s.name][0]
+        else:
+            base, accent = (s.name[:-5], r"\ddot") if s.name.endswith("_ddot") else (s.name[:-4], r"\dot")
+            names[s] = f"{accent}{{{sp.latex(sp.Symbol(base))}}}"
+    names.update(settings.pop("symbol_names", {}))
+    return sp.latex(expr, symbol_names=names, **settings)
+
+
+def mathml(expr: Any) -> str:
+    """Presentation MathML of ``expr`` (no ``<math>`` wrapper), with the conventions of :func:`latex`.
+
+    Browsers render MathML natively, so a report that carries it shows mathematics without scripts or fonts to
+    download.
+
+    >>> import sympy as sp
+    >>> mathml(sp.Symbol("eps"))
+    '<mi>&#x3B5;</mi>'
+    """
+    special = _special_symbols(expr)
+    swap, marks = {}, {}
+    for k, s in enumerate(special):
+        tag = "symoscmark" + "".join(chr(ord("a") + int(d)) for d in str(k))
+        swap[s] = sp.Symbol(tag)
+        if s.name in _ALIASES:
+            marks[tag] = f"<mi>{_ALIASES[s.name][1]}</mi>"
+        else:
+            from sympy.printing.conventions import split_super_sub
+
+            ddot = s.name.endswith("_ddot")
+            base, accent = (s.name[:-5], "&#xA8;") if ddot else (s.name[:-4], "&#x2D9;")
+            name, _, subs = split_super_sub(base)
+            core = sp.mathml(sp.Symbol(name), printer="presentation")
+            text = f"<mover accent='true'>{core}<mo>{accent}</mo></mover>"  # the dot over the letter, not the index
+            if subs:
+                text = f"<msub>{text}<mrow>{''.join(f'<mi>{x}</mi>' for x in subs)}</mrow></msub>"
+            marks[tag] = text
+    e = expr.xreplace(swap) if swap else expr
+    out = sp.mathml(e, printer="presentation")
+    for tag, text in marks.items():
+        out = out.replace(f"<mi>{tag}</mi>", text)
+    return out
 
 
 def _text(s: str) -> str:
@@ -109,7 +171,7 @@ class SymPyPrintable:
     >>> import sympy as sp
     >>> from symosc.nonlinear import limit_cycle
     >>> print(sp.latex(limit_cycle((1 - sp.Symbol("x") ** 2) * sp.Symbol("v"), 2).frequency))
-    1 - \\frac{eps^{2}}{16} + O\\left(eps^{3}\\right)
+    1 - \\frac{\\varepsilon^{2}}{16} + O\\left(\\varepsilon^{3}\\right)
     """
 
     __slots__ = ()

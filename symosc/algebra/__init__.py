@@ -78,6 +78,7 @@ from .functions import (
     series_converges,
     spectral_decomposition,
 )
+from .trig import trig_reduce, trig_reduce_groups
 
 __all__ = [
     "AnalyticContinuation",
@@ -132,6 +133,8 @@ __all__ = [
     "spectral_decomposition",
     "triangular_adjugate_series",
     "triangular_inverse_series",
+    "trig_reduce",
+    "trig_reduce_groups",
 ]
 
 #: module paths before the split into families (old -> new): deprecated, kept so that code and pickles written

@@ -411,10 +411,16 @@ class QuasiOptimalRun(SymPyPrintable):
         """
 
         ax = new_axes(ax)
-        for x, u, t0, t1 in zip(self.events_x[:-1], self.controls, self.events_t[:-1], self.events_t[1:], strict=True):
+        for k, (x, u, t0, t1) in enumerate(
+            zip(self.events_x[:-1], self.controls, self.events_t[:-1], self.events_t[1:], strict=True)
+        ):
             th = np.linspace(0, 1, points) * (t1 - t0)
             d = x - np.array([u, 0.0])
-            ax.plot(u + d[0] * np.cos(th) + d[1] * np.sin(th), -d[0] * np.sin(th) + d[1] * np.cos(th), "b-")
+            label = "trajectory (arcs about (±u_m, 0))" if k == 0 else None
+            ax.plot(
+                u + d[0] * np.cos(th) + d[1] * np.sin(th), -d[0] * np.sin(th) + d[1] * np.cos(th), "b-", label=label
+            )
+        ax.legend(loc="best", fontsize="small")
         ax.set_xlabel("x1")
         ax.set_ylabel("x1'/omega")
         ax.set_aspect("equal")

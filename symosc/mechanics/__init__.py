@@ -28,6 +28,7 @@ from .first_order import FirstOrderSystem
 from .governor import GovernorStatics, governor_statics, stodola_time_constant, vyshnegradsky_cubic
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
+from .simulation import Geometry, Trajectory
 from .variational import (
     FirstOrderReduction,
     ForceDecomposition,
@@ -45,6 +46,7 @@ __all__ = [
     "FirstOrderReduction",
     "FirstOrderSystem",
     "ForceDecomposition",
+    "Geometry",
     "GovernorStatics",
     "HamiltonJacobiSeparation",
     "HamiltonianSystem",
@@ -55,6 +57,7 @@ __all__ = [
     "RouthReduction",
     "StabilityVerdict",
     "SteadyMotion",
+    "Trajectory",
     "VariationalEquations",
     "action_variable",
     "action_variable_numeric",

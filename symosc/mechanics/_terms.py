@@ -148,9 +148,23 @@ def _d_factor(f: sp.Expr, v: sp.Symbol) -> sp.Expr:
         return f.exp * f.base ** (f.exp - 1) * _d_factor(f.base, v)
     if isinstance(f, (sp.sin, sp.cos)):
         u = f.args[0]
-        du = sp.S.One if u == v else u.diff(v)
+        du = sp.S.One if u == v else _d_linear(u, v)
         return (sp.cos(u) if isinstance(f, sp.sin) else -sp.sin(u)) * du
     return f.diff(v)
+
+
+def _d_linear(u: sp.Expr, v: sp.Symbol) -> sp.Expr:
+    """du/dv, read off directly when ``u`` is a sum of numeric multiples of symbols (``phi1 - phi2``)."""
+    if u.is_Add:
+        total = sp.S.Zero
+        for a in u.args:
+            c, x = a.as_coeff_Mul()
+            if not x.is_Symbol:
+                return u.diff(v)
+            if x == v:
+                total += c
+        return total
+    return u.diff(v)
 
 
 def d_term(term: sp.Expr, v: sp.Symbol) -> sp.Expr:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
@@ -190,6 +190,49 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         if backend == "c":
             return _ode.CFirstOrder(parts, n, values, jacobian=jacobian)
         return _ode.NumpyFirstOrder(parts, n, values)
+
+    def simulate(
+        self,
+        t: Any,
+        initial: Mapping[Any, Any] | Sequence[float],
+        values: Mapping[Any, Any],
+        *,
+        method: str = "LSODA",
+        rtol: float = 1e-9,
+        atol: float = 1e-11,
+        backend: str = "auto",
+    ) -> Any:
+        """Integrate ``x' = f(t, x)`` with the compiled :meth:`rhs` and :meth:`jacobian`; see
+        :meth:`LagrangianSystem.simulate <symosc.mechanics.LagrangianSystem.simulate>` for the arguments.
+
+        Parameters
+        ----------
+        t : array_like or float
+            Output times, or a duration.
+        initial : mapping or array_like
+            Coordinate name (and ``"<name>_dot"``) -> initial value, or the full state.
+        values : mapping
+            Parameter values.
+        method : {"LSODA", "DOP853", "RK45", "Radau", "BDF"}
+            Integrator.
+        rtol, atol : float
+            Tolerances.
+        backend : {"auto", "c", "numpy"}
+            Evaluator of the right-hand side.
+
+        Returns
+        -------
+        Trajectory
+
+        Examples
+        --------
+        >>> from symosc.models import n_link_pendulum
+        >>> fo = n_link_pendulum(1).first_order()
+        >>> traj = fo.simulate(1.0, {"phi1": 0.1}, {"m1": 1.0, "l1": 1.0, "g": 9.81})
+        >>> traj.t.size
+        1001
+        """
+        return self.system.simulate(t, initial, values, method=method, rtol=rtol, atol=atol, backend=backend)
 
     def energy_function(self, values: Mapping[Any, Any]) -> Callable[[float, np.ndarray], float]:
         """Numeric E(t, x) = T + V with the parameters fixed (useful to check conservation).

@@ -84,6 +84,11 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         then carry multipliers: see :attr:`constrained` (Bulgakov (1954), §3.3-3.5).
     nonholonomic : sequence of Expr, optional
         Non-holonomic constraints linear in the velocities, ``E(q, t) q' + e(q, t) = 0`` (eq. (3.28)).
+    simplify : bool
+        Apply the identities ``sin**2 + cos**2 = 1``, ``sin u sin v + cos u cos v = cos(u - v)`` and
+        ``sin u cos v - cos u sin v = sin(u - v)`` to the kinetic energy's terms before anything is derived
+        (:func:`symosc.algebra.trig_reduce_groups`: a hash lookup per term, no search), so that the mass matrix, the
+        forces, LaTeX and generated code come out in the short form.  ``False`` keeps the terms as written.
 
     Examples
     --------
@@ -117,7 +122,9 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         forces: Sequence[Any] | Mapping[Any, Any] | None = None,
         constraints: Sequence[Any] = (),
         nonholonomic: Sequence[Any] = (),
+        simplify: bool = True,
     ) -> None:
+        self._simplify = bool(simplify)
         q, replace = _plain_coordinates(coordinates)
         self._q = q
         self._qd = tuple(dot(s) for s in q)
@@ -300,10 +307,15 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         collected by its factor that depends on the coordinates and time."""
         parts = _terms.velocity_parts(self._T, self._qd, "T")
         dep = self._dependent
-        return {
+        out = {
             k: _terms.group_terms([x for term in v for x in _terms.expand_terms(term, dep)], dep)
             for k, v in parts.items()
         }
+        if self._simplify:  # sin**2 + cos**2 and angle-difference pairs, found by hashing (presentation-ready M, F)
+            from ..algebra.trig import trig_reduce_groups
+
+            out = {k: trig_reduce_groups(g) for k, g in out.items()}
+        return out
 
     @staticmethod
     def _sum(groups: _terms.Groups) -> sp.Expr:
@@ -317,6 +329,8 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         for key, groups in self._parts.items():
             if len(key) == 2:
                 i, j = key
+                if self._simplify:  # common factors of each coefficient taken out: l1*(l2*m3 + lc2*m2)*cos(...)
+                    groups = [(d, _common_factor(c)) for d, c in groups]
                 if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
                     M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
                 else:
@@ -326,6 +340,8 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
     @cached_property
     def forcing(self) -> sp.Matrix:
         """F(q, q', t) in M q'' = F: everything but the acceleration terms, moved to the right."""
+        if self._simplify:
+            return self._forcing_collected()
         q, qd = self._q, self._qd
         n = len(q)
         qt = [*q, t]
@@ -358,6 +374,65 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
                 pieces[k].append(-self._R.diff(qd[k]))
             pieces[k].append(self._Q[k])
         return sp.Matrix([sp.Add(*p) for p in pieces])
+
+    def _forcing_collected(self) -> sp.Matrix:
+        """The same F as :attr:`forcing`, each term filed at once under its factor in the coordinates and time and
+        its velocity monomial, so that the product rule's velocity terms cancel and like terms merge without any
+        ``expand``; each coefficient's common factors are taken out (``-g*l1*(m1 + m2)*sin(phi1)``)."""
+        q, qd = self._q, self._qd
+        n = len(q)
+        dep = self._dependent
+        velocity = {v: i for i, v in enumerate(qd)}
+        acc: list[dict] = [{} for _ in range(n)]
+
+        def file(k: int, expr: sp.Expr, mono: tuple, scale: int) -> None:
+            for x in _distribute(expr, dep | set(qd)):
+                num, rest = x.as_coeff_Mul()
+                d, c, m = [], [], list(mono)
+                for f in sp.Mul.make_args(rest):
+                    base, exp = (f.base, f.exp) if f.is_Pow and f.exp.is_Integer and f.exp > 0 else (f, 1)
+                    if base in velocity:
+                        m += [velocity[base]] * int(exp)
+                    elif f.free_symbols & dep:
+                        d.append(f)
+                    else:
+                        c.append(f)
+                key = (tuple(d), tuple(sorted(m)))
+                acc[k].setdefault(key, []).append(scale * num * _terms._product(c))
+
+        qt = [*q, t]
+        for key, groups in self._parts.items():
+            grads = _terms.grouped_gradient(groups, qt)
+            for k in range(n):  # dT/dq_k: the coefficient's gradient times the velocity monomial
+                for x in grads[k]:
+                    file(k, x, key, 1)
+            for v, g in enumerate(grads):  # d/dt of dT/dq'_i along the motion (accelerations excluded)
+                rate_mono = (v,) if v < n else ()
+                for x in g:
+                    if len(key) == 1:
+                        file(key[0], x, rate_mono, -1)
+                    elif len(key) == 2 and key[0] == key[1]:
+                        file(key[0], x, (*rate_mono, key[0]), -2)
+                    elif len(key) == 2:
+                        file(key[0], x, (*rate_mono, key[1]), -1)
+                        file(key[1], x, (*rate_mono, key[0]), -1)
+        dV = _terms.grouped_gradient(self._potential_groups, q)
+        for k in range(n):
+            for x in dV[k]:
+                file(k, x, (), -1)
+            if self._R != 0:
+                file(k, self._R.diff(qd[k]), (), -1)
+            if self._Q[k] != 0:
+                file(k, self._Q[k], (), 1)
+        rows = []
+        for k in range(n):
+            terms = []
+            for (d, mono), consts in acc[k].items():
+                c = sp.Add(*consts)
+                if c != 0:
+                    terms.append(_common_factor(c) * _terms._product(d) * sp.Mul(*(qd[i] for i in mono)))
+            rows.append(sp.Add(*terms))
+        return sp.Matrix(rows)
 
     @cached_property
     def _potential_groups(self) -> _terms.Groups:
@@ -578,8 +653,146 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
 
         return to_sympy_mechanics(self)
 
+    # ------------------------------------------------------------------ numbers
+    @cached_property
+    def _simulation_cache(self) -> dict:
+        """Compiled pieces :meth:`simulate` reuses (first-order form, energy); not pickled (a cached property)."""
+        return {}
+
+    #: points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>` (catalogue models set it;
+    #: assign a :class:`~symosc.mechanics.Geometry` to animate any system)
+    geometry = None
+
+    def simulate(
+        self,
+        t: Any,
+        initial: Mapping[Any, Any] | Sequence[float],
+        values: Mapping[Any, Any],
+        *,
+        method: str = "LSODA",
+        rtol: float = 1e-9,
+        atol: float = 1e-11,
+        backend: str = "auto",
+        geometry: Any = None,
+    ):
+        """Integrate the equations of motion and return a :class:`~symosc.mechanics.Trajectory`.
+
+        The right-hand side and its analytic Jacobian are the compiled ones of :meth:`first_order` (generated C when
+        a compiler exists); a prescribed motion such as a vibrating pivot is part of the equations, so it is
+        simulated as it is.
+
+        Parameters
+        ----------
+        t : array_like or float
+            Output times (increasing; the motion starts at ``t[0]``), or a duration ``T`` (0..T, 1001 points).
+        initial : mapping or array_like
+            Coordinate name -> initial value; velocities ``"<name>_dot"`` (zero unless given).  An array is the
+            full state ``(q, q')``.
+        values : mapping
+            Parameter values keyed by Symbol or name (for a vibrating pivot also ``a`` and ``p``).
+        method : {"LSODA", "DOP853", "RK45", "Radau", "BDF"}
+            Integrator: LSODA (``scipy.integrate.odeint``, switches to BDF with the analytic Jacobian when the
+            problem is stiff), or a ``solve_ivp`` method (Radau and BDF use the analytic Jacobian).
+        rtol, atol : float
+            Relative and absolute tolerances.
+        backend : {"auto", "c", "numpy"}
+            Evaluator of the right-hand side (see :meth:`FirstOrderSystem.rhs`).
+        geometry : Geometry, optional
+            Points and lines for :meth:`Trajectory.animate`; default :attr:`geometry`.
+
+        Returns
+        -------
+        Trajectory
+            Times, coordinates and velocities by name, the energy (or Jacobi integral) and its drift when it is
+            conserved.
+
+        Raises
+        ------
+        ConvergenceError
+            When the integrator cannot reach the last time.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from symosc.models import n_link_pendulum
+        >>> pend = n_link_pendulum(2)
+        >>> values = {"m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "g": 9.81}
+        >>> traj = pend.simulate(np.linspace(0, 5, 501), {"phi1": 0.3, "phi2": -0.2}, values, rtol=1e-11)
+        >>> sorted(traj.q), bool(traj.energy_drift < 1e-8)
+        (['phi1', 'phi2'], True)
+
+        See Also
+        --------
+        first_order, symosc.mechanics.Trajectory
+        """
+        from .simulation import simulate_lagrangian
+
+        if self.is_constrained:
+            raise ModelError("simulate() needs an unconstrained system: call reduce_coordinates(...) first")
+        return simulate_lagrangian(
+            self, t, initial, values, method=method, rtol=rtol, atol=atol, backend=backend, geometry=geometry
+        )
+
     def hamiltonian(self):
         """The Legendre transform: a :class:`~symosc.mechanics.HamiltonianSystem` (Bulgakov (1954), §3.11)."""
         from .analytic.hamiltonian import HamiltonianSystem
 
         return HamiltonianSystem.from_lagrangian(self)
+
+
+def _distribute(expr: sp.Expr, dep: set) -> list[sp.Expr]:
+    """The additive terms of ``expr`` with every product distributed over its sums that contain ``dep`` symbols
+    (sums of constants are kept whole); no other rewriting."""
+    out: list[sp.Expr] = []
+    for term in sp.Add.make_args(expr):
+        if not term.is_Mul:
+            out.append(term)
+            continue
+        parts: list[list[sp.Expr]] = [[]]
+        for f in term.args:
+            if f.is_Add and f.free_symbols & dep:
+                inner = [x for a in f.args for x in _distribute(a, dep)]
+                parts = [[*p, x] for p in parts for x in inner]
+            else:
+                for p in parts:
+                    p.append(f)
+        out.extend(sp.Mul(*p) for p in parts)
+    return out
+
+
+def _common_factor(c: sp.Expr) -> sp.Expr:
+    """``c`` with the factors common to all its terms taken out: ``g*l1*m1 + g*l1*m2 -> g*l1*(m1 + m2)`` (powers of
+    symbols and a common rational coefficient; a linear pass, unlike ``sympy.factor_terms``)."""
+    if c.is_Mul:
+        return sp.Mul(*(_common_factor(f) if f.is_Add else f for f in c.args))
+    terms = sp.Add.make_args(c)
+    if len(terms) < 2:
+        return c
+    split = []
+    for term in terms:
+        num, rest = term.as_coeff_Mul()
+        powers: dict = {}
+        for f in sp.Mul.make_args(rest):
+            base, exp = (f.base, f.exp) if f.is_Pow and f.exp.is_Integer and f.exp > 0 else (f, sp.S.One)
+            powers[base] = powers.get(base, 0) + exp
+        split.append((num, powers))
+    common = dict(split[0][1])
+    for _, powers in split[1:]:
+        common = {b: min(e, powers[b]) for b, e in common.items() if b in powers}
+        if not common:
+            break
+    nums = [n for n, _ in split]
+    num = abs(nums[0]) if nums[0].is_Rational and nums[0] != 0 and all(abs(n) == abs(nums[0]) for n in nums) else 1
+    if all(n.is_negative for n in nums):  # -g*l1*(m1 + m2), not g*l1*(-m1 - m2)
+        num = -num
+    if not common and num == 1:
+        return c
+
+    def power(b: sp.Expr, e: Any) -> sp.Expr:
+        return b if e == 1 else b**e
+
+    inner = [
+        sp.Mul(n / num, *(power(b, e - common.get(b, 0)) for b, e in powers.items() if e != common.get(b, 0)))
+        for n, powers in split
+    ]
+    return sp.Mul(num, *(power(b, e) for b, e in common.items()), sp.Add(*inner))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -267,6 +267,59 @@ class LinearModel(ModelEquality, SymPyPrintable):
         idx = np.argmax(np.abs(Phi), axis=-2)[..., None, :]
         sign = np.sign(np.take_along_axis(Phi, idx, axis=-2))
         return omega, Phi * np.where(sign == 0, 1.0, sign)
+
+    # ------------------------------------------------------------------ simulation
+    def simulate(
+        self,
+        t: Any,
+        initial: Mapping[Any, Any] | Sequence[float],
+        values: Mapping[Any, Any],
+        *,
+        method: str = "LSODA",
+        rtol: float = 1e-9,
+        atol: float = 1e-11,
+        geometry: Any = None,
+    ) -> Any:
+        """Integrate ``M q'' + D q' + K(t) q = f(t)`` (periodic stiffness and forcing included).
+
+        Parameters
+        ----------
+        t : array_like or float
+            Output times (increasing), or a duration ``T`` (0..T, 1001 points).
+        initial : mapping or array_like
+            Coordinate name -> initial deviation, ``"<name>_dot"`` -> initial rate (zero unless given), or the
+            full state ``(q, q')``.
+        values : mapping
+            Parameter values keyed by Symbol or name.
+        method : {"LSODA", "DOP853", "RK45", "Radau", "BDF"}
+            Integrator (the Jacobian ``[[0, I], [-M^-1 K(t), -M^-1 D]]`` is exact).
+        rtol, atol : float
+            Tolerances.
+        geometry : Geometry, optional
+            Points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>`.
+
+        Returns
+        -------
+        Trajectory
+            With the energy ``(q'^T M q' + q^T K q) / 2``, conserved when ``D = 0``, ``f = 0`` and ``K`` is constant
+            and symmetric.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from symosc.models import n_link_pendulum
+        >>> lin = n_link_pendulum(1).linearize()
+        >>> traj = lin.simulate(np.linspace(0, np.pi, 3), {"phi1": 0.1}, {"m1": 1.0, "l1": 1.0, "g": 4.0})
+        >>> traj.q["phi1"].round(8).tolist()        # 0.1 cos(2 t)
+        [0.1, -0.1, 0.1]
+
+        See Also
+        --------
+        symosc.mechanics.LagrangianSystem.simulate
+        """
+        from .simulation import simulate_linear
+
+        return simulate_linear(self, t, initial, values, method=method, rtol=rtol, atol=atol, geometry=geometry)
 
     # ------------------------------------------------------------------ control systems
     def transfer_function(

@@ -28,6 +28,8 @@ use; choose it to reproduce their numbers.  The same flag must be given to the r
 
 from __future__ import annotations
 
+import dataclasses
+import itertools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -42,6 +44,7 @@ from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ModelError, ParameterError
+from ..mechanics import LinearModel
 from ..numeric import bind, resolve
 from ..numeric import compile as _compile
 
@@ -397,6 +400,113 @@ class BodyOnSprings(ModelEquality, SymPyPrintable):
             )
         out = np.asarray(f(*resolve(self.parameters6, values)), dtype=float)
         return out[:, :6], out[:, 6:12], out[:, 12:].T
+
+    # ------------------------------------------------------------------ simulation
+    def linear_model(self) -> LinearModel:
+        """The 3-DOF model as a :class:`~symosc.mechanics.LinearModel` ``M q'' + K q = 0`` in ``(y, theta_z, theta_x)``.
+
+        >>> body_on_springs().linear_model().coordinates
+        (y, theta_z, theta_x)
+        """
+        n = len(self.coordinates)
+        return LinearModel(
+            M=self.M, D=sp.zeros(n, n), K=self.K, f=sp.zeros(n, 1), coordinates=tuple(self.coordinates), point={}
+        )
+
+    def simulate(
+        self,
+        t: Any,
+        initial: Mapping[Any, Any] | Sequence[float],
+        values: Mapping[Any, Any],
+        *,
+        projection: str = "front",
+        exaggeration: float | None = None,
+        method: str = "LSODA",
+        rtol: float = 1e-9,
+        atol: float = 1e-12,
+    ) -> Any:
+        """Free oscillations of the 3-DOF model, with a drawing of the stand for ``Trajectory.animate``.
+
+        Parameters
+        ----------
+        t : array_like or float
+            Output times, or a duration.
+        initial : mapping or array_like
+            ``y``, ``theta_z``, ``theta_x`` (and ``"<name>_dot"``) at the start, e.g. the static deflection
+            ``ModalData.q0`` of a released force.
+        values : mapping
+            Numbers for :attr:`parameters`.
+        projection : {"front", "side"}
+            The plane drawn: ``"front"`` looks along ``z`` (springs spread over ``x``, rotation ``theta_z``
+            visible), ``"side"`` looks along ``x`` (spread over ``z``, rotation ``theta_x``).
+        exaggeration : float, optional
+            Factor applied to the drawn displacements (default: the largest displacement is drawn as 8 % of the
+            stand's span).  The trajectory itself is unscaled.
+        method : {"LSODA", "DOP853", "RK45", "Radau", "BDF"}
+            Integrator.
+        rtol, atol : float
+            Tolerances.
+
+        Returns
+        -------
+        Trajectory
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> model = body_on_springs(product_of_inertia="dissertation")
+        >>> vals = dict(m=15000, rx=2, rz=0.87, Izz=44000, Ixx=3000, Ixz=400, Lx=4, Lz=1.74,
+        ...             k1=7.4e5, k2=7.4e5, k3=7.4e5, k4=7.4e5)
+        >>> q0 = model.modal(vals, force=[0, -2000, 0, 0]).q0
+        >>> traj = model.simulate(np.linspace(0, 1, 101), q0, vals)
+        >>> bool(traj.energy_drift < 1e-6)
+        True
+        """
+        from .._validate import check_choice, check_positive
+
+        check_choice("projection", projection, ("front", "side"))
+        traj = self.linear_model().simulate(t, initial, values, method=method, rtol=rtol, atol=atol)
+        pos = self.sensor_positions(values)
+        span = float(max(np.ptp(pos[:, 0 if projection == "front" else 1]), 1e-9))
+        C = self.matrices(values)[2]
+        largest = float(np.max(np.abs(traj.states[:, :3] @ C.T))) or 1.0
+        scale = check_positive("exaggeration", exaggeration) if exaggeration is not None else 0.08 * span / largest
+        geometry = self._geometry(projection, scale, span)
+        return dataclasses.replace(traj, geometry=geometry)
+
+    def _geometry(self, projection: str, scale: float, span: float) -> Any:
+        """Springs and the body's outline in the chosen plane; displacements multiplied by ``scale``."""
+        from ..mechanics import Geometry
+
+        y, tz, tx = self.coordinates
+        axis = 0 if projection == "front" else 1
+        height, ground = 0.25 * span, -0.4 * span
+        points: dict[str, tuple] = {}
+        lines = []
+        for j, pnt in enumerate(self.positions, start=1):
+            x, z = pnt
+            disp = y + (x - self.rx) * tz - (z - self.rz) * tx
+            points[f"ground{j}"] = (pnt[axis], ground)
+            points[f"spring{j}"] = (pnt[axis], scale * disp)
+            chain = [f"ground{j}"]
+            for k in range(1, 9):  # a zigzag between the ground and the attachment point
+                frac = sp.Rational(k, 9)
+                side = 0.03 * span * (1 if k % 2 else -1)
+                points[f"_coil{j}_{k}"] = (pnt[axis] + side, ground + frac * (scale * disp - ground))
+                chain.append(f"_coil{j}_{k}")
+            chain.append(f"spring{j}")
+            lines += list(itertools.pairwise(chain))
+        along = [p[axis] for p in self.positions]
+        lo, hi = sp.Min(*along), sp.Max(*along)
+        center = self.rz if projection == "front" else self.rx
+        for name, u in (("left", lo), ("right", hi)):  # the body's outline through the center of mass
+            x, z = (u, center) if projection == "front" else (center, u)
+            disp = scale * (y + (x - self.rx) * tz - (z - self.rz) * tx)
+            points[f"{name}_bottom"] = (u, disp)
+            points[f"{name}_top"] = (u, disp + height)
+        lines += [("left_bottom", "right_bottom"), ("right_bottom", "right_top"), ("right_top", "left_top")]
+        lines += [("left_top", "left_bottom")]
+        return Geometry(points, tuple(lines), (), tuple(f"ground{j}" for j in range(1, self.n_springs + 1)))
 
     # ------------------------------------------------------------------ forward modal solver
     def modal(self, values: Mapping[Any, Any], force: Sequence[float] | None = None) -> ModalData:

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import sympy as sp
 
 from .._validate import check_bool, check_choice, validated
 from ..errors import ModelError, ParameterError
-from ..mechanics import LagrangianSystem, LinearModel
+from ..mechanics import Geometry, LagrangianSystem, LinearModel
 from ..symbols import dot, t
 
 __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "n_link_pendulum_linearization", "pendulum_symbols"]
@@ -150,7 +152,37 @@ def n_link_pendulum(
         if links == "rigid":
             T += inertia[k] * dot(phi[k]) ** 2 / 2
         V += m[k] * g * y
-    return LagrangianSystem(T, V, list(phi))
+    system = LagrangianSystem(T, V, list(phi))
+    system.geometry = _chain_geometry(n, links, up, y0, s)
+    return system
+
+
+def _chain_geometry(n: int, links: str, up: int, y0: sp.Expr, s: dict) -> Geometry:
+    """Pivot, hinges and bodies of the chain in the plane of motion (for animations).
+
+    Point links: the masses at the link ends.  Rigid links: hinge ``k`` at ``l_k`` along link ``k``; the last link is
+    drawn as a uniform bar of length ``2 lc_n`` (its own length does not enter the equations), the centers of mass
+    as bodies.
+    """
+    phi, l, lc = s["phi"], s["l"], s["lc"]
+    points: dict[str, tuple[sp.Expr, sp.Expr]] = {"pivot": (sp.S.Zero, y0)}
+    x, y = sp.S.Zero, y0
+    chain = ["pivot"]
+    masses = []
+    for k in range(n):
+        direction = (sp.sin(phi[k]), up * sp.cos(phi[k]))
+        if links == "rigid":
+            points[f"m{k + 1}"] = (x + lc[k] * direction[0], y + lc[k] * direction[1])
+            masses.append(f"m{k + 1}")
+        reach = l[k] if (links == "point" or k < n - 1) else 2 * lc[k]
+        x, y = x + reach * direction[0], y + reach * direction[1]
+        name = f"m{k + 1}" if links == "point" else (f"hinge{k + 1}" if k < n - 1 else "end")
+        points[name] = (x, y)
+        chain.append(name)
+        if links == "point":
+            masses.append(name)
+    lines = tuple(itertools.pairwise(chain))
+    return Geometry(points, lines, tuple(masses), ("pivot",))
 
 
 @validated

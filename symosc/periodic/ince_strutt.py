@@ -25,7 +25,7 @@ import sympy as sp
 
 from .._deprecation import deprecated_attribute as _deprecated_attribute
 from .._deprecation import renamed_keyword
-from .._plotting import plot_method
+from .._plotting import label_curves, outside_legend, plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
@@ -238,16 +238,17 @@ class InceStruttDiagram(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None, a_range: tuple[float, float] = (-2.0, 14.0), shade: bool = True) -> Any:
-        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``.
+        """The paper's Fig. 1: frequency parameter ``a`` (horizontal) vs amplitude parameter ``q``, each curve
+        labelled directly (labels placed where they overlap neither each other nor the legend).
 
         Parameters
         ----------
         ax : matplotlib Axes, optional
-            Axes to draw on; a new figure when omitted.
-        a_range : tuple of float
-            Limits ``(a_min, a_max)`` of the horizontal axis, ``a_min < a_max``.
+            Draw here; a new figure otherwise.
+        a_range : (float, float)
+            Range of the frequency parameter shown.
         shade : bool
-            Shade the stable bands ``a_n < a < b_(n+1)`` in grey.
+            Shade the stable bands ``a_n < a < b_(n+1)``.
 
         Returns
         -------
@@ -257,25 +258,30 @@ class InceStruttDiagram(SymPyPrintable):
         import matplotlib.pyplot as plt
 
         if ax is None:
-            _, ax = plt.subplots(figsize=(7, 5))
+            _, ax = plt.subplots(figsize=(8, 5), layout="constrained")
         if shade:  # stable bands a_n < a < b_{n+1}; the last band is open to the right
             for n in range(self.n_max + 1):
                 right = self.b_curves[n + 1] if n + 1 in self.b_curves else np.full(self.q.shape, a_range[1])
                 ax.fill_betweenx(self.q, self.a_curves[n], np.maximum(right, self.a_curves[n]), color="0.85")
+        labels = []
         for kind, curves, ls in (("a", self.a_curves, "k-"), ("b", self.b_curves, "k--")):
             for n, c in curves.items():
                 ax.plot(c, self.q, ls, lw=1.2)
-                inside = np.nonzero((c >= a_range[0]) & (c <= a_range[1]))[0]
-                if inside.size:
-                    k = inside[int(0.85 * (inside.size - 1))]
-                    ax.annotate(
-                        f"${kind}_{n}$", (c[k], self.q[k]), fontsize=9, xytext=(3, 0), textcoords="offset points"
-                    )
+                labels.append((c, self.q, f"${kind}_{n}$"))
         ax.set_xlim(*a_range)
         ax.set_ylim(self.q[0], self.q[-1])
+        from matplotlib.lines import Line2D
+        from matplotlib.patches import Patch
+
+        handles = [Line2D([], [], color="k", ls="-", label="$a_n$ (even)"), Line2D([], [], color="k", ls="--")]
+        handles[1].set_label("$b_n$ (odd)")
+        if shade:
+            handles.append(Patch(color="0.85", label="stable"))
+        outside_legend(ax, handles=handles)
+        label_curves(ax, labels)  # direct labels, none on top of another (a_n and b_(n+1) approach at large q)
         ax.set_xlabel("frequency parameter $a$")
         ax.set_ylabel("amplitude parameter $q$")
-        ax.set_title("Ince–Strutt diagram (stable: grey)")
+        ax.set_title("Ince–Strutt diagram")
         return ax
 
 
@@ -509,6 +515,7 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         a_range: tuple[float, float] | None = None,
         num: int = 201,
         shade: bool = True,
+        point: tuple[float, float] | None = None,
     ) -> Any:
         """Boundary curves of resonances ``0..n_max`` for every mode (mode 1 solid, higher modes dashed) in
         first-tone axes, the principal stability region shaded (the paper's Fig. 3).
@@ -516,17 +523,19 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         Parameters
         ----------
         ax : matplotlib Axes, optional
-            Axes to draw on; a new figure when omitted.
+            Draw here; a new figure otherwise.
         n_max : int
-            Largest index of the curves ``a_n``, ``b_n`` drawn, a non-negative integer.
+            Highest resonance drawn (``a_0..a_n``, ``b_1..b_n``).
         q_max : float
-            Top of the ``q^1`` axis, a positive number.
-        a_range : tuple of float, optional
-            Limits ``(a_min, a_max)`` of the horizontal ``a^1`` axis; fitted to the curves when omitted.
+            Top of the amplitude axis.
+        a_range : (float, float), optional
+            Frequency-parameter axis range (default: the curves' extent).
         num : int
-            Number of points (>= 2) on each curve.
+            Points per curve.
         shade : bool
-            Shade the principal stability region in grey.
+            Shade the principal stability region.
+        point : (float, float), optional
+            An operating point ``(a^1, q^1)`` to mark.
 
         Returns
         -------
@@ -536,7 +545,7 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         import matplotlib.pyplot as plt
 
         if ax is None:
-            _, ax = plt.subplots(figsize=(7, 5))
+            _, ax = plt.subplots(figsize=(8, 5), layout="constrained")
         q = np.linspace(0.0, float(q_max), int(num))
         styles = ["-", "--", ":", "-."]
         lo_a, hi_a = np.inf, -np.inf
@@ -554,9 +563,18 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
             a_range = (max(lo_a, -2.0 * q_max - 1.0), hi_a)
         if shade:  # principal stability region lower(q) < a < upper(q)
             lo, hi = self.lower(q), self.upper(q)
-            ax.fill_betweenx(q, lo, np.maximum(hi, lo), color="0.85")
+            ax.fill_betweenx(q, lo, np.maximum(hi, lo), color="0.85", label="stable (principal region)")
+        for m in range(1, min(len(self.ratios), len(styles)) + 1):  # one legend entry per mode's line style
+            ax.plot([], [], "k" + styles[m - 1], lw=1.0, label=f"mode {m} boundaries (r = {self.ratios[m - 1]:.4g})")
+        if point is not None:
+            ax.plot(
+                [point[0]], [point[1]], "o", color="C3", ms=7, label=f"operating point ({point[0]:.3g}, {point[1]:.3g})"
+            )
         ax.set_xlim(*a_range)
         ax.set_ylim(0, q_max)
+        lo_b, hi_b = self.lower(q), self.upper(q)
+        outside_legend(ax)
+        label_curves(ax, [(lo_b, q, "$a_0$ (lower)"), (hi_b, q, f"$r_{len(self.ratios)} b_1$ (upper)")])
         ax.set_xlabel("frequency parameter $a^1$")
         ax.set_ylabel("amplitude parameter $q^1$")
         rs = ", ".join(f"{r:.4g}" for r in self.ratios[1:])

@@ -449,25 +449,32 @@ class StabilityRegion(SymPyPrintable):
         q_max: float | None = None,
         p_range: tuple[float, float] | None = None,
         num: int = 200,
+        point: tuple[float, float] | None = None,
         **style: Any,
     ) -> Any:
         """Boundaries in first-tone axes (``a^1`` horizontal, ``q^1`` vertical, as the paper's Fig. 3–5) or in
         dimensional axes (``coords="dimensional"``: excitation frequency ``p`` in rad/s vs amplitude ``a``).
 
+        In first-tone axes the picture is the one scene reports draw: the modified Ince–Strutt diagram of the
+        chain's frequency ratios (every mode's boundaries, the principal region shaded, a legend), with this
+        method's boundaries drawn over it when they differ from the diagram's.
+
         Parameters
         ----------
         ax : matplotlib Axes, optional
-            Axes to draw on; a new figure when omitted.
+            Draw here; a new figure otherwise.
         coords : {"first-tone", "dimensional"}
-            Axes of the plot: ``(a^1, q^1)``, or excitation frequency vs amplitude on log scales.
+            Axes of the picture.
         q_max : float, optional
-            First-tone axes: largest ``q^1`` drawn (> 0); ``1.2 r_N`` when omitted.
-        p_range : tuple of float, optional
-            Dimensional axes: ``(p_min, p_max)`` in rad/s, both positive; ``(2 p_1, 40 p_N)`` when omitted.
+            Top of the ``q^1`` axis (first-tone).
+        p_range : (float, float), optional
+            Frequency range (dimensional).
         num : int
-            Number of points (>= 2) on each boundary curve.
+            Points per curve.
+        point : (float, float), optional
+            Operating point to mark: ``(a^1, q^1)`` in first-tone axes, ``(p, a)`` in dimensional ones.
         **style
-            Matplotlib line properties (``label``, ``color``, ``ls``, ...).
+            Line style of this method's boundaries (``label``, ``color``, ``ls``, ...).
 
         Returns
         -------
@@ -477,16 +484,24 @@ class StabilityRegion(SymPyPrintable):
         import matplotlib.pyplot as plt
 
         if ax is None:
-            _, ax = plt.subplots(figsize=(6.5, 4.5))
-        label = style.pop("label", self.method)
+            _, ax = plt.subplots(figsize=(8, 4.5), layout="constrained")
+        label = style.pop("label", f"{self.method} boundaries")
         color = style.pop("color", None)
         if coords == "first-tone":
+            from .ince_strutt import modified_ince_strutt
+
             q_max = q_max if q_max is not None else 1.2 * self.ratios[-1]
+            lo_a = min(-0.05, 2.0 * point[0]) if point is not None else -0.05
+            modified_ince_strutt(self.ratios).plot(
+                ax=ax, q_max=q_max, a_range=(lo_a, 1.2 * min(self.ratios)), point=point
+            )
+            if self.method == "modified-ince-strutt":
+                return ax
             q = np.linspace(q_max / num, q_max, num)
             lo, hi = self.lower(q), self.upper(q)
-            (line,) = ax.plot(lo, q, label=label, color=color, **style)
+            (line,) = ax.plot(lo, q, label=label, color=color or "C1", lw=1.6, **style)
             hi_plot = np.where(np.isfinite(hi), hi, np.nan)
-            ax.plot(hi_plot, q, color=line.get_color(), **style)
+            ax.plot(hi_plot, q, color=line.get_color(), lw=1.6, **style)
             if not np.all(np.isfinite(hi)):  # step-shaped upper boundary (Acheson): q = const
                 jump = q[np.argmax(~np.isfinite(hi) & (hi < 0))] if np.any(hi < 0) else None
                 if jump is not None:
@@ -498,15 +513,21 @@ class StabilityRegion(SymPyPrintable):
             p_range = p_range or (2.0 * w1, 40.0 * wn)
             p = np.geomspace(p_range[0], p_range[1], num)
             amin, amax = self.amplitude_bounds(p)
-            (line,) = ax.plot(p, amin, label=label, color=color, **style)
+            (line,) = ax.plot(p, amin, label=label, color=color or "k", **style)
             ax.plot(p, amax, color=line.get_color(), **style)
+            ok = np.isfinite(amin) & np.isfinite(amax)
+            ax.fill_between(p[ok], amin[ok], amax[ok], color="0.85", label="stable (principal region)")
+            if point is not None:
+                ax.plot([point[0]], [point[1]], "o", color="C3", ms=7, label="operating point")
             ax.set_xscale("log")
             ax.set_yscale("log")
             ax.set_xlabel("excitation frequency $p$, rad/s")
             ax.set_ylabel("amplitude $a$")
         else:
             raise ParameterError(f"coords must be 'first-tone' or 'dimensional', got {coords!r}")
-        ax.legend()
+        from .._plotting import outside_legend
+
+        outside_legend(ax)
         return ax
 
 

@@ -149,7 +149,9 @@ def linear_matrices(q: Question) -> QuestionResult:
                 f"K0 = {_num_matrix(K0)}",
             ]
             data["numeric"] = {"M": M.tolist(), "D": D.tolist(), "K0": K0.tolist()}
-    return QuestionResult("linear_matrices", "Linearized model M q'' + D q' + K q = f (LaTeX)", tuple(lines), data=data)
+    math = tuple((i, sp.Symbol(name), m) for i, (name, m) in enumerate((("M", lin.M), ("D", lin.D), ("K", lin.K))))
+    title = "Linearized model M q'' + D q' + K q = f (LaTeX)"
+    return QuestionResult("linear_matrices", title, tuple(lines), data=data, math=math)
 
 
 def equations_of_motion(q: Question) -> QuestionResult:
@@ -168,6 +170,7 @@ def equations_of_motion(q: Question) -> QuestionResult:
         "Nonlinear equations of motion M(q, t) q'' = F(q, q', t) (LaTeX)",
         (latex,),
         data={"latex": latex, "mass_matrix": str(M), "forcing": str(F)},
+        math=tuple((0, sum(M[i, j] * a for j, a in enumerate(system.accelerations)), F[i]) for i in range(len(F))),
     )
 
 

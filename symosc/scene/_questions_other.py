@@ -50,6 +50,8 @@ def ince_strutt(q: Question) -> QuestionResult:
 
 # ------------------------------------------------------------------------------------------ nonlinear series
 def limit_cycle(q: Question) -> QuestionResult:
+    import sympy as sp
+
     from ..nonlinear import limit_cycle as poincare
     from ..nonlinear import validate_limit_cycle
 
@@ -93,10 +95,13 @@ def limit_cycle(q: Question) -> QuestionResult:
         tuple(lines),
         tables,
         data=data,
+        math=((0, sp.Function("x")(0), lc.amplitude.expr), (1, sp.Symbol("omega"), lc.frequency.expr)),
     )
 
 
 def lindstedt_series(q: Question) -> QuestionResult:
+    import sympy as sp
+
     from ..nonlinear import lindstedt, validate_lindstedt
 
     d = q.model.data
@@ -124,7 +129,10 @@ def lindstedt_series(q: Question) -> QuestionResult:
             )
         tables = (Table(("eps", "omega (series)", "omega (numeric)", "error"), tuple(rows)),)
         data["validation"] = [list(r) for r in rows]
-    return QuestionResult("lindstedt", f"Lindstedt series to order {ls.order}", tuple(lines), tables, data=data)
+    math = ((0, sp.Symbol("omega"), ls.frequency.expr),)
+    return QuestionResult(
+        "lindstedt", f"Lindstedt series to order {ls.order}", tuple(lines), tables, data=data, math=math
+    )
 
 
 def resonance_curve(q: Question) -> QuestionResult:
@@ -158,6 +166,7 @@ def resonance_curve(q: Question) -> QuestionResult:
             "nu": fr.nu.tolist(),
             "amplitudes": np.where(np.isfinite(fr.amplitudes), fr.amplitudes, np.nan).tolist(),
             "stable": fr.stable.tolist(),
+            "folds": [[f.nu, f.amplitude] for f in fr.folds],
         },
     )
     data = {
@@ -194,6 +203,7 @@ def operational_solution(q: Question) -> QuestionResult:
         tuple(lines),
         tables,
         data=data,
+        math=((0, sp.Function("y")(t), y),),
     )
 
 

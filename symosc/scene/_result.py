@@ -151,6 +151,7 @@ class QuestionResult(SymPyPrintable):
     tables: tuple[Table, ...] = ()
     figures: tuple[Figure, ...] = ()
     data: dict = field(default_factory=dict)
+    math: tuple = field(default=(), repr=False)  # (line index, lhs, rhs): SymPy objects the HTML report typesets
 
     def __repr__(self) -> str:
         return f"QuestionResult({self.kind!r}, {self.title!r})"
@@ -206,6 +207,7 @@ class SceneResult(SymPyPrintable):
     parameters: dict
     results: tuple[QuestionResult, ...]
     log: tuple[LogEntry, ...]
+    parameter_text: dict = field(default_factory=dict)  # name -> value as the scene file wrote it ("45 mm")
 
     def __getitem__(self, kind: str) -> QuestionResult:
         for r in self.results:
@@ -217,14 +219,17 @@ class SceneResult(SymPyPrintable):
         return f"SceneResult({self.title!r}, questions={[r.kind for r in self.results]})"
 
     def _repr_html_(self) -> str:
-        return self.html()
+        from ._html import fragment
+
+        return fragment(self)
 
     def _log_table(self) -> Table:
         rows = tuple((str(i + 1), e.step, f"{e.seconds * 1e3:.1f}", e.detail) for i, e in enumerate(self.log))
         return Table(("#", "step", "ms", "detail"), rows, "Derivation log (what was derived for these questions)")
 
     def _params_line(self) -> str:
-        return ", ".join(f"{k} = {v:.6g}" for k, v in self.parameters.items()) or "none"
+        shown = self.parameter_text
+        return ", ".join(f"{k} = {shown.get(k) or format(v, '.6g')}" for k, v in self.parameters.items()) or "none"
 
     def report(self) -> str:
         """Plain-text report for the terminal."""
@@ -233,7 +238,7 @@ class SceneResult(SymPyPrintable):
             out.append(f"source: {self.source}")
         if self.system:
             out.append(f"system: {self.system}")
-        out.append(f"parameters (SI): {self._params_line()}")
+        out.append(f"parameters: {self._params_line()}")
         for r in self.results:
             out += ["", f"-- {r.title}"]
             out += _text_lines(r)
@@ -260,7 +265,7 @@ class SceneResult(SymPyPrintable):
             out.append(f"Source: {self.source}  ")
         if self.system:
             out.append(f"System: {self.system}  ")
-        out += [f"Parameters (SI): {self._params_line()}", ""]
+        out += [f"Parameters: {self._params_line()}", ""]
         for r in self.results:
             out += [f"## {r.title}", ""]
             out += [line + "  " for line in _text_lines(r)]
@@ -273,32 +278,22 @@ class SceneResult(SymPyPrintable):
         return "\n".join(out)
 
     def html(self, figures: dict[str, str] | None = None) -> str:
-        """This scene's results as a standalone HTML page.
+        """A self-contained HTML page: stylesheet, equations as MathML, figures embedded (when ``figures`` maps
+        their names to files) or linked.
 
         Parameters
         ----------
         figures : dict of str to str, optional
-            ``{Figure.filename: path or URL}`` of the figures already written; only those are embedded (none
-            when omitted).
+            ``{Figure.filename: path or URL}`` of the figures already written; only those are shown (none when
+            omitted).
 
         Returns
         -------
         str
         """
-        e = html.escape
-        out = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{e(self.title)}</title></head><body>"]
-        out.append(f"<h1>{e(self.title)}</h1><p>Source: {e(self.source)}<br>System: {e(self.system)}<br>")
-        out.append(f"Parameters (SI): {e(self._params_line())}</p>")
-        for r in self.results:
-            out.append(f"<h2>{e(r.title)}</h2><p>" + "<br>".join(e(x) for x in _text_lines(r)) + "</p>")
-            out += [t.html() for t in r.tables]
-            for f in r.figures:
-                if figures and f.filename in figures:
-                    out.append(
-                        f"<figure><img src='{e(figures[f.filename])}'><figcaption>{e(f.caption)}</figcaption></figure>"
-                    )
-        out.append("<h2>Derivation log</h2>" + self._log_table().html() + "</body></html>")
-        return "\n".join(out)
+        from ._html import document
+
+        return document(self, figures)
 
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict: parameters, each question's data and the derivation log (steps, without timings: two
@@ -364,13 +359,19 @@ class SceneResult(SymPyPrintable):
 
                     for f in todo:
                         fig, ax = plt.subplots(figsize=(6.5, 4.5))
-                        getattr(_figures, f.drawer)(ax, **f.data)
-                        fig.tight_layout()
-                        fig.savefig(tmpdir / f.filename, dpi=110, metadata={"Software": None})
+                        drawn = getattr(_figures, f.drawer)(ax, **f.data)
+                        if hasattr(drawn, "save"):  # an animation writes itself (GIF)
+                            drawn.save(tmpdir / f.filename)
+                        else:
+                            fig.tight_layout()
+                            fig.savefig(tmpdir / f.filename, dpi=110, metadata={"Software": None})
                         plt.close(fig)
                         figs[f.filename] = f.filename
             if fmt != "json":
-                text = self.markdown(figs) if fmt == "md" else self.html(figs)
+                if fmt == "md":
+                    text = self.markdown(figs)
+                else:  # the page embeds its figures: it reads them from where they are written
+                    text = self.html({k: str(tmpdir / v) for k, v in figs.items()})
                 (tmpdir / f"report.{fmt}").write_text(
                     text + ("\n" + "\n".join(notes) if notes else ""), encoding="utf-8"
                 )

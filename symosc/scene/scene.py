@@ -10,8 +10,10 @@ from pathlib import Path
 from typing import Any
 
 from .._printing import SymPyPrintable
+from . import _html
 from . import _questions as mq
 from . import _questions_other as oq
+from . import _time_response as tr
 from ._errors import SceneError, closest
 from ._log import DerivationLog
 from ._models import build_model
@@ -205,6 +207,13 @@ QUESTIONS: dict[str, QuestionSpec] = {
             oq.identify,
         ),
         _CONTINUATION,
+        QuestionSpec(
+            "time_response",
+            "simulated motion from an initial state (plot, data, GIF)",
+            _LIN,
+            tr.OPTIONS,
+            tr.time_response,
+        ),
     )
 }
 
@@ -217,6 +226,7 @@ _REQUIRED = {
     "resonance_curve": ("frequency_range",),
     "identify": ("record", "n_modes"),
     "continuation": ("range",),
+    "time_response": ("duration",),
 }
 
 
@@ -289,6 +299,7 @@ class Scene(SymPyPrintable):
             parameters=dict(self.values),
             results=tuple(results),
             log=tuple(self.log.entries),
+            parameter_text=_html.parameter_text(self),
         )
 
 

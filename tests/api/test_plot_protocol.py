@@ -14,6 +14,7 @@ import pytest
 from ..test_user_text import scan
 from .examples import PLOT_ARGS
 from .public import example_instances, public_classes
+from .test_plot_labels import overlapping_texts, unnamed_curves
 
 PLOTTING = [c for c in public_classes() if callable(getattr(c, "plot", None))]
 
@@ -51,6 +52,9 @@ def test_plot_draws_on_given_axes_or_a_new_figure(cls):
         own = obj.plot(**kwargs)
         assert own is not ax and own.figure is not fig and len(plt.get_fignums()) == 2
         assert own.has_data() or own.images or own.collections or own.patches
+        # readable figures: every curve named (legend entry or direct label), no two labels on top of each other
+        assert unnamed_curves(own) == [], f"{cls.__name__}: curves without a legend entry or label"
+        assert overlapping_texts(own.figure) == [], f"{cls.__name__}: overlapping labels"
     finally:
         plt.close("all")
 

@@ -264,8 +264,15 @@ def test_forced_plot_runs(duffing_response):
     matplotlib.use("Agg")
     _, fr = duffing_response
     ax = fr.plot()
-    assert ax.get_xlabel() == r"$\nu$"
+    assert ax.get_xlabel() == r"forcing frequency $\nu$"
     assert "folds" in repr(fr)
+    styles = {line.get_label(): line.get_linestyle() for line in ax.get_lines()}
+    assert styles["stable"] == "-" and styles["unstable"] == "--"  # continuous branches, stable solid
+    pieces = fr.branches()
+    for f in fr.folds:  # each jump joins a stable and an unstable branch at the fold point itself
+        ends = [(s, (nu[0], a[0])) for nu, a, s in pieces] + [(s, (nu[-1], a[-1])) for nu, a, s in pieces]
+        meeting = {s for s, end in ends if end == (f.nu, f.amplitude)}
+        assert meeting == {True, False}
 
 
 def test_extreme_light_damping_large_response():

@@ -123,7 +123,8 @@ def test_gribkov2015_stability_interval_against_floquet(tmp_path):
     assert "derive the nonlinear equations of motion" not in steps and "split K(t) = K0 + K1 cos(p t)" in steps
     paths = res.write(tmp_path / "out", "md")
     names = sorted(x.name for x in paths)
-    assert names == ["gribkov2015-ince-strutt.png", "report.md", "results.json", "timings.json"]
+    motion = [f"gribkov2015-motion-{i}.{ext}" for i in (3, 4) for ext in ("gif", "png")]  # the two time responses
+    assert names == ["gribkov2015-ince-strutt.png", *motion, "report.md", "results.json", "timings.json"]
     assert (tmp_path / "out" / "gribkov2015-ince-strutt.png").read_bytes()[:4] == b"\x89PNG"
     js = json.loads((tmp_path / "out" / "results.json").read_text())
     assert js["questions"][1]["amplitude_min"] == pytest.approx(amin)

@@ -208,7 +208,7 @@ class TwoDOFBeats(SymPyPrintable):
         y, env = self.displacement(t), self.envelope(t)
         for j in range(2):
             (line,) = ax.plot(t, y[j], lw=0.8, label=f"y{j + 1}")
-            ax.plot(t, env[j], "--", color=line.get_color(), lw=0.8)
+            ax.plot(t, env[j], "--", color=line.get_color(), lw=0.8, label=f"envelope of y{j + 1}")
             ax.plot(t, -env[j], "--", color=line.get_color(), lw=0.8)
         ax.set_xlabel("t")
         ax.legend()
@@ -292,7 +292,7 @@ class TuningCurves(SymPyPrintable):
         ax = figure_axes(ax)
         ax.plot(self.x, self.z1, label="z1 = ω1/ωa")
         ax.plot(self.x, self.z2, label="z2 = ω2/ωa")
-        ax.plot(self.x, np.ones_like(self.x), "k:", lw=0.7)
+        ax.plot(self.x, np.ones_like(self.x), "k:", lw=0.7, label="uncoupled: z = 1, z = x")
         ax.plot(self.x, self.x, "k:", lw=0.7)
         ax.set_xlabel("x = ωb/ωa")
         ax.set_ylabel("z")

@@ -307,7 +307,7 @@ class EqualStabilityLines(SymPyPrintable):
         if boundary:
             top = max(float(np.nanmax(a)) for a, _ in self.branches)
             k1 = np.linspace(0, top, 200)
-            ax.plot(k1, k1**2 / (4 * self.k0), "k:", lw=0.8)
+            ax.plot(k1, k1**2 / (4 * self.k0), "k:", lw=0.8, label="aperiodicity boundary k2 = k1²/(4 k0)")
             ax.axhline(0, color="k", lw=0.8)
             ax.axvline(0, color="k", lw=0.8)
         ax.set_xlabel("k1")

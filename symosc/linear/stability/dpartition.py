@@ -357,6 +357,7 @@ class DiscriminantCurve(SymPyPrintable):
         mu, nu = self.curve(np.linspace(*e_range, n))
         ok = np.isfinite(mu) & np.isfinite(nu) & (np.abs(mu) < 1e3) & (np.abs(nu) < 1e3)
         ax.plot(np.where(ok, mu, np.nan), np.where(ok, nu, np.nan), "b:", label="discriminant curve")
+        ax.legend(loc="best", fontsize="small")
         return ax
 
 

@@ -5,6 +5,7 @@ Everything is evaluated from the symbolic shortened equations through :func:`sym
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -201,28 +202,99 @@ class FrequencyResponse(SymPyPrintable):
             f"max branches {self.amplitudes.shape[1]}, folds at nu = [{jumps}])"
         )
 
+    def branches(self) -> list[tuple[np.ndarray, np.ndarray, bool]]:
+        """The curve as continuous pieces ``(nu, a, stable)``: the roots followed from sample to sample, pieces
+        that appear or end between two samples joined at the fold there, each piece split where its stability
+        changes (neighbouring pieces share their end point, so the drawn curve has no gaps)."""
+        counts = np.sum(np.isfinite(self.amplitudes), axis=1)
+        folds = [(f.nu, f.amplitude) for f in self.folds]
+        tracks: list[list[tuple[float, float, bool | None]]] = []
+        open_: list[int] = []  # index into tracks of the track holding root k of the previous sample
+
+        def fold_between(lo: float, hi: float, a: float) -> tuple[float, float, None] | None:
+            near = [f for f in folds if lo - 1e-12 <= f[0] <= hi + 1e-12]
+            if not near:
+                return None
+            f = min(near, key=lambda f: abs(f[1] - a))
+            return (f[0], f[1], None)
+
+        for i, nu in enumerate(self.nu):
+            rs, st = self.amplitudes[i, : counts[i]], self.stable[i, : counts[i]]
+            if i > 0 and counts[i] == counts[i - 1]:
+                for k in range(counts[i]):
+                    tracks[open_[k]].append((nu, rs[k], bool(st[k])))
+                continue
+            prev = [tracks[j][-1][1] for j in open_]
+            pairs = sorted(((abs(p - r), j, k) for j, p in enumerate(prev) for k, r in enumerate(rs)))
+            used_prev, used_new, new_open = set(), set(), [None] * counts[i]
+            for _, j, k in pairs:  # greedy one-to-one matching of the roots that continue
+                if j in used_prev or k in used_new or len(used_prev) >= min(len(prev), counts[i]):
+                    continue
+                used_prev.add(j)
+                used_new.add(k)
+                new_open[k] = open_[j]
+            lo = self.nu[i - 1] if i > 0 else nu
+            for j, tj in enumerate(open_):  # roots that end: close their track at the fold
+                if j not in used_prev:
+                    f = fold_between(lo, nu, tracks[tj][-1][1])
+                    if f is not None:
+                        tracks[tj].append(f)
+            for k in range(counts[i]):
+                if new_open[k] is None:  # roots that appear: a new track starting at the fold
+                    f = fold_between(lo, nu, rs[k]) if i > 0 else None
+                    tracks.append([f] if f is not None else [])
+                    new_open[k] = len(tracks) - 1
+                tracks[new_open[k]].append((nu, rs[k], bool(st[k])))
+            open_ = new_open
+        pieces = []
+        for tr in tracks:
+            pts = [list(p) for p in tr]
+            for m, p in enumerate(pts):  # a fold point takes the stability of its neighbour
+                if p[2] is None:
+                    p[2] = pts[m - 1][2] if m > 0 else (pts[1][2] if len(pts) > 1 else True)
+            start = 0
+            for m in range(1, len(pts) + 1):
+                if m == len(pts) or pts[m][2] != pts[start][2]:
+                    chunk = pts[start : m + 1] if m < len(pts) else pts[start:m]
+                    if len(chunk) >= 2:
+                        arr = np.array([(x[0], x[1]) for x in chunk], dtype=float)
+                        pieces.append((arr[:, 0], arr[:, 1], bool(pts[start][2])))
+                    start = m
+        return pieces
+
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Draw the resonance curve: stable states as dots, unstable as crosses, folds as circles.
+        """Draw the resonance curve as continuous branches: stable solid, unstable dashed, folds (jumps) circled.
 
         Parameters
         ----------
         ax : matplotlib Axes, optional
-            Axes to draw on; a new figure when omitted.
-        """
-        import matplotlib.pyplot as plt
+            Draw here; a new figure otherwise.
 
-        if ax is None:
-            _, ax = plt.subplots()
-        nu = np.repeat(self.nu[:, None], self.amplitudes.shape[1], axis=1)
-        ok = np.isfinite(self.amplitudes)
-        ax.plot(nu[ok & self.stable], self.amplitudes[ok & self.stable], ".", ms=2, color="C0", label="stable")
-        ax.plot(nu[ok & ~self.stable], self.amplitudes[ok & ~self.stable], "x", ms=2, color="C3", label="unstable")
+        Returns
+        -------
+        matplotlib Axes
+        """
+        from ..._plotting import new_axes
+
+        ax = new_axes(ax)
+        labelled = set()
+        for nu, amp, stable in self.branches():
+            label = "stable" if stable else "unstable"
+            ax.plot(
+                nu, amp, "-" if stable else "--", color="C0" if stable else "C3", lw=1.6 if stable else 1.3,
+                label=None if label in labelled else label,
+            )  # fmt: skip
+            labelled.add(label)
         if self.folds:
-            ax.plot([f.nu for f in self.folds], [f.amplitude for f in self.folds], "o", mfc="none", color="k")
-        ax.set_xlabel(r"$\nu$")
+            ax.plot(
+                [f.nu for f in self.folds], [f.amplitude for f in self.folds], "o", mfc="none", color="k",
+                label="jump (fold)",
+            )  # fmt: skip
+        ax.set_xlabel(r"forcing frequency $\nu$")
         ax.set_ylabel("amplitude $a$")
-        ax.legend()
+        ax.grid(True, lw=0.4, alpha=0.5)
+        ax.legend(loc="best")
         return ax
 
 
@@ -376,6 +448,13 @@ def frequency_response(
     nus = np.linspace(lo, hi, int(n))
     am = (fc.a_max(nus) if fc.poly is None else 0.0) if a_max is None else float(a_max)
     roots = fc.roots(nus, am)
+    folds = _folds(fc, nus, roots)
+    extra = _near_folds(folds, nus)
+    if extra.size:  # the branches between the folds are steep in nu: sample them densely (clustered at the folds)
+        more = fc.roots(extra, am)
+        merged = sorted(zip([*nus, *extra], [*roots, *more], strict=True), key=lambda x: x[0])
+        nus = np.array([m[0] for m in merged])
+        roots = [m[1] for m in merged]
     width = max(len(r) for r in roots) if roots else 0
     amps = np.full((len(nus), max(width, 1)), np.nan)
     stab = np.zeros_like(amps, dtype=bool)
@@ -383,6 +462,29 @@ def frequency_response(
         for j, r in enumerate(rs):
             amps[i, j] = r
             stab[i, j] = fc.classify(nus[i], r).stable
+    return FrequencyResponse(nu=nus, amplitudes=amps, stable=stab, folds=folds)
+
+
+def _near_folds(folds: tuple, nus: np.ndarray, count: int = 80) -> np.ndarray:
+    """Extra frequencies between consecutive folds (and just outside them), clustered at the folds, where the
+    amplitude has a square-root singularity in nu."""
+    if not folds:
+        return np.array([])
+    step = nus[1] - nus[0]
+    xs = sorted(f.nu for f in folds)
+    out = []
+    k = np.arange(1, count)
+    for a, b in itertools.pairwise(xs):
+        out.append(a + (b - a) * (1 - np.cos(np.pi * k / count)) / 2)
+    for x in xs:
+        out.append(x + step * np.array([-0.5, -0.2, -0.05, -0.01, 0.01, 0.05, 0.2, 0.5]))
+    extra = np.concatenate(out)
+    extra = extra[(extra > nus[0]) & (extra < nus[-1])]
+    return np.setdiff1d(np.unique(extra), nus)
+
+
+def _folds(fc: _Forced, nus: np.ndarray, roots: list) -> tuple:
+    """Folds (jump points) where the number of roots changes between samples, refined by Newton's method."""
     folds = []
     for i in range(len(nus) - 1):
         c0, c1 = len(roots[i]), len(roots[i + 1])
@@ -409,7 +511,7 @@ def frequency_response(
     for f in sorted(kept, key=lambda f: f.nu):
         if not any(abs(f.nu - u.nu) < 1e-9 * (1 + f.nu) and abs(f.amplitude - u.amplitude) < 1e-6 for u in unique):
             unique.append(f)
-    return FrequencyResponse(nu=nus, amplitudes=amps, stable=stab, folds=tuple(unique))
+    return tuple(unique)
 
 
 def backbone(avg: AveragedEquations, values: dict, amplitudes: Any) -> np.ndarray:
