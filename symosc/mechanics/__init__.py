@@ -21,11 +21,17 @@ from .analytic import (
     routh_reduction,
     separate_hamilton_jacobi,
 )
-from .circuits import LoopEquations, loop_equations
+from .applications import (
+    GovernorStatics,
+    LoopEquations,
+    electromechanical_system,
+    governor_statics,
+    loop_equations,
+    stodola_time_constant,
+    vyshnegradsky_cubic,
+)
 from .constraints import ConstrainedForm, MinimalForm
-from .electromechanical import electromechanical_system
 from .first_order import FirstOrderSystem
-from .governor import GovernorStatics, governor_statics, stodola_time_constant, vyshnegradsky_cubic
 from .lagrange import LagrangianSystem
 from .linear_model import LinearModel
 from .simulation import Geometry, Trajectory
@@ -83,6 +89,9 @@ _moved_modules(
     {
         "_separation": "analytic._separation",
         "canonical": "analytic.canonical",
+        "circuits": "applications.circuits",
+        "electromechanical": "applications.electromechanical",
+        "governor": "applications.governor",
         "hamilton_jacobi": "analytic.hamilton_jacobi",
         "hamiltonian": "analytic.hamiltonian",
         "routh": "analytic.routh",

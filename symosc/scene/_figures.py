@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from ._time_response import animation, time_series  # noqa: F401 - drawers of time_response figures
+from ._questions.time_response import animation, time_series  # noqa: F401 - drawers of time_response figures
 
 
 def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: float = 1.0) -> Any:
@@ -40,6 +40,6 @@ def resonance(ax: Any, *, nu: list, amplitudes: list, stable: list, folds: list 
 
 def branch(ax: Any, **data: Any) -> Any:
     """A branch of periodic solutions (the ``continuation`` question)."""
-    from ._questions_continuation import draw_branch
+    from ._questions.continuation import draw_branch
 
     return draw_branch(ax, **data)

@@ -11,15 +11,15 @@ from typing import Any
 
 from .._printing import SymPyPrintable
 from . import _html
-from . import _questions as mq
-from . import _questions_other as oq
-from . import _time_response as tr
 from ._errors import SceneError, closest
 from ._log import DerivationLog
 from ._models import build_model
 from ._parse import Ctx
-from ._questions import Question, QuestionSpec
-from ._questions_continuation import SPEC as _CONTINUATION
+from ._questions import mechanical as mq
+from ._questions import other as oq
+from ._questions import time_response as tr
+from ._questions.continuation import SPEC as _CONTINUATION
+from ._questions.mechanical import Question, QuestionSpec
 from ._result import SceneResult
 
 __all__ = ["QUESTIONS", "Scene", "load", "loads"]

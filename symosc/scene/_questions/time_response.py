@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from ._result import Figure, QuestionResult, Table
+from .._result import Figure, QuestionResult, Table
 
 __all__ = ["OPTIONS", "animation", "time_response", "time_series"]
 
@@ -69,7 +69,7 @@ def _values(q: Any) -> dict[str, float]:
 
 
 def _simulate(q: Any, times: np.ndarray, values: Mapping[str, float]) -> Any:
-    from ..errors import ParameterError
+    from ...errors import ParameterError
 
     opts = q.opts
     kwargs = {"method": opts["method"], "rtol": opts["rtol"], "atol": opts["atol"]}
@@ -158,7 +158,7 @@ def time_response(q: Any) -> QuestionResult:
 # ------------------------------------------------------------------------------------------ drawers
 def time_series(ax: Any, *, t: Any, series: Mapping[str, Any], title: str = "") -> Any:
     """Outputs against time, one labelled line each (the energy, if asked, on a second axis)."""
-    from .._plotting import tex_name
+    from ..._plotting import tex_name
 
     lines = []
     energy = series.get("energy")

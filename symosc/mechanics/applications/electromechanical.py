@@ -13,9 +13,9 @@ from typing import Any
 
 import sympy as sp
 
-from .._validate import validated
-from ..errors import ModelError
-from ..symbols import dot
+from ..._validate import validated
+from ...errors import ModelError
+from ...symbols import dot
 
 __all__ = ["electromechanical_system"]
 
@@ -72,7 +72,7 @@ def electromechanical_system(
     --------
     LagrangianSystem, loop_equations
     """
-    from .lagrange import LagrangianSystem
+    from ..lagrange import LagrangianSystem
 
     x, qs = list(mechanical_coordinates), list(charges)
     nq = len(qs)

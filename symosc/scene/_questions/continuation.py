@@ -11,8 +11,8 @@ from typing import Any
 
 import numpy as np
 
-from ._questions import Question, QuestionSpec
-from ._result import Figure, QuestionResult, Table
+from .._result import Figure, QuestionResult, Table
+from .mechanical import Question, QuestionSpec
 
 __all__ = ["SPEC", "draw_branch"]
 
@@ -50,7 +50,7 @@ def _points(ctx: Any, value: Any, key: str) -> int:
 def _problem(q: Question):
     import sympy as sp
 
-    from ..continuation import harmonic_balance
+    from ...continuation import harmonic_balance
 
     x, v, t = sp.symbols("x v t", real=True)
     harmonics = q.opts.get("harmonics")
@@ -72,7 +72,7 @@ def _problem(q: Question):
 
 
 def continuation(q: Question) -> QuestionResult:
-    from ..continuation import continue_periodic
+    from ...continuation import continue_periodic
 
     hb, name, _ = _problem(q)
     names = [s.name for s in hb.parameters]

@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from ._result import Figure, QuestionResult, Table
+from .._result import Figure, QuestionResult, Table
 
 __all__ = ["Question", "QuestionSpec"]
 
@@ -185,7 +185,7 @@ def _needs_vibrating_inverted(q: Question) -> None:
 
 def stability(q: Question) -> QuestionResult:
     _needs_vibrating_inverted(q)
-    from ..periodic import stability_region
+    from ...periodic import stability_region
 
     q.model.periodic  # noqa: B018 - K0, K1 (logged); stability_region reuses the linear model
     with q.log.step("stability region from M, K0, K1", f"method {q.opts['method']}"):
@@ -263,7 +263,7 @@ def floquet(q: Question) -> QuestionResult:
     _needs_vibrating_inverted(q)
     import sympy as sp
 
-    from ..periodic import monodromy
+    from ...periodic import monodromy
 
     _, K1s, _ = q.model.periodic
     lin = q.model.linear
@@ -318,7 +318,7 @@ def sweep_frequencies(q: Question) -> QuestionResult:
     name = q.opts["parameter"]
     valid = q.model.parameter_names()
     if name not in valid:
-        from ._errors import closest
+        from .._errors import closest
 
         raise q.fail(
             f"unknown parameter '{name}'.{closest(name, valid)} Valid parameters: {', '.join(valid)}",
@@ -349,7 +349,7 @@ def sweep_frequencies(q: Question) -> QuestionResult:
 
 def _sweep_bounds(q: Question, name: str, vals: np.ndarray) -> QuestionResult:
     _needs_vibrating_inverted(q)
-    from ..periodic import stability_region
+    from ...periodic import stability_region
 
     p = q.excitation.get("frequency")
     if p is None:

@@ -14,9 +14,9 @@ from typing import Any
 
 import sympy as sp
 
-from .._printing import SymPyPrintable
-from .._validate import validated
-from ..errors import ModelError
+from ..._printing import SymPyPrintable
+from ..._validate import validated
+from ...errors import ModelError
 
 __all__ = ["GovernorStatics", "governor_statics", "stodola_time_constant", "vyshnegradsky_cubic"]
 

@@ -7,15 +7,15 @@ from typing import Any
 
 import numpy as np
 
-from ._questions import Question, _fmt
-from ._result import Figure, QuestionResult, Table
+from .._result import Figure, QuestionResult, Table
+from .mechanical import Question, _fmt
 
 __all__: list[str] = []
 
 
 # ------------------------------------------------------------------------------------------ Mathieu
 def mathieu_values(q: Question) -> QuestionResult:
-    from ..periodic import mathieu_characteristic
+    from ...periodic import mathieu_characteristic
 
     ns, qs = q.opts["n"], q.opts["q"]
     rows, data = [], []
@@ -52,8 +52,8 @@ def ince_strutt(q: Question) -> QuestionResult:
 def limit_cycle(q: Question) -> QuestionResult:
     import sympy as sp
 
-    from ..nonlinear import limit_cycle as poincare
-    from ..nonlinear import validate_limit_cycle
+    from ...nonlinear import limit_cycle as poincare
+    from ...nonlinear import validate_limit_cycle
 
     d = q.model.data
     with q.log.step("Poincaré series of the limit cycle", f"order {q.opts['order']}, exact arithmetic"):
@@ -102,7 +102,7 @@ def limit_cycle(q: Question) -> QuestionResult:
 def lindstedt_series(q: Question) -> QuestionResult:
     import sympy as sp
 
-    from ..nonlinear import lindstedt, validate_lindstedt
+    from ...nonlinear import lindstedt, validate_lindstedt
 
     d = q.model.data
     if d["v"] in d["f"].free_symbols:
@@ -138,7 +138,7 @@ def lindstedt_series(q: Question) -> QuestionResult:
 def resonance_curve(q: Question) -> QuestionResult:
     import sympy as sp
 
-    from ..nonlinear import averaged_equations
+    from ...nonlinear import averaged_equations
 
     R = q.excitation.get("amplitude")
     if R is None:
@@ -181,8 +181,8 @@ def resonance_curve(q: Question) -> QuestionResult:
 def operational_solution(q: Question) -> QuestionResult:
     import sympy as sp
 
-    from ..operational import solve_operational
-    from ..symbols import t
+    from ...operational import solve_operational
+    from ...symbols import t
 
     d = q.model.data
     with q.log.step("Carson transform solution", "Heaviside expansion of the image"):
@@ -240,7 +240,7 @@ def read_record(q: Question) -> tuple[np.ndarray, float]:
 
 
 def identify(q: Question) -> QuestionResult:
-    from .. import identification as ident
+    from ... import identification as ident
 
     signals, dt = read_record(q)
     method = getattr(ident, q.opts["method"])
