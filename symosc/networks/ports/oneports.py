@@ -201,6 +201,22 @@ class Impedance(OnePort):
         return f"Z({_fmt(self.Z)})"
 
 
+def _parts(parts: Any, cls: str) -> tuple:
+    """The parts of a connection: a non-empty sequence of one-ports (a single one-port is a sequence of one)."""
+    if isinstance(parts, OnePort):
+        return (parts,)
+    try:
+        out = () if isinstance(parts, str | bytes) else tuple(parts)
+    except TypeError:
+        out = ()
+    if not out:
+        raise ParameterError(
+            f"{cls}(parts) needs a non-empty tuple of one-ports, got {parts!r} (or connect them with "
+            f"{'a + b' if cls == 'Series' else 'a | b'})"
+        )
+    return out
+
+
 def _flatten(parts: tuple, cls: type) -> tuple:
     out: list = []
     for part in parts:
@@ -213,12 +229,10 @@ def _flatten(parts: tuple, cls: type) -> tuple:
 class Series(OnePort):
     """Series connection: ``Z = Z_1 + Z_2 + ...``."""
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Series))
-        if len(self.parts) < 1:
-            raise ParameterError("Series needs at least one part")
+        object.__setattr__(self, "parts", _flatten(_parts(self.parts, "Series"), Series))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)
@@ -235,12 +249,10 @@ class Series(OnePort):
 class Parallel(OnePort):
     """Parallel connection: ``1/Z = 1/Z_1 + 1/Z_2 + ...``."""
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Parallel))
-        if len(self.parts) < 1:
-            raise ParameterError("Parallel needs at least one part")
+        object.__setattr__(self, "parts", _flatten(_parts(self.parts, "Parallel"), Parallel))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)

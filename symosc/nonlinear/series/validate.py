@@ -463,7 +463,7 @@ def validate_limit_cycle(
     orders = [lc.order] if orders is None else [int(o) for o in orders]
     try:
         radius = float(lc.frequency.radius_of_convergence().radius)
-    except ValueError:
+    except (ValueError, ConvergenceError):
         radius = None
     f_num = lc.f
     rows = []
