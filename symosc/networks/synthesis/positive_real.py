@@ -279,7 +279,7 @@ def biquadratic_is_positive_real(a0: Any, a1: Any, a2: Any, b0: Any, b1: Any, b2
     for v, n in zip(a, names, strict=True):
         if v.is_extended_real is False:
             raise ParameterError(f"{n} must be a real coefficient, got {v}")
-    if all(v == 0 for v in a[3:]):
+    if all(v.is_zero for v in a[3:]):
         raise ParameterError("b0, b1 and b2 are all zero: the denominator must not vanish identically")
     if any(v.is_negative for v in a):
         return False
