@@ -11,7 +11,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import validated
-from ...errors import ModelError
+from ...errors import ModelError, ParameterError
 from ...numeric import compile, resolve
 from ...symbols import dot, sort_symbols, t
 
@@ -45,6 +45,17 @@ def poisson_bracket(f: Any, g: Any, coordinates: Sequence[sp.Symbol], momenta: S
     if len(coordinates) != len(momenta):
         raise ModelError(f"{len(coordinates)} coordinates but {len(momenta)} momenta")
     return sp.Add(*(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q) for q, p in zip(coordinates, momenta, strict=True)))
+
+
+def _symbols(what: str, given: Any) -> tuple[sp.Symbol, ...]:
+    """``given`` (a Symbol or a sequence of them) as a tuple of Symbols."""
+    items = (given,) if isinstance(given, sp.Symbol) else given
+    if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
+        raise ParameterError(f"{what} must be a sequence of SymPy Symbols, got {given!r}")
+    items = tuple(items)
+    if not items or not all(isinstance(x, sp.Symbol) for x in items):
+        raise ParameterError(f"{what} must be a non-empty sequence of SymPy Symbols, got {given!r}")
+    return items
 
 
 class HamiltonianSystem(SymPyPrintable):
@@ -85,9 +96,13 @@ class HamiltonianSystem(SymPyPrintable):
         *,
         forces: Sequence[Any] | None = None,
     ) -> None:
+        if H is None or isinstance(H, str | bytes):
+            raise ParameterError(f"H must be a SymPy expression (build it from symbols, not text), got {H!r}")
         self._H = sp.sympify(H)
-        self._q = tuple(coordinates)
-        self._p = tuple(momenta) if momenta is not None else tuple(momentum_symbol(q) for q in self._q)
+        self._q = _symbols("coordinates", coordinates)
+        self._p = _symbols("momenta", momenta) if momenta is not None else tuple(momentum_symbol(q) for q in self._q)
+        if forces is not None and (isinstance(forces, str | bytes) or not hasattr(forces, "__iter__")):
+            raise ParameterError(f"forces must be a sequence of expressions (one per coordinate), got {forces!r}")
         if len(self._q) != len(self._p):
             raise ModelError(f"{len(self._q)} coordinates but {len(self._p)} momenta")
         if len(set(self._q) | set(self._p)) != 2 * len(self._q):

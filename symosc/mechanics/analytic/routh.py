@@ -76,8 +76,21 @@ class RouthReduction(SymPyPrintable):
     )
 
     def __init__(self, system: LagrangianSystem, cyclic: Sequence[sp.Symbol]):
+        from ..lagrange import LagrangianSystem
+
+        if not isinstance(system, LagrangianSystem):
+            raise ParameterError(f"system must be a LagrangianSystem, got {type(system).__name__}")
+        if isinstance(cyclic, sp.Symbol):
+            cyclic = (cyclic,)
+        if isinstance(cyclic, str | bytes) or not hasattr(cyclic, "__iter__"):
+            raise ParameterError(f"cyclic must be a sequence of coordinates of the system, got {cyclic!r}")
         self.system = system
         self.cyclic = tuple(cyclic)
+        if not self.cyclic or not set(self.cyclic) <= set(system.coordinates):
+            raise ParameterError(
+                f"cyclic must name coordinates of the system ({', '.join(map(str, system.coordinates))}), got "
+                f"{cyclic!r}; routh_reduction checks that they are cyclic"
+            )
         q = system.coordinates
         self.noncyclic = tuple(x for x in q if x not in self.cyclic)
         self.momenta = tuple(momentum_symbol(x) for x in self.cyclic)

@@ -27,7 +27,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ParameterError
 from .._exact.fields import normalize
-from .._util import P, as_expr, as_symbol, element_value
+from .._util import P, as_expr, as_symbol, connection_parts, element_value
 
 __all__ = [
     "BruneSection",
@@ -201,22 +201,6 @@ class Impedance(OnePort):
         return f"Z({_fmt(self.Z)})"
 
 
-def _parts(parts: Any, cls: str) -> tuple:
-    """The parts of a connection: a non-empty sequence of one-ports (a single one-port is a sequence of one)."""
-    if isinstance(parts, OnePort):
-        return (parts,)
-    try:
-        out = () if isinstance(parts, str | bytes) else tuple(parts)
-    except TypeError:
-        out = ()
-    if not out:
-        raise ParameterError(
-            f"{cls}(parts) needs a non-empty tuple of one-ports, got {parts!r} (or connect them with "
-            f"{'a + b' if cls == 'Series' else 'a | b'})"
-        )
-    return out
-
-
 def _flatten(parts: tuple, cls: type) -> tuple:
     out: list = []
     for part in parts:
@@ -232,7 +216,8 @@ class Series(OnePort):
     parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(_parts(self.parts, "Series"), Series))
+        parts = connection_parts(self.parts, "Series", OnePort, "a + b")
+        object.__setattr__(self, "parts", _flatten(parts, Series))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)
@@ -252,7 +237,8 @@ class Parallel(OnePort):
     parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(_parts(self.parts, "Parallel"), Parallel))
+        parts = connection_parts(self.parts, "Parallel", OnePort, "a | b")
+        object.__setattr__(self, "parts", _flatten(parts, Parallel))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)
