@@ -31,6 +31,7 @@ from .._printing import SymPyPrintable
 from .._validate import check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
+from . import _checks
 
 __all__ = [
     "DelayRoots",
@@ -501,7 +502,10 @@ def characteristic_quasipolynomial(
     >>> characteristic_quasipolynomial(1, 0, 0, 0, sp.Symbol("rho"), sp.Symbol("sigma"))
     p**2 + (p*rho + sigma)*exp(-p)
     """
-    s = variable
+    names = ("l01", "l11", "l21", "l02", "l12", "l22")
+    given = (l01, l11, l21, l02, l12, l22)
+    l01, l11, l21, l02, l12, l22 = (_checks.expression(n, v, real=True) for n, v in zip(names, given, strict=True))
+    s = _checks.symbol("variable", variable)
     return l01 * s**2 + l11 * s + l21 + sp.exp(-s) * (l02 * s**2 + l12 * s + l22)
 
 
@@ -540,20 +544,6 @@ def callender_hartree_porter_optimum() -> dict[str, sp.Expr]:
     }
 
 
-def _real_parameter(name: str, value: Any) -> sp.Expr:
-    """``value`` as a real SymPy number or expression (floats stay floats); nan/inf, complex numbers and text are
-    refused."""
-    if value is None or isinstance(value, str | bytes | bool):
-        raise ParameterError(f"{name} must be a real number or a real SymPy symbol, got {value!r}")
-    try:
-        out = sp.sympify(value)
-    except (sp.SympifyError, TypeError) as exc:
-        raise ParameterError(f"{name} must be a real number or a real SymPy symbol, got {value!r}") from exc
-    if not isinstance(out, sp.Expr) or out.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or out.is_extended_real is False:
-        raise ParameterError(f"{name} must be a finite real number or a real SymPy symbol, got {value!r}")
-    return out
-
-
 @validated
 def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
     """Best degree of stability of ``gamma^2 + rho gamma + sigma exp(-gamma) = 0`` for a given ``rho`` (§4.17).
@@ -581,7 +571,7 @@ def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
     >>> andronov_maier_optimum(0)
     {'s': 0, 'sigma': 0}
     """
-    rho = _real_parameter("rho", rho)
+    rho = _checks.expression("rho", rho, real=True)
     s, sig, g = sp.symbols("s sigma gamma")
     f = g**2 + rho * g + sig * sp.exp(-g)
     e1 = sp.solve(f.subs(g, -s), sig)[0]  # f(-s) = 0: sigma = e^(-s) (rho s - s^2)   (4.146)

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import check_finite_array, check_int, check_memory, check_positive, validated
+from ..._validate import check_finite, check_finite_array, check_int, check_memory, check_positive, validated
 from ...errors import IdentificationError, ParameterError
 from ._signals import ModalEstimate, _as_signals
 
@@ -54,8 +54,10 @@ def noise_sigma(signals: Any, snr_db: float) -> float:
     >>> noise_sigma([1.0, -1.0, 1.0, -1.0], 20.0)
     0.1
     """
-    s = np.asarray(signals, dtype=float)
-    return float(np.sqrt(np.mean(s**2) / 10 ** (float(snr_db) / 10)))
+    s = check_finite_array("signals", signals)
+    if s.size == 0:
+        raise ParameterError("signals must hold at least one sample")
+    return float(np.sqrt(np.mean(s**2) / 10 ** (check_finite("snr_db", snr_db) / 10)))
 
 
 @validated
