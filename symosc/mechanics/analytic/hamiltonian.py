@@ -47,17 +47,6 @@ def poisson_bracket(f: Any, g: Any, coordinates: Sequence[sp.Symbol], momenta: S
     return sp.Add(*(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q) for q, p in zip(coordinates, momenta, strict=True)))
 
 
-def _symbols(what: str, given: Any) -> tuple[sp.Symbol, ...]:
-    """``given`` (a Symbol or a sequence of them) as a tuple of Symbols."""
-    items = (given,) if isinstance(given, sp.Symbol) else given
-    if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
-        raise ParameterError(f"{what} must be a sequence of SymPy Symbols, got {given!r}")
-    items = tuple(items)
-    if not items or not all(isinstance(x, sp.Symbol) for x in items):
-        raise ParameterError(f"{what} must be a non-empty sequence of SymPy Symbols, got {given!r}")
-    return items
-
-
 class HamiltonianSystem(SymPyPrintable):
     """Canonical equations ``q' = dH/dp``, ``p' = -dH/dq + Q`` (Bulgakov (1954), eq. (3.117)).
 
@@ -213,3 +202,14 @@ class HamiltonianSystem(SymPyPrintable):
         params = [float(v) for v in params]
         raw = fn.raw
         return lambda time, x: np.asarray(raw(time, *x, *params), dtype=float).ravel()
+
+
+def _symbols(what: str, given: Any) -> tuple[sp.Symbol, ...]:
+    """``given`` (a Symbol or a sequence of them) as a tuple of Symbols."""
+    items = (given,) if isinstance(given, sp.Symbol) else given
+    if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
+        raise ParameterError(f"{what} must be a sequence of SymPy Symbols, got {given!r}")
+    items = tuple(items)
+    if not items or not all(isinstance(x, sp.Symbol) for x in items):
+        raise ParameterError(f"{what} must be a non-empty sequence of SymPy Symbols, got {given!r}")
+    return items

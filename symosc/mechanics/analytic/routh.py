@@ -199,10 +199,12 @@ class RouthReduction(SymPyPrintable):
 
         Parameters
         ----------
-        point : mapping
-            Value of every non-cyclic coordinate (Symbol or name -> number or expression).
-        momenta : mapping, optional
-            Values of the cyclic momenta (``p_<q>`` symbol or name -> value); missing ones stay symbolic.
+        point : mapping of Symbol or str to number or expression
+            Values of every non-cyclic coordinate at the steady motion (keys are coordinates or their names); a
+            missing or unknown coordinate raises ModelError.
+        momenta : mapping of Symbol or str to number or expression, optional
+            Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names);
+            momenta left out stay symbolic.
         rtol : float, optional
             Relative tolerance (> 0) on the balance ``dV_R/dq = 0`` when the data hold floats: the residual is
             compared with the size of the terms that cancel in it (each evaluated in absolute value), so that a
@@ -250,10 +252,12 @@ class RouthReduction(SymPyPrintable):
 
         Parameters
         ----------
-        point : mapping
-            Value of every non-cyclic coordinate at the steady motion.
-        momenta : mapping
-            Values of the cyclic momenta (``p_<q>`` symbol or name -> value).
+        point : mapping of Symbol or str to number or expression
+            Values of every non-cyclic coordinate at the steady motion (keys are coordinates or their names); a missing
+            or unknown coordinate raises ModelError.
+        momenta : mapping of Symbol or str to number or expression
+            Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names); momenta
+            left out stay symbolic.
         rtol : float, optional
             Relative tolerance of the steady-motion check for floating-point data (see :meth:`steady_motion`).
         """
