@@ -408,7 +408,10 @@ def sweep(
         isinstance(max_workers, bool) or int(max_workers) != max_workers or max_workers < 1
     ):
         raise ParameterError(f"max_workers must be a positive integer, got {max_workers!r}")
-    check_choice("nan", nan, ("keep", "error"))
+    try:
+        check_choice("nan", nan, ("keep", "error"))
+    except ParameterError as exc:
+        raise ParameterError(f"nan must be 'keep' or 'error': {exc}") from None
     if timeout is not None:
         if isinstance(timeout, bool) or not isinstance(timeout, int | float) or not (0 < timeout < math.inf):
             raise ParameterError(f"timeout must be a positive number of seconds, got {timeout!r}")
