@@ -10,6 +10,7 @@ import difflib
 import functools
 import inspect
 import numbers
+import os
 import re
 from collections.abc import Iterable
 from typing import Any
@@ -29,6 +30,7 @@ __all__ = [
     "check_finite_array",
     "check_int",
     "check_known_names",
+    "check_memory",
     "check_positive",
     "check_sympy_matrix",
 ]
@@ -164,6 +166,47 @@ def check_finite_array(name: str, value: Any, *, ndim: int | None = None, comple
     if not np.all(np.isfinite(arr)):
         raise ParameterError(f"{name} must contain only finite numbers (found nan or inf)")
     return arr
+
+
+def physical_memory() -> int | None:
+    """Bytes of memory this process may use: the machine's physical memory (``os.sysconf``), or the control group's
+    limit when a smaller one is set (a container); None when neither can be read."""
+    try:
+        total = int(os.sysconf("SC_PAGE_SIZE")) * int(os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):  # pragma: no cover - a platform without sysconf
+        total = None
+    try:
+        with open("/sys/fs/cgroup/memory.max", encoding="ascii") as fh:
+            limit = fh.read().strip()
+        if limit.isdigit():
+            total = int(limit) if total is None else min(total, int(limit))
+    except OSError:
+        pass
+    return total if total and total > 0 else None
+
+
+def _bytes(n: float) -> str:
+    for unit in ("bytes", "KiB", "MiB", "GiB", "TiB", "PiB"):
+        if n < 1024 or unit == "PiB":
+            return f"{n:.3g} {unit}"
+        n /= 1024
+    return f"{n:.3g} PiB"  # pragma: no cover
+
+
+def check_memory(what: str, n_bytes: float, advice: str = "") -> None:
+    """Refuse up front a request whose arrays would need more than the memory of the machine.
+
+    ``what`` names the request and the argument that sizes it (``"min_time_1dof(): 5e11 switching times (a/u_m =
+    1e12)"``), ``n_bytes`` is the estimate, ``advice`` what to do instead.  A ParameterError with the estimate
+    replaces the MemoryError (or the swapping machine) the request would otherwise end in.
+    """
+    total = physical_memory()
+    if total is None or not n_bytes > total:
+        return
+    raise ParameterError(
+        f"{what} would need about {_bytes(float(n_bytes))} of memory, more than this machine has ({_bytes(total)})"
+        + (f"; {advice}" if advice else "")
+    )
 
 
 # ------------------------------------------------------------------------------------------ boundary guard

@@ -71,7 +71,10 @@ def _parse_sets(items: Sequence[str] | None, valid: Sequence[str], dims: dict) -
             except UnitError as exc:
                 raise _UsageError(f"--set {name}: {val!r} is not a number or a quantity ({exc})") from None
             out[name] = val
-        si = parse_quantity(out[name], dims.get(name))
+        try:
+            si = parse_quantity(out[name], dims.get(name))
+        except UnitError as exc:  # nan, inf
+            raise _RangeError(f"--set {name}={val}: {exc}") from None
         if dims.get(name) not in (None, "dimensionless") and not si > 0:
             raise _RangeError(f"--set {name}={val}: {name} must be positive (got {si:g} in SI units)")
     return out
@@ -162,12 +165,13 @@ def _stability_scene(n: int, links: str, sets: dict, frequency: str | None, ampl
 
 
 def _stability(args: argparse.Namespace) -> int:
+    from .models.pendulum import MAX_SYMBOLIC_LINKS
     from .scene import loads
     from .scene._builtin import TABLE1_PARAMETERS
 
     n, links = args.n, args.links
-    if n < 1:
-        raise _UsageError(f"N must be a positive integer, got {n}")
+    if not 1 <= n <= MAX_SYMBOLIC_LINKS:
+        raise _UsageError(f"N must be a positive integer <= {MAX_SYMBOLIC_LINKS} (the symbolic chain's limit), got {n}")
     if n == 2 and links == "rigid":
         defaults: dict = dict(TABLE1_PARAMETERS)
         what = "Gribkov & Khokhlov (2015), Table 1"

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from . import _sweep_tasks as _tasks
+from ._validate import check_choice
 from .errors import ParameterError
 
 __all__ = ["PROCESS_THRESHOLD", "SweepFailure", "SweepResult", "sweep"]
@@ -407,8 +408,10 @@ def sweep(
         isinstance(max_workers, bool) or int(max_workers) != max_workers or max_workers < 1
     ):
         raise ParameterError(f"max_workers must be a positive integer, got {max_workers!r}")
-    if nan not in ("keep", "error"):
-        raise ParameterError(f"nan must be 'keep' or 'error', got {nan!r}")
+    try:
+        check_choice("nan", nan, ("keep", "error"))
+    except ParameterError as exc:
+        raise ParameterError(f"nan must be 'keep' or 'error': {exc}") from None
     if timeout is not None:
         if isinstance(timeout, bool) or not isinstance(timeout, int | float) or not (0 < timeout < math.inf):
             raise ParameterError(f"timeout must be a positive number of seconds, got {timeout!r}")

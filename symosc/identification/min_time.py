@@ -25,7 +25,7 @@ import numpy as np
 
 from .._plotting import new_axes, plot_method
 from .._printing import SymPyPrintable
-from .._validate import validated
+from .._validate import check_finite, check_finite_array, check_memory, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = [
@@ -43,8 +43,8 @@ __all__ = [
 
 
 def _positive(name: str, value: Any) -> float:
-    v = float(value)
-    if not (np.isfinite(v) and v > 0):
+    v = check_finite(name, value)
+    if not v > 0:
         raise ParameterError(f"{name} must be positive and finite, got {value!r}")
     return v
 
@@ -228,6 +228,15 @@ def min_time_1dof(
     if x0.shape != (2,) or not np.all(np.isfinite(x0)):
         raise ParameterError(f"x0 must be a finite pair (x1, x2), got {x0!r}")
     r0 = float(np.hypot(*x0))
+    # the optimal control switches once per half period and |x| changes by at most 2 u_m per half period
+    switches = abs(r0 - a) / (2 * u_m) + 2
+    check_memory(
+        f"min_time_1dof(): the optimal control with about {switches:.3g} switches (|x0| - a = {r0 - a:.3g} with "
+        f"u_m = {u_m:.3g})",
+        40.0 * switches,
+        "u_m must not be so small against the distance |x0| - a (excitation_time gives the time from rest in closed "
+        "form)",
+    )
     if abs(r0 - a) <= tol * max(a, 1.0):
         return MinTimeResult(0.0, 0.0, r0 <= a, u_m, omega, np.empty(0))
     inside = r0 < a
@@ -365,7 +374,12 @@ def quasi_optimal_control(x1: Any, x2: Any, a: float, u_m: float) -> np.ndarray:
     >>> quasi_optimal_control([0.0, 0.5, 3.0, 3.0], [0.0, -0.2, 1.0, 0.0], 2.0, 0.1).tolist()
     [0.1, -0.1, -0.1, 0.1]
     """
-    x1, x2 = np.broadcast_arrays(np.asarray(x1, float), np.asarray(x2, float))
+    a, u_m = _positive("a", a), _positive("u_m", u_m)
+    x1, x2 = check_finite_array("x1", x1), check_finite_array("x2", x2)
+    try:
+        x1, x2 = np.broadcast_arrays(x1, x2)
+    except ValueError:
+        raise ParameterError(f"x1 and x2 must be broadcastable, got shapes {x1.shape} and {x2.shape}") from None
     r2 = x1**2 + x2**2
     s = np.where(x2 > 0, 1.0, np.where(x2 < 0, -1.0, np.where(x1 < u_m, 1.0, -1.0)))
     inside = r2 < a * a

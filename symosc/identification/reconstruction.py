@@ -31,7 +31,7 @@ import sympy as sp
 
 from .._deprecation import module_getattr as _module_getattr
 from .._printing import SymPyPrintable
-from .._validate import validated
+from .._validate import check_finite_array, validated
 from ..errors import IdentificationError, ParameterError
 
 __all__ = [
@@ -108,12 +108,10 @@ def real_modes(values: Any, how: str = "modulus") -> np.ndarray:
     """
     if how not in ("modulus", "real"):
         raise ParameterError(f"how must be 'modulus' or 'real', got {how!r}")
-    a = np.asarray(values)
-    if np.iscomplexobj(a):
-        if how == "real":
-            return a.real.astype(float)
-        return np.where(a.real < 0, -1.0, 1.0) * np.abs(a)
-    return a.astype(float)
+    a = check_finite_array("values (identified frequencies, mode shapes or amplitudes)", values, complex_ok=True)
+    if how == "real" or not np.any(a.imag):
+        return a.real.copy()
+    return np.where(a.real < 0, -1.0, 1.0) * np.abs(a)
 
 
 @validated
@@ -165,6 +163,9 @@ def check_distinct(omega: Sequence[float], rtol: float = 1e-3) -> np.ndarray:
 
 def _prepare(omega: Any, modes: Any, rtol: float, how: str = "modulus") -> tuple[np.ndarray, np.ndarray]:
     w = check_distinct(np.abs(omega) if np.iscomplexobj(omega) else omega, rtol)
+    cp = np.asarray(modes)
+    if cp.dtype.kind in "fc" and not np.all(np.isfinite(cp)):
+        raise ParameterError("modes contain NaN or inf")
     cp = real_modes(modes, how)
     if cp.ndim != 2 or cp.shape[1] != len(w):
         raise ParameterError(f"modes must have shape (sensors, {len(w)}) to match omega, got {cp.shape}")

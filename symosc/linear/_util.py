@@ -30,7 +30,7 @@ def as_coefficients(coefficients: Any, what: str = "coefficients") -> tuple[sp.E
     for c in coeffs:
         if c.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
             raise ParameterError(f"{what} must be finite, got {c}")
-    if coeffs[0] == 0:
+    if coeffs[0].is_zero:
         raise ParameterError(
             f"the leading coefficient of {what} is zero; pass the coefficients highest power first and drop "
             "leading zeros (the degree is len(coefficients) - 1)"

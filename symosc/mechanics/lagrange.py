@@ -22,7 +22,7 @@ from sympy.core.function import AppliedUndef
 
 from .._equality import ModelEquality
 from .._printing import SymPyPrintable
-from ..errors import ModelError
+from ..errors import ModelError, ParameterError
 from ..symbols import ddot, dot, sort_symbols, t
 from . import _constraints, _terms
 
@@ -33,6 +33,10 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
     """Plain coordinate symbols and the replacement map from dynamicsymbols (and their derivatives)."""
     if isinstance(coordinates, (sp.Symbol, AppliedUndef)):
         coordinates = [coordinates]
+    if isinstance(coordinates, str | bytes) or not hasattr(coordinates, "__len__"):
+        raise ModelError(
+            f"coordinates must be a sequence of Symbols or dynamicsymbols (functions of symosc.t), got {coordinates!r}"
+        )
     if len(coordinates) == 0:
         raise ModelError("at least one generalised coordinate is required")
     plain: list[sp.Symbol] = []
@@ -131,6 +135,13 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         self._qdd = tuple(ddot(s) for s in q)
 
         def convert(expr: Any, what: str) -> sp.Expr:
+            if expr is None:
+                raise ParameterError(f"{what} must be a SymPy expression (0 when there is none), got None")
+            if isinstance(expr, str | bytes):
+                raise ParameterError(
+                    f"{what} must be a SymPy expression, got the string {expr!r}: build it from symbols "
+                    "(sympy.symbols(...)) rather than text, so that a misspelt name is never silently a new symbol"
+                )
             try:
                 e = sp.sympify(expr)
             except (sp.SympifyError, TypeError) as exc:
@@ -163,6 +174,11 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         n = len(self._q)
         if forces is None:
             return (sp.S.Zero,) * n
+        if isinstance(forces, str | bytes) or not hasattr(forces, "__iter__"):
+            raise ParameterError(
+                f"forces must be a sequence of {n} expressions (one per coordinate) or a mapping coordinate -> force, "
+                f"got {forces!r}"
+            )
         if isinstance(forces, Mapping):
             by_name = {q.name: i for i, q in enumerate(self._q)}
             out = [sp.S.Zero] * n

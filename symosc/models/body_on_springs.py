@@ -174,6 +174,13 @@ class BodyOnSprings(ModelEquality, SymPyPrintable):
         return (self.n_springs, self.layout, self.convention), ()
 
     def __init__(self, n_springs: int, layout: str, convention: str):
+        if not isinstance(n_springs, int | np.integer) or isinstance(n_springs, bool) or n_springs < 3:
+            raise ParameterError(f"n_springs must be an integer >= 3 (three non-collinear supports), got {n_springs!r}")
+        n_springs = int(n_springs)
+        if layout not in ("rectangle", "general"):
+            raise ParameterError(f"layout must be 'rectangle' or 'general', got {layout!r}")
+        if layout == "rectangle" and n_springs != 4:
+            raise ParameterError(f"the rectangle layout has 4 springs, got n_springs={n_springs}; use layout='general'")
         self.n_springs = n_springs
         self.layout = layout
         self.convention = convention
@@ -611,13 +618,6 @@ def body_on_springs(
     [0,  Izz, -Ixz],
     [0, -Ixz,  Ixx]])
     """
-    if not isinstance(n_springs, int | np.integer) or n_springs < 3:
-        raise ParameterError(f"n_springs must be an integer >= 3 (three non-collinear supports), got {n_springs!r}")
-    if layout is None:
+    if layout is None and isinstance(n_springs, int | np.integer):
         layout = "rectangle" if n_springs == 4 else "general"
-    if layout not in ("rectangle", "general"):
-        raise ParameterError(f"layout must be 'rectangle' or 'general', got {layout!r}")
-    if layout == "rectangle" and n_springs != 4:
-        raise ParameterError(f"the rectangle layout has 4 springs, got n_springs={n_springs}; use layout='general'")
-    product_sign(product_of_inertia)
-    return BodyOnSprings(int(n_springs), layout, product_of_inertia)
+    return BodyOnSprings(n_springs, layout, product_of_inertia)

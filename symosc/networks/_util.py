@@ -64,6 +64,22 @@ def element_value(value: Any, name: str) -> sp.Expr:
     return expr
 
 
+def connection_parts(parts: Any, cls: str, single: type, operator: str) -> tuple:
+    """The parts of a series or parallel connection ``cls(parts)``: a non-empty sequence (a single element of type
+    ``single`` is a sequence of one); ``operator`` names the shorthand (``"a + b"``)."""
+    if isinstance(parts, single):
+        return (parts,)
+    try:
+        out = () if isinstance(parts, str | bytes) else tuple(parts)
+    except TypeError:
+        out = ()
+    if not out:
+        raise ParameterError(
+            f"{cls}(parts) needs a non-empty tuple of elements, got {parts!r} (or connect them with {operator})"
+        )
+    return out
+
+
 def as_symbol(p: Any, name: str = "p") -> sp.Symbol:
     """Check that ``p`` is a SymPy Symbol."""
     if not isinstance(p, sp.Symbol):

@@ -31,6 +31,7 @@ from .._printing import SymPyPrintable
 from .._validate import check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile
+from . import _checks
 
 __all__ = [
     "DelayRoots",
@@ -501,7 +502,10 @@ def characteristic_quasipolynomial(
     >>> characteristic_quasipolynomial(1, 0, 0, 0, sp.Symbol("rho"), sp.Symbol("sigma"))
     p**2 + (p*rho + sigma)*exp(-p)
     """
-    s = variable
+    names = ("l01", "l11", "l21", "l02", "l12", "l22")
+    given = (l01, l11, l21, l02, l12, l22)
+    l01, l11, l21, l02, l12, l22 = (_checks.expression(n, v, real=True) for n, v in zip(names, given, strict=True))
+    s = _checks.symbol("variable", variable)
     return l01 * s**2 + l11 * s + l21 + sp.exp(-s) * (l02 * s**2 + l12 * s + l22)
 
 
@@ -549,8 +553,10 @@ def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
 
     Parameters
     ----------
-    rho : float or Rational
-        The damping ratio ``rho = l1/l0`` (time in units of the delay, (4.141)); a positive number (not a symbol).
+    rho : float, Rational or Symbol
+        The damping ratio ``rho = l1/l0`` (time in units of the delay, (4.141)); a real number or a real symbol.
+        ``rho = 0`` gives ``s* = 0``: without damping no gain makes the system asymptotically stable; for
+        ``rho < 0`` the best ``s*`` is negative (the rightmost root ``-s*`` stays in the right half-plane).
 
     Returns
     -------
@@ -562,12 +568,17 @@ def andronov_maier_optimum(rho: Any) -> dict[str, sp.Expr]:
     >>> opt = andronov_maier_optimum(sp.Rational(1, 5))
     >>> opt["s"], round(float(opt["sigma"]), 7)
     (11/10 - sqrt(101)/10, 0.009071)
+    >>> andronov_maier_optimum(0)
+    {'s': 0, 'sigma': 0}
     """
-    rho = sp.sympify(rho)
+    rho = _checks.expression("rho", rho, real=True)
     s, sig, g = sp.symbols("s sigma gamma")
     f = g**2 + rho * g + sig * sp.exp(-g)
-    e1 = sp.solve(f.subs(g, -s), sig)[0]
-    e2 = sp.expand(sp.simplify(sp.diff(f, g).subs(g, -s).subs(sig, e1) * sp.exp(0)))
-    cands = sp.solve(e2, s)
-    s_star = min(cands, key=lambda r: float(r) if r.is_real and float(r) > 0 else math.inf)
-    return {"s": sp.simplify(s_star), "sigma": sp.simplify(e1.subs(s, s_star))}
+    e1 = sp.solve(f.subs(g, -s), sig)[0]  # f(-s) = 0: sigma = e^(-s) (rho s - s^2)   (4.146)
+    # f'(-s) = 0 with that sigma: the quadratic s^2 - (2 + rho) s + rho = 0 (a double root at -s)
+    quadratic = sp.Poly(sp.expand(sp.simplify(sp.diff(f, g).subs(g, -s).subs(sig, e1))), s)
+    c2, c1, c0 = quadratic.all_coeffs()
+    # its smaller root, (4.149) (the discriminant (2 + rho)^2 - 4 rho = 4 + rho^2 is positive for real rho; the
+    # larger root's double real root is not the rightmost root)
+    s_star = sp.simplify((-c1 - sp.sqrt(c1**2 - 4 * c0 * c2)) / (2 * c2))
+    return {"s": s_star, "sigma": sp.simplify(e1.subs(s, s_star))}

@@ -11,6 +11,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .._validate import check_choice
 from ..errors import ParameterError
 from ..symbols import natural_key
 from . import _python
@@ -31,7 +32,7 @@ def _as_symbol_list(args: Any) -> list[sp.Symbol]:
         elif isinstance(a, sp.Symbol):
             out.append(a)
         else:
-            raise ParameterError(f"compile() arguments must be SymPy Symbols, got {a!r} ({type(a).__name__})")
+            raise ParameterError(f"compile(): args must be SymPy Symbols, got {a!r} ({type(a).__name__})")
     names = [s.name for s in out]
     dup = sorted({n for n in names if names.count(n) > 1})
     if dup:
@@ -173,6 +174,18 @@ class _CChecked:
         return out if status == 0 else self.slow(*values)
 
 
+def _check_values(values: Any) -> None:
+    if not isinstance(values, Mapping):
+        raise ParameterError(f"values must be a mapping (Symbol or name -> number), got {values!r}")
+
+
+def _iterable(value: Any, what: str) -> tuple:
+    try:
+        return tuple(value)
+    except TypeError:
+        raise ParameterError(f"{what} must be a sequence, got {value!r}") from None
+
+
 def resolve(symbols: Sequence[sp.Symbol], values: Mapping[Any, Any]) -> list[Any]:
     """Pick the value of each symbol from ``values`` (keyed by Symbol or by name).
 
@@ -187,6 +200,9 @@ def resolve(symbols: Sequence[sp.Symbol], values: Mapping[Any, Any]) -> list[Any
     ...
     symosc.errors.ParameterError: missing values for: g
     """
+    _check_values(values)
+    if isinstance(symbols, str | bytes) or not all(isinstance(s, sp.Symbol) for s in _iterable(symbols, "symbols")):
+        raise ParameterError(f"symbols must be a sequence of SymPy Symbols, got {symbols!r}")
     by_name: dict[str, Any] = {}
     for k, v in values.items():
         name = k.name if isinstance(k, sp.Symbol) else str(k)
@@ -205,6 +221,9 @@ def bind(expr: Any, values: Mapping[Any, Any]) -> Any:
     >>> bind(a + b, {"a": 1, "b": sp.Rational(1, 2)})
     3/2
     """
+    _check_values(values)
+    if expr is None or isinstance(expr, str | bytes):
+        raise ParameterError(f"expr must be a SymPy expression or matrix, got {expr!r}")
     expr = sp.sympify(expr)
     syms = {s.name: s for s in expr.free_symbols}
     sub = {}
@@ -292,8 +311,7 @@ def compile(
     >>> c([0.0, 1.0], 2.0).round(6).tolist()
     [1.0, -0.416147]
     """
-    if backend not in _BACKENDS:
-        raise ParameterError(f"unknown backend {backend!r}; choose one of {_BACKENDS}")
+    check_choice("backend", backend, _BACKENDS)
     if exprs is None:
         raise ParameterError("exprs: expected a SymPy expression, Matrix or sequence of expressions, got None")
     arg_syms = _as_symbol_list(args)

@@ -28,7 +28,7 @@ import sympy as sp
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ModelError, ParameterError
-from ._rational import as_rational, distinct_roots
+from ._rational import as_rational, check_expression, check_symbol, distinct_roots
 
 __all__ = [
     "DifferenceSolution",
@@ -82,8 +82,9 @@ def step_image(h, n: sp.Symbol = _n, gamma: sp.Symbol = _gamma) -> sp.Expr:
     >>> sp.factor(step_image(n, n, g))          # floor(t/tau)  <->  1/(exp(p tau) - 1)
     1/(gamma - 1)
     """
+    h, n, gamma = check_expression(h, "h"), check_symbol(n, "n"), check_symbol(gamma, "gamma")
     total = sp.S.Zero
-    for term in sp.Add.make_args(sp.expand(sp.sympify(h))):  # linearity: SymPy sums simple terms more reliably
+    for term in sp.Add.make_args(sp.expand(h)):  # linearity: SymPy sums simple terms more reliably
         part = sp.summation(term * gamma ** (-n), (n, 0, sp.oo))
         if isinstance(part, sp.Piecewise):
             part = part.args[0][0]

@@ -27,6 +27,7 @@ from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ModelError, ParameterError
 from ..symbols import t as _t
+from ._rational import check_expression
 from .heaviside import heaviside_expand
 from .table import _Unsupported, carson_by_table
 from .transform import inverse_carson
@@ -157,11 +158,16 @@ class OperationalSolution(SymPyPrintable):
 
 
 def _as_matrix(a, name: str) -> sp.Matrix:
-    if isinstance(a, sp.MatrixBase):
-        return sp.Matrix(a)
-    if isinstance(a, (list, tuple)):
-        return sp.Matrix(a)
-    return sp.Matrix([[sp.sympify(a)]])
+    """``a`` (a matrix, nested list or scalar expression) as a Matrix of finite expressions."""
+    if isinstance(a, sp.MatrixBase | list | tuple):
+        try:
+            out = sp.Matrix(a)
+        except (TypeError, ValueError, sp.SympifyError) as exc:
+            raise ParameterError(f"{name} must be a matrix of expressions: {exc}") from None
+        for entry in out:
+            check_expression(entry, f"an entry of {name}")
+        return out
+    return sp.Matrix([[check_expression(a, name)]])
 
 
 def _coeffs(poly_expr, var) -> list:

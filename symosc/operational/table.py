@@ -13,6 +13,7 @@ import sympy as sp
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..symbols import t as _t
+from ._rational import check_expression, check_symbol
 
 __all__ = ["CARSON_TABLE", "TableEntry", "carson_by_table", "carson_matrix_exp", "table_entry"]
 
@@ -256,9 +257,10 @@ def carson_by_table(x, t: sp.Symbol = _t, p: sp.Symbol = _p):
     >>> carson_by_table(t * sp.exp(-t) + sp.sin(2 * t), t, p)
     p*(3*p**2 + 4*p + 6)/((p + 1)**2*(p**2 + 4))
     """
+    t, p = check_symbol(t, "t"), check_symbol(p, "p")
     if isinstance(x, sp.MatrixBase):
         return x.applyfunc(lambda e: carson_by_table(e, t, p))
-    x = sp.sympify(x)
+    x = check_expression(x, "x")
     if not x.has(t):
         return x
     delayed: dict[sp.Expr, sp.Expr] = {}

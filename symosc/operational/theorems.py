@@ -14,7 +14,7 @@ import sympy as sp
 from .._deprecation import renamed_keyword
 from .._validate import validated
 from ..errors import ModelError, ParameterError
-from ._rational import as_rational, distinct_roots
+from ._rational import as_rational, check_expression, check_symbol, distinct_roots
 
 __all__ = [
     "advance",
@@ -59,6 +59,9 @@ def shift(image, p: sp.Symbol, lam) -> sp.Expr:
     >>> sp.factor(shift(1 / p, p, a))     # t  ->  t exp(-a t)
     p/(a + p)**2
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    lam = check_expression(lam, "lam")
     return sp.cancel(p / (p + lam) * sp.sympify(image).subs(p, p + lam))
 
 
@@ -82,6 +85,9 @@ def delay(image, p: sp.Symbol, tau) -> sp.Expr:
     >>> delay(1 / p, p, 2)
     exp(-2*p)/p
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     tau = sp.sympify(tau)
     if tau.is_negative:
         raise ParameterError(f"delay tau must be >= 0, got {tau}; for an advance use advance()")
@@ -113,6 +119,9 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     >>> sp.simplify(advance(p / (p + 1), p, 1, (sp.exp(-t), t)))    # exp(-(t+1))
     p*exp(-1)/(p + 1)
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     tau = sp.sympify(tau)
     if tau.is_negative:
         raise ParameterError(f"advance tau must be >= 0, got {tau}")
@@ -141,6 +150,9 @@ def finite_sum(image, p: sp.Symbol, tau) -> sp.Expr:
     >>> finite_sum(sp.Integer(1), p, tau)       # floor(t/tau), (2.62)
     1/(exp(p*tau) - 1)
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     tau = sp.sympify(tau)
     if tau.is_positive is False:
         raise ParameterError(f"finite_sum needs tau > 0, got {tau}")
@@ -172,6 +184,9 @@ def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
     >>> sp.simplify(finite_difference(1 / p, p, 1, (t, t)))     # Delta t = 1
     1
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     tau = sp.sympify(tau)
     if tau.is_positive is False:
         raise ParameterError(f"finite_difference needs tau > 0, got {tau}")
@@ -241,6 +256,9 @@ def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = 
     >>> sp.simplify(multiple_advance(1 / p, p, 1, 2, original=(t, t)))     # t -> t + 2
     2 + 1/p
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     m = _check_order(m, "multiple_advance")
     tau = sp.sympify(tau)
     if tau.is_negative:
@@ -281,6 +299,9 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
     >>> sp.simplify(higher_difference(2 / p**2, p, 1, 2, original=(t**2, t)))     # Delta**2 t**2 = 2
     2
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    tau = check_expression(tau, "tau")
     m = _check_order(m, "higher_difference")
     tau = sp.sympify(tau)
     if tau.is_positive is False:
@@ -319,6 +340,8 @@ def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
     >>> sp.factor(differentiate_parameter(p / (p - s), s))      # d/ds exp(s t) = t exp(s t)
     p/(p - s)**2
     """
+    image = check_expression(image, "image")
+    s = check_symbol(s, "s")
     if not isinstance(s, sp.Symbol):
         raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
     if int(n) != n or n < 0:
@@ -349,6 +372,7 @@ def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
     >>> integrate_parameter(p / (p + u), u, 0, s)     # Integral(exp(-u t), (u, 0, s)) = (1 - exp(-s t))/t
     -p*log(p) + p*log(p + s)
     """
+    image = check_expression(image, "image")  # the limits s0, s1 may be infinite
     if not isinstance(s, sp.Symbol):
         raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
     upper = s if s1 is None else sp.sympify(s1)
@@ -378,6 +402,9 @@ def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     >>> similarity(p / (p**2 + 1), p, 3)     # sin t -> sin 3t
     p/(3*(p**2/9 + 1))
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    a = check_expression(a, "a")
     a = sp.sympify(a)
     if a.is_positive is False:
         raise ParameterError(f"similarity needs a > 0, got {a}")
@@ -410,6 +437,8 @@ def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int |
     >>> sp.cancel(differentiate_original(p**2 / (p**2 + 1), p, [1]))   # (cos t)' = -sin t
     -p/(p**2 + 1)
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
     m = len(initial) if n is None else int(n)
     if m < 0:
         raise ParameterError("n (the derivative order) must be >= 0")
@@ -442,6 +471,9 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
     >>> integrate_original(sp.Integer(1), p, 2)    # 1 -> t**2/2
     p**(-2)
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
+    constant = constant if constant is None else check_expression(constant, "constant")
     if times < 1:
         raise ParameterError("times must be >= 1")
     if constant != 0 and times != 1:
@@ -470,6 +502,8 @@ def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     >>> sp.factor(differentiate_image(p / (p + 1), p, 2))    # t**2 exp(-t)
     2*p/(p + 1)**3
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
     if n < 0:
         raise ParameterError("n (the derivative order) must be >= 0")
     return sp.cancel((-1) ** n * p * sp.diff(sp.sympify(image) / p, p, n))
@@ -499,6 +533,9 @@ def convolution(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     >>> convolution(sp.Integer(1), sp.Integer(1), p)      # 1 * 1 = t
     1/p
     """
+    image_x = check_expression(image_x, "image_x")
+    image_y = check_expression(image_y, "image_y")
+    p = check_symbol(p, "p")
     return sp.sympify(image_x) * sp.sympify(image_y) / p
 
 
@@ -520,6 +557,9 @@ def duhamel(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     >>> duhamel(p / (p + 1), sp.Integer(1), p)      # x = exp(-t), y = 1: d/dt of the convolution is exp(-t)
     p/(p + 1)
     """
+    image_x = check_expression(image_x, "image_x")
+    image_y = check_expression(image_y, "image_y")
+    p = check_symbol(p, "p")
     return sp.sympify(image_x) * sp.sympify(image_y)
 
 
@@ -551,6 +591,8 @@ def initial_value(image, p: sp.Symbol) -> sp.Expr:
     >>> initial_value(p**2 / (p**2 + 4), p)
     1
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
     value = sp.limit(sp.sympify(image), p, sp.oo)
     if value.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(value, sp.AccumBounds):
         raise ModelError(f"X(p) has no finite limit at p -> oo ({value}): the original is not a function at t = 0+")
@@ -590,6 +632,8 @@ def final_value(image, p: sp.Symbol) -> sp.Expr:
     ...
     symosc.errors.ModelError: final value theorem not applicable: poles -I, I of X(p)/p in Re p >= 0 (x(t) has no limit)
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
     image = sp.sympify(image)
     bad = []
     for root, mult in _poles_checked(image / p, p, "final_value"):
@@ -629,6 +673,8 @@ def integral_to_infinity(image, p: sp.Symbol) -> sp.Expr:
     >>> integral_to_infinity(p / (p + 2), p)     # exp(-2 t)
     1/2
     """
+    image = check_expression(image, "image")
+    p = check_symbol(p, "p")
     image = sp.sympify(image)
     for root, _ in _poles_checked(image / p, p, "integral_to_infinity"):
         re = sp.re(sp.N(root)) if root.is_number else sp.re(root)
@@ -668,6 +714,9 @@ def product_of_originals(image_x, image_y, p: sp.Symbol) -> sp.Expr:
     >>> sp.factor(product_of_originals(1 / p, p / (p + 1), p))     # t * exp(-t)
     p/(p + 1)**2
     """
+    image_x = check_expression(image_x, "image_x")
+    image_y = check_expression(image_y, "image_y")
+    p = check_symbol(p, "p")
     q = sp.Dummy("q")
     y_over_q = sp.sympify(image_y).subs(p, q) / q
     if not y_over_q.is_rational_function(q):

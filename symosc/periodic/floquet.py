@@ -31,7 +31,7 @@ import sympy as sp
 
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
-from .._validate import check_positive, validated
+from .._validate import check_finite_array, check_positive, validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
 from ..symbols import sort_symbols, t
@@ -79,6 +79,9 @@ class FloquetResult(SymPyPrintable):
 
     def __post_init__(self) -> None:
         if self._mult is None:
+            X = check_finite_array("monodromy", self.monodromy, ndim=2, complex_ok=True)
+            if X.shape[0] != X.shape[1]:
+                raise ParameterError(f"monodromy must be a square matrix, got shape {X.shape}")
             rho = np.linalg.eigvals(self.monodromy)
             order = np.lexsort((-rho.imag, -np.abs(rho)))
             object.__setattr__(self, "_mult", rho[order])

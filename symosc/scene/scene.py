@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from .._printing import SymPyPrintable
+from ..errors import ParameterError
 from . import _html
 from ._errors import SceneError, closest
 from ._log import DerivationLog
@@ -348,6 +349,8 @@ def load(path: str | os.PathLike) -> Scene:
     --------
     Scene.run : answer the questions.
     """
+    if not isinstance(path, str | os.PathLike):
+        raise ParameterError(f"path must be a str or os.PathLike naming a scene file, got {path!r}")
     p = Path(path)
     try:
         if p.stat().st_size > MAX_SCENE_BYTES:

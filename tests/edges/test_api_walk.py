@@ -1,11 +1,13 @@
 """Bad-input walk over the whole public API: only symosc errors (or results) may come out, nothing hangs.
 
-The walk (``tests/edges/_api_walk.py``) discovers every function in the ``__all__`` of every subpackage of
-symosc at run time, so subpackages added later are covered.  Each required argument gets one of None, nan, inf,
--1, 0, "abc", 1.5 and a 1x3 array (all the same first, then hypothesis-drawn mixtures); each call has a 20 s
-SIGALRM cap and the whole walk runs in a subprocess with an overall cap.  Every symosc error the walk provokes must
-also be explicit: its message names an argument of the function and states an expectation (what the argument must
-be, or what to do), and the expectation is more than a pointer to ``help()``.
+The walk (``tests/edges/_api_walk.py``) discovers every function and class in the ``__all__`` of symosc and of
+every subpackage at run time, so subpackages added later are covered.  Each required argument gets one of None,
+nan, inf, -1, 0, "abc", 1.5 and a 1x3 array (all the same first, then three fixed mixtures); a call with only nan
+(or only inf) arguments must not return a result; each call has a 20 s SIGALRM cap and every pass runs in a
+subprocess with an overall cap.  Every symosc error a function call provokes must also be explicit: its message
+names an argument of the function and states an expectation (what the argument must be, or what to do), and the
+expectation is more than a pointer to ``help()``.  The constructors of the public classes, the command line (exit
+code 1 or 2, one error line, never a traceback) and malformed scene texts are walked too.
 """
 
 from __future__ import annotations
@@ -24,20 +26,60 @@ from symosc.errors import ParameterError
 WALK = Path(__file__).with_name("_api_walk.py")
 
 
-def test_public_api_bad_input_walk(tmp_path):
+def _walk(passes: str, cwd: Path) -> list[dict]:
     env = {**os.environ, "PYTHONPATH": str(Path(symosc.__file__).parents[1])}
     proc = subprocess.run(  # in a scratch folder: bad paths such as "abc" may be written as files
-        [sys.executable, str(WALK), "20", "4"],
+        [sys.executable, str(WALK), "20", "3", passes],
         capture_output=True,
         text=True,
         timeout=600,
         env=env,
         check=False,
-        cwd=tmp_path,
+        cwd=cwd,
     )
     assert proc.returncode == 0, proc.stderr[-3000:]
-    problems = [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
+    return [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
+
+
+def test_public_api_bad_input_walk(tmp_path):
+    problems = _walk("functions", tmp_path)
     assert problems == [], "\n".join(f"{p['function']}: {p.get('detail', p)}" for p in problems)
+
+
+def test_constructors_command_line_and_scene_texts_walk(tmp_path):
+    problems = _walk("classes,cli,scenes", tmp_path)
+    assert problems == [], "\n".join(f"{p['function']}: {p.get('detail', p)}" for p in problems)
+
+
+def test_the_walk_reports_silent_results_and_generic_errors(capsys):
+    """The walk's own check can fail: a function that returns for nan, one that leaks a ValueError and one whose
+    symosc error names no argument are each reported; a function that refuses nan explicitly is not."""
+    sys.path.insert(0, str(WALK.parent))
+    try:
+        import _api_walk as walk
+    finally:
+        sys.path.remove(str(WALK.parent))
+
+    def doubles(x: float) -> float:
+        return 2 * x
+
+    def leaks(x: float, y: float) -> float:
+        return float("abc") if x != x else 0.0
+
+    def vague(x: float) -> float:
+        raise ParameterError("something went wrong")
+
+    def refuses(x: float) -> float:
+        raise ParameterError(f"x must be a finite number, got {x!r}")
+
+    for fn in (doubles, leaks, vague, refuses):
+        walk._walk_one(f"toy.{fn.__name__}", fn, 5, 3, check_messages=True, nonfinite=True)
+    reports = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    kinds = {(r["function"], r["kind"]) for r in reports}
+    assert ("toy.doubles", "accepts nan") in kinds and ("toy.doubles", "accepts inf") in kinds
+    assert ("toy.leaks", "builtins.ValueError") in kinds
+    assert ("toy.vague", "vague ParameterError (names no argument)") in kinds
+    assert not any(r["function"] == "toy.refuses" for r in reports)
 
 
 def test_guard_names_the_argument():
@@ -155,7 +197,7 @@ def test_message_from_a_real_function_names_argument_and_expectation():
 
 
 #: string parameters that are free text (a name for generated code), not a choice among values
-FREE_TEXT = {("symosc.codegen.export", "name")}
+FREE_TEXT = {("symosc.codegen.export", "name"), ("symosc.scene.loads", "name")}
 
 
 def _probe(mode: str, cwd: Path) -> list[list[str]]:

@@ -16,8 +16,8 @@ import numpy as np
 
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import validated
-from ...errors import ParameterError
+from ..._validate import check_finite, check_finite_array, check_int, check_memory, check_positive, validated
+from ...errors import IdentificationError, ParameterError
 from ._signals import ModalEstimate, _as_signals
 
 __all__ = [
@@ -54,8 +54,10 @@ def noise_sigma(signals: Any, snr_db: float) -> float:
     >>> noise_sigma([1.0, -1.0, 1.0, -1.0], 20.0)
     0.1
     """
-    s = np.asarray(signals, dtype=float)
-    return float(np.sqrt(np.mean(s**2) / 10 ** (float(snr_db) / 10)))
+    s = check_finite_array("signals", signals)
+    if s.size == 0:
+        raise ParameterError("signals must hold at least one sample")
+    return float(np.sqrt(np.mean(s**2) / 10 ** (check_finite("snr_db", snr_db) / 10)))
 
 
 @validated
@@ -184,6 +186,12 @@ def cramer_rao_bound(
     -------
     CramerRaoBound
 
+    Raises
+    ------
+    IdentificationError
+        When the Fisher information is singular to working precision (coincident modes, a mode without amplitude, a
+        mode at zero frequency): those parameters cannot be estimated from such a record and have no finite bound.
+
     Examples
     --------
     One undamped real sinusoid, N samples, dt = 1: Kay's bound 12 / (eta N (N^2 - 1)) with eta = A^2 / (2 sigma^2)
@@ -193,21 +201,50 @@ def cramer_rao_bound(
     >>> round(float(b.frequency[0] / (12 / (50.0 * 1000 * (1000**2 - 1)))), 2)
     1.0
     """
-    w = np.atleast_1d(np.asarray(frequencies, dtype=float))
-    d = np.atleast_1d(np.asarray(damping, dtype=float))
-    a = np.atleast_2d(np.asarray(amplitudes, dtype=float))
-    ph = np.atleast_2d(np.asarray(phases, dtype=float))
+    w = np.atleast_1d(check_finite_array("frequencies", frequencies))
+    d = np.atleast_1d(check_finite_array("damping", damping))
+    a = np.atleast_2d(check_finite_array("amplitudes", amplitudes))
+    ph = np.atleast_2d(check_finite_array("phases", phases))
     k = w.size
-    if d.shape != (k,) or a.shape[1] != k or ph.shape != a.shape:
+    if w.ndim != 1 or d.shape != (k,) or a.ndim != 2 or a.shape[1] != k or ph.shape != a.shape:
         raise ParameterError(
             f"inconsistent shapes: frequencies {w.shape}, damping {d.shape}, amplitudes {a.shape}, phases {ph.shape}"
         )
-    if not (sigma > 0 and dt > 0 and n_samples > 2 * k):
-        raise ParameterError("need sigma > 0, dt > 0 and n_samples > 2 n_modes")
-    t = np.arange(int(n_samples)) * float(dt)
+    dt, sigma = check_positive("dt", dt), check_positive("sigma", sigma)
+    n_samples = check_int("n_samples", n_samples, minimum=2 * k + 1)
+    nch, npc = a.shape[0], 2 * k + int(offset)
+    n_par = 2 * k + npc * nch
+    check_memory(
+        f"cramer_rao_bound(): a Jacobian of {n_samples * nch} samples by {n_par} parameters (n_samples = {n_samples})",
+        8.0 * n_samples * nch * (n_par + 8 * k),
+    )
+    _identifiable(w, d, a)
+    t = np.arange(n_samples) * dt
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported below
+        jac = _jacobian(t, w, d, a, ph, npc, offset)
+        fisher = jac.T @ jac / sigma**2
+    if not np.all(np.isfinite(fisher)):
+        raise ParameterError(
+            f"the signal overflows over the record (damping {d.min():.3g} 1/s over n_samples * dt = "
+            f"{n_samples * dt:.3g} s): the record must be shorter or the damping larger (a decay rate > 0)"
+        )
+    cov = _inverse_information(fisher)
+    var = np.diag(cov)
+    per = var[2 * k :].reshape(nch, npc)
+    return CramerRaoBound(
+        frequency=var[k : 2 * k],
+        damping=var[:k],
+        amplitude=per[:, 0 : 2 * k : 2],
+        phase=per[:, 1 : 2 * k : 2],
+        fisher=fisher,
+    )
+
+
+def _jacobian(t, w, d, a, ph, npc: int, offset: bool) -> np.ndarray:
+    """Jacobian of the noise-free samples of every channel with respect to (delta, omega, then per channel A, phi,
+    [offset])."""
+    k, nch = w.size, a.shape[0]
     e = np.exp(-np.outer(t, d))  # (N, k)
-    nch = a.shape[0]
-    npc = 2 * k + int(offset)
     blocks = []
     for c in range(nch):
         arg = np.outer(t, w) + ph[c]
@@ -222,18 +259,44 @@ def cramer_rao_bound(
         if offset:
             local[:, c * npc + 2 * k] = 1.0
         blocks.append(np.hstack([dd, dw, local]))
-    jac = np.vstack(blocks)
-    fisher = jac.T @ jac / float(sigma) ** 2
-    cov = np.linalg.inv(fisher)
-    var = np.diag(cov)
-    per = var[2 * k :].reshape(nch, npc)
-    return CramerRaoBound(
-        frequency=var[k : 2 * k],
-        damping=var[:k],
-        amplitude=per[:, 0 : 2 * k : 2],
-        phase=per[:, 1 : 2 * k : 2],
-        fisher=fisher,
-    )
+    return np.vstack(blocks)
+
+
+def _identifiable(w: np.ndarray, d: np.ndarray, a: np.ndarray) -> None:
+    """IdentificationError for modes whose parameters no record can tell apart (the information is singular)."""
+    for i in range(w.size):
+        if not np.any(a[:, i]):
+            raise IdentificationError(
+                f"mode {i} (omega = {w[i]:.6g}) has zero amplitude in every channel: its frequency and damping do not "
+                "enter the signal and have no finite bound; drop the mode or give its amplitudes"
+            )
+        for j in range(i + 1, w.size):
+            if w[i] == w[j] and d[i] == d[j]:
+                raise IdentificationError(
+                    f"modes {i} and {j} coincide (frequencies {w[i]:.6g}, damping {d[i]:.6g}): a record cannot "
+                    "tell their parameters apart and the Fisher information is singular; give each pole (frequency "
+                    "and damping) only once, its amplitudes add"
+                )
+
+
+def _inverse_information(fisher: np.ndarray) -> np.ndarray:
+    """The inverse of a Fisher matrix, equilibrated by its diagonal; IdentificationError when it is singular to
+    working precision (the diagonal of the inverse would have no correct digit)."""
+    scale = np.sqrt(np.diag(fisher))
+    if not np.all(scale > 0):
+        raise IdentificationError(
+            "a parameter does not enter the signal (zero Fisher information) and has no bound: each mode needs "
+            "nonzero amplitudes and each channel a nonzero signal"
+        )
+    lam, vec = np.linalg.eigh(fisher / np.outer(scale, scale))
+    cond = lam[-1] / lam[0] if lam[0] > 0 else np.inf
+    if not cond * np.finfo(float).eps < 1e-3:
+        raise IdentificationError(
+            f"the Fisher information is singular to working precision (condition number {cond:.3g} after "
+            "equilibration): some parameters cannot be identified from this record (nearly coincident modes, a "
+            "mode at zero frequency, or too short a record); the bounds would have no correct digit"
+        )
+    return (vec / lam) @ vec.T / np.outer(scale, scale)
 
 
 @dataclass(frozen=True, repr=False, eq=False)

@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from ..._validate import validated
+from ..._validate import check_int, check_memory, check_positive, validated
 from ...errors import ParameterError
 from .._util import as_real_array
 
@@ -19,6 +19,13 @@ _BOUNDARIES = ("fixed-fixed", "fixed-free")
 def _check_boundary(boundary: str) -> None:
     if boundary not in _BOUNDARIES:
         raise ParameterError(f"boundary must be one of {_BOUNDARIES}, got {boundary!r}")
+
+
+def _check_count(n: Any, fname: str, columns: int) -> int:
+    """``n`` (the number of masses) as an int >= 1 whose result of ``n`` by ``columns`` floats fits in memory."""
+    n = check_int("n (number of point masses)", n, minimum=1)
+    check_memory(f"{fname}(): n = {n} masses ({n} x {columns} values)", 8.0 * 4 * n * columns)
+    return n
 
 
 @validated
@@ -107,8 +114,9 @@ def string_frequencies(
     chain_matrices, string_modes
     """
     _check_boundary(boundary)
-    if int(n) != n or n < 1:
-        raise ParameterError(f"n must be a positive integer, got {n!r}")
+    n = _check_count(n, "string_frequencies", 1)
+    tension, mass, spacing = (check_positive(name, value) for name, value in
+                              (("tension", tension), ("mass", mass), ("spacing", spacing)))  # fmt: skip
     k = np.arange(1, n + 1)
     scale = 2.0 * np.sqrt(tension / (mass * spacing))
     if boundary == "fixed-fixed":
@@ -143,6 +151,7 @@ def string_modes(n: int, *, boundary: str = "fixed-fixed") -> np.ndarray:
     string_frequencies
     """
     _check_boundary(boundary)
+    n = _check_count(n, "string_modes", n)
     j = np.arange(1, n + 1)[:, None]
     k = np.arange(1, n + 1)[None, :]
     if boundary == "fixed-fixed":

@@ -14,7 +14,7 @@ from typing import Any
 import sympy as sp
 
 from ..._printing import SymPyPrintable
-from ..._validate import validated
+from ..._validate import check_int, validated
 from ...errors import ParameterError
 from .._util import as_coefficients, is_numeric, to_fraction
 from .routh import _array
@@ -166,8 +166,8 @@ def _verdict(criterion, coeffs, numeric, minors, conds, tol, k=None) -> Stabilit
         vals = tuple(sp.Rational(v.numerator, v.denominator) for v in conds)
         stable = all(v > 0 for v in conds)
         margin = _margin(k)
-        if not stable:
-            margin = min(margin, 0.0) if margin > 0 and any(v == 0 for v in conds) else margin
+        if not stable and all(v >= 0 for v in conds):  # a zero condition, none negative: exactly on the boundary
+            margin = 0.0  # (the float Routh pivots of such a polynomial are rounding errors of either sign)
         mins = tuple(sp.Rational(v.numerator, v.denominator) for v in minors)
         return StabilityVerdict(criterion, coeffs, mins, vals, stable, margin, tol, bool(abs(margin) < tol))
     exprs = tuple(c for c in conds if sp.StrictGreaterThan(c, 0) is not sp.true)
@@ -266,8 +266,7 @@ def lienard_chipart(coefficients: Any, *, form: int = 1, tol: float = 1e-9) -> S
     hurwitz, routh_array
     """
     tol = _check_tol(tol)
-    if form not in (1, 2, 3, 4):
-        raise ParameterError(f"form must be 1, 2, 3 or 4, got {form!r}")
+    form = check_int("form (which of the four Liénard–Chipart forms)", form, minimum=1, maximum=4)
     coeffs, numeric = _prepare(coefficients)
     s = len(coeffs) - 1
     kidx = list(range(s, -1, -2)) if form in (1, 2) else [s, *list(range(s - 1, -1, -2))]

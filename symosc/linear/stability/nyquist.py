@@ -17,7 +17,7 @@ import numpy as np
 import sympy as sp
 
 from ..._printing import SymPyPrintable
-from ..._validate import check_positive, validated
+from ..._validate import check_finite, check_int, check_memory, check_positive, validated
 from ...errors import ConvergenceError, ModelError, ParameterError
 
 __all__ = ["NyquistResult", "StabilityMargins", "nyquist", "stability_margins"]
@@ -37,6 +37,23 @@ def _poly(p: Any, what: str) -> np.ndarray:
         raise ParameterError(f"{what} is identically zero")
     a = a[nz[0] :]
     return a.real if not np.any(a.imag) else a
+
+
+#: fewest initial samples per contour piece (the adaptive refinement starts from them)
+_MIN_POINTS = 16
+
+
+def _proper_loop(numerator: Any, denominator: Any) -> tuple[np.ndarray, np.ndarray]:
+    """``M`` and ``Δ0`` of a proper loop ``K = M/Δ0``; ModelError for an improper one."""
+    M = _poly(numerator, "numerator")
+    D0 = _poly(denominator, "denominator")
+    if M.size > D0.size:
+        raise ModelError(
+            f"K = M/Δ0 must be proper: the numerator has degree {M.size - 1} > {D0.size - 1}, the degree of the "
+            "denominator (deg M ≤ deg Δ0, Bulgakov (1954), §10.7); the frequency response of an improper loop grows "
+            "without bound"
+        )
+    return M, D0
 
 
 @dataclass(frozen=True)
@@ -153,7 +170,7 @@ def nyquist(
         Radius (relative to the pole modulus + 1) of the semicircles around open-loop poles on the contour;
         ``None`` or ``0`` forbids indentation and raises if a pole lies on the contour.
     n_points : int
-        Initial samples per contour piece (refined adaptively until each step turns by < 0.2 rad).
+        Initial samples per contour piece (an integer >= 16; refined adaptively until each step turns by < 0.2 rad).
     max_refinements : int
         Largest number of adaptive refinement rounds (an integer >= 1); ConvergenceError when the plot is still
         unresolved.
@@ -185,10 +202,10 @@ def nyquist(
     if indentation is not None:
         check_positive("indentation (radius of the detour around poles on the contour; None or 0 forbids it)",
                        indentation, allow_zero=True)  # fmt: skip
-    M = _poly(numerator, "numerator")
-    D0 = _poly(denominator, "denominator")
-    if M.size > D0.size:
-        raise ModelError("K = M/Δ0 must be proper (deg M ≤ deg Δ0, Bulgakov §10.7)")
+    n_points = check_int("n_points (initial samples per contour piece)", n_points, minimum=_MIN_POINTS)
+    alpha = check_finite("alpha (degree of stability)", alpha)
+    check_memory(f"nyquist(): n_points = {n_points} samples per contour piece", 16.0 * 16 * n_points)
+    M, D0 = _proper_loop(numerator, denominator)
     kind = "half-plane" if sector_angle is None else "sector"
     theta = 0.0 if sector_angle is None else float(sector_angle)
     if kind == "sector" and not (0 < theta < np.pi / 2):
@@ -319,8 +336,8 @@ def stability_margins(numerator: Any, denominator: Any) -> StabilityMargins:
     --------
     nyquist
     """
-    M = _poly(numerator, "numerator").astype(complex)
-    D0 = _poly(denominator, "denominator").astype(complex)
+    M, D0 = _proper_loop(numerator, denominator)
+    M, D0 = M.astype(complex), D0.astype(complex)
 
     def at_iw(p):
         # p(iω) as a polynomial in ω with complex coefficients

@@ -18,7 +18,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import validated
-from ...errors import ConvergenceError, ModelError
+from ...errors import ConvergenceError, ModelError, ParameterError
 from ...numeric import bind
 
 __all__ = [
@@ -87,6 +87,20 @@ class ActionVariable(SymPyPrintable):
         return f"$$J = {sp.latex(self.action)},\\quad \\nu = {sp.latex(self.frequency)}$$"
 
 
+def _require_libration(phi: sp.Expr, conditions: list) -> None:
+    """ModelError when a condition for a bounded (librating) orbit of ``p^2 = phi(q)`` is known to fail; conditions
+    whose sign SymPy cannot decide (symbols without assumptions) are taken to hold."""
+    for expr, what, *nonstrict in conditions:
+        e = sp.simplify(expr)
+        fails = e.is_nonnegative is False if nonstrict else e.is_positive is False
+        if fails:
+            raise ModelError(
+                f"the orbit p^2 = {phi} is not a libration ({what}): it is unbound or there is no motion, and has no "
+                "action variable; give the energy of a bounded orbit (declare the energy symbol's sign, e.g. "
+                "negative=True for a Kepler orbit)"
+            )
+
+
 @validated
 def action_variable(
     H: Any, coordinate: sp.Symbol, momentum: sp.Symbol, energy: sp.Symbol | None = None
@@ -125,6 +139,9 @@ def action_variable(
     --------
     action_variable_numeric, separate_hamilton_jacobi, canonical_transformation
     """
+    for name, value in (("coordinate", coordinate), ("momentum", momentum), ("energy", energy)):
+        if value is not None and not isinstance(value, sp.Symbol):
+            raise ParameterError(f"{name} must be a SymPy Symbol, got {value!r}")
     h = energy if energy is not None else sp.Symbol("h", real=True)
     Jsym = sp.Symbol("J", positive=True)
     q = coordinate
@@ -133,11 +150,31 @@ def action_variable(
     poly = sp.Poly(sp.expand(phi), q) if sp.expand(phi).is_polynomial(q) else None
     if poly is not None and poly.degree() == 2:
         gamma, beta, alpha = poly.all_coeffs()
+        _require_libration(
+            phi,
+            [
+                (-gamma, "the coefficient of q^2 must be negative"),
+                (beta**2 - 4 * alpha * gamma, "p^2 must be positive between two turning points"),
+            ],
+        )
         J = (beta**2 - 4 * alpha * gamma) / (8 * (-gamma) ** sp.Rational(3, 2))
     else:
         num = sp.expand(sp.cancel(phi * q**2))
         if num.is_polynomial(q) and sp.degree(num, q) == 2:
             A, B2, mC = sp.Poly(num, q).all_coeffs()
+            _require_libration(
+                phi,
+                [
+                    (
+                        -A,
+                        "the constant A in p^2 = A + 2B/q - C/q^2 must be negative (energy below "
+                        "the level at infinity)",
+                    ),
+                    (B2, "B must be positive (an attracting 1/q term)"),
+                    (-mC, "C must be >= 0 (no attracting 1/q^2 term: the motion would fall into q = 0)", True),
+                    (B2**2 - 4 * A * mC, "p^2 must be positive between two turning points"),
+                ],
+            )
             J = B2 / 2 / sp.sqrt(-A) - sp.sqrt(-mC)
     if J is None:
         raise ModelError(

@@ -12,7 +12,7 @@ import sympy as sp
 from ..._equality import ModelEquality
 from ..._printing import SymPyPrintable
 from ..._validate import validated
-from ...errors import ModelError
+from ...errors import ModelError, ParameterError
 from ...numeric import compile, resolve
 from ...symbols import dot, sort_symbols, t
 
@@ -97,9 +97,13 @@ class HamiltonianSystem(ModelEquality, SymPyPrintable):
         *,
         forces: Sequence[Any] | None = None,
     ) -> None:
+        if H is None or isinstance(H, str | bytes):
+            raise ParameterError(f"H must be a SymPy expression (build it from symbols, not text), got {H!r}")
         self._H = sp.sympify(H)
-        self._q = tuple(coordinates)
-        self._p = tuple(momenta) if momenta is not None else tuple(momentum_symbol(q) for q in self._q)
+        self._q = _symbols("coordinates", coordinates)
+        self._p = _symbols("momenta", momenta) if momenta is not None else tuple(momentum_symbol(q) for q in self._q)
+        if forces is not None and (isinstance(forces, str | bytes) or not hasattr(forces, "__iter__")):
+            raise ParameterError(f"forces must be a sequence of expressions (one per coordinate), got {forces!r}")
         if len(self._q) != len(self._p):
             raise ModelError(f"{len(self._q)} coordinates but {len(self._p)} momenta")
         if len(set(self._q) | set(self._p)) != 2 * len(self._q):
@@ -220,3 +224,14 @@ class HamiltonianSystem(ModelEquality, SymPyPrintable):
         params = [float(v) for v in params]
         raw = fn.raw
         return lambda time, x: np.asarray(raw(time, *x, *params), dtype=float).ravel()
+
+
+def _symbols(what: str, given: Any) -> tuple[sp.Symbol, ...]:
+    """``given`` (a Symbol or a sequence of them) as a tuple of Symbols."""
+    items = (given,) if isinstance(given, sp.Symbol) else given
+    if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
+        raise ParameterError(f"{what} must be a sequence of SymPy Symbols, got {given!r}")
+    items = tuple(items)
+    if not items or not all(isinstance(x, sp.Symbol) for x in items):
+        raise ParameterError(f"{what} must be a non-empty sequence of SymPy Symbols, got {given!r}")
+    return items

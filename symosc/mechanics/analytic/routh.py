@@ -24,7 +24,7 @@ import sympy as sp
 from ..._equality import ModelEquality
 from ..._printing import SymPyPrintable
 from ..._validate import validated
-from ...errors import ModelError
+from ...errors import ModelError, ParameterError
 from .hamiltonian import momentum_symbol
 
 if TYPE_CHECKING:
@@ -83,8 +83,21 @@ class RouthReduction(ModelEquality, SymPyPrintable):
     """
 
     def __init__(self, system: LagrangianSystem, cyclic: Sequence[sp.Symbol]):
+        from ..lagrange import LagrangianSystem
+
+        if not isinstance(system, LagrangianSystem):
+            raise ParameterError(f"system must be a LagrangianSystem, got {type(system).__name__}")
+        if isinstance(cyclic, sp.Symbol):
+            cyclic = (cyclic,)
+        if isinstance(cyclic, str | bytes) or not hasattr(cyclic, "__iter__"):
+            raise ParameterError(f"cyclic must be a sequence of coordinates of the system, got {cyclic!r}")
         self.system = system
         self.cyclic = tuple(cyclic)
+        if not self.cyclic or not set(self.cyclic) <= set(system.coordinates):
+            raise ParameterError(
+                f"cyclic must name coordinates of the system ({', '.join(map(str, system.coordinates))}), got "
+                f"{cyclic!r}; routh_reduction checks that they are cyclic"
+            )
         q = system.coordinates
         self.noncyclic = tuple(x for x in q if x not in self.cyclic)
         self.momenta = tuple(momentum_symbol(x) for x in self.cyclic)
@@ -152,6 +165,12 @@ class RouthReduction(ModelEquality, SymPyPrintable):
         return LagrangianSystem(kin, self.reduced_potential, list(self.noncyclic), forces=forces)
 
     def _point(self, point: Mapping[Any, Any], momenta: Mapping[Any, Any] | None) -> tuple[dict, dict]:
+        for what, given in (("point", point), ("momenta", momenta or {})):
+            if not isinstance(given, Mapping):
+                raise ParameterError(f"{what} must be a mapping (coordinate or name -> value), got {given!r}")
+            for key, val in given.items():
+                if val is None or isinstance(val, str | bytes):
+                    raise ParameterError(f"{what}[{key!r}] must be a number or SymPy expression, got {val!r}")
         names = {x.name: x for x in self.noncyclic}
         pt = {}
         for k, val in point.items():
@@ -181,7 +200,9 @@ class RouthReduction(ModelEquality, SymPyPrintable):
             val = sp.simplify(val)
         return val
 
-    def steady_motion(self, point: Mapping[Any, Any], momenta: Mapping[Any, Any] | None = None) -> SteadyMotion:
+    def steady_motion(
+        self, point: Mapping[Any, Any], momenta: Mapping[Any, Any] | None = None, *, rtol: float = 1e-10
+    ) -> SteadyMotion:
         """Check that ``point`` (non-cyclic coordinates at rest) with the cyclic ``momenta`` is a steady motion,
         and judge its stability from the Hessian of the reduced potential.
 
@@ -195,15 +216,24 @@ class RouthReduction(ModelEquality, SymPyPrintable):
         momenta : mapping of Symbol or str to number or expression, optional
             Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names);
             momenta left out stay symbolic.
+        rtol : float, optional
+            Relative tolerance (> 0) on the balance ``dV_R/dq = 0`` when the data hold floats: the residual is
+            compared with the size of the terms that cancel in it (each evaluated in absolute value), so that a
+            steady motion computed in floating point is accepted; exact data must balance exactly.
         """
+        if not (isinstance(rtol, int | float) and 0 < rtol < 1):
+            raise ParameterError(f"rtol must be a number in (0, 1), got {rtol!r}")
         pt, mom = self._point(point, momenta)
         VR = self.reduced_potential.xreplace(mom)
+        inexact = VR.has(sp.Float) or any(sp.sympify(v).has(sp.Float) for v in pt.values())
         for x in self.noncyclic:
-            resid = self._at(VR.diff(x), pt)
-            if resid != 0:
+            dV = VR.diff(x)
+            resid = self._at(dV, pt)
+            if resid != 0 and not (inexact and _balanced(dV, pt, resid, rtol)):
                 raise ModelError(
-                    f"not a steady motion: dV_R/d{x.name} = {resid} at {pt} (it must vanish); adjust the point or "
-                    "the cyclic momenta"
+                    f"not a steady motion: dV_R/d{x.name} = {resid} at {pt} (it must vanish"
+                    + (f" to rtol = {rtol:g} of its terms" if inexact else "")
+                    + "); adjust the point or the cyclic momenta"
                 )
         hess = sp.Matrix(
             len(self.noncyclic),
@@ -225,7 +255,9 @@ class RouthReduction(ModelEquality, SymPyPrintable):
                 stable = False
         return SteadyMotion(point=pt, momenta=mom, hessian=hess, stable=stable)
 
-    def small_oscillations(self, point: Mapping[Any, Any], momenta: Mapping[Any, Any]) -> LinearModel:
+    def small_oscillations(
+        self, point: Mapping[Any, Any], momenta: Mapping[Any, Any], *, rtol: float = 1e-10
+    ) -> LinearModel:
         """Linearized motion about a steady motion, with the gyroscopic terms of the Routh function
         (Bulgakov (1954), §7.9): a :class:`LinearModel` ``M y'' + G y' + K y = 0``.
 
@@ -237,16 +269,43 @@ class RouthReduction(ModelEquality, SymPyPrintable):
         momenta : mapping of Symbol or str to number or expression
             Values of the cyclic momenta (keys are the symbols ``p_<q>`` of :attr:`momenta` or their names); momenta
             left out stay symbolic.
+        rtol : float, optional
+            Relative tolerance of the steady-motion check for floating-point data (see :meth:`steady_motion`).
         """
         from ..lagrange import LagrangianSystem
 
-        self.steady_motion(point, momenta)
+        self.steady_motion(point, momenta, rtol=rtol)
         pt, mom = self._point(point, momenta)
         r = self.reduced_system
         fixed = LagrangianSystem(
             r.kinetic_energy.xreplace(mom), r.potential_energy.xreplace(mom), list(self.noncyclic), forces=r.forces
         )
         return fixed.linearize(pt, check_equilibrium=False)
+
+
+def _balanced(expr: sp.Expr, point: dict, residual: sp.Expr, rtol: float) -> bool:
+    """Whether the numeric ``residual`` of ``expr`` at ``point`` is within ``rtol`` of the size of the terms that
+    cancel in it: ``expr`` evaluated with every sum and product taken in absolute value (the scale of its rounding
+    and of the rounding of floating-point data)."""
+    try:
+        value = complex(residual)
+        scale = _magnitude(expr, point)
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+        return False
+    return bool(abs(value) <= rtol * scale) and scale < float("inf")
+
+
+def _magnitude(expr: sp.Expr, point: dict) -> float:
+    if expr.is_Add:
+        return sum(_magnitude(a, point) for a in expr.args)
+    if expr.is_Mul:
+        out = 1.0
+        for a in expr.args:
+            out *= _magnitude(a, point)
+        return out
+    if expr.is_Pow and expr.exp.is_number and expr.exp.is_positive:
+        return _magnitude(expr.base, point) ** float(expr.exp)
+    return abs(complex(sp.N(expr.xreplace(point))))
 
 
 @validated

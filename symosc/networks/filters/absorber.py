@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 from ..._printing import SymPyPrintable
-from ..._validate import validated
+from ..._validate import check_positive, validated
 from ...errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -210,10 +210,8 @@ class Absorber(SymPyPrintable):
 
     def __post_init__(self) -> None:
         for name in ("mu", "frequency_ratio"):
-            if not float(getattr(self, name)) > 0:
-                raise ParameterError(f"{name} must be positive, got {getattr(self, name)}")
-        if not float(self.damping_ratio) >= 0:
-            raise ParameterError(f"damping_ratio must be non-negative, got {self.damping_ratio}")
+            check_positive(name, getattr(self, name))
+        check_positive("damping_ratio", self.damping_ratio, allow_zero=True)
 
     def amplification(self, g: Any) -> Any:
         """``R1(g)``, main-mass amplification at forcing ratio ``g = ν/ω_M`` (eq. (9.596)); vectorised.

@@ -21,7 +21,7 @@ import mpmath
 import sympy as sp
 
 from ..._printing import SymPyPrintable
-from ..._validate import validated
+from ..._validate import check_int, check_positive, validated
 from ...errors import ParameterError
 from .._util import P, as_expr, element_value
 from ..ports.fourpoles import FourPole
@@ -369,6 +369,17 @@ def bandpass_attenuation_poles(m: Any, band: tuple) -> tuple[sp.Expr, sp.Expr]:
     return sp.simplify(root - half), sp.simplify(root + half)
 
 
+def _finite_complex(name: str, value: Any) -> mpmath.mpc:
+    """``value`` (a number, an mpmath or a numeric SymPy number) as a finite mpmath number."""
+    try:
+        out = mpmath.mpmathify(complex(value) if isinstance(value, sp.Basic) else value)
+    except (TypeError, ValueError) as exc:
+        raise ParameterError(f"{name} must be a finite number, got {value!r}") from exc
+    if not mpmath.isfinite(out):
+        raise ParameterError(f"{name} must be a finite number, got {value!r}")
+    return out
+
+
 @validated
 def image_operating_loss(W: Any, g: Any, n: int, Rg: Any, Rl: Any) -> Any:
     """``e^{2 a_op}`` of ``n`` identical symmetric sections (image ``W``, ``g``) between resistances (§9.28).
@@ -402,6 +413,10 @@ def image_operating_loss(W: Any, g: Any, n: int, Rg: Any, Rl: Any) -> Any:
     --------
     working_loss
     """
-    W, g, Rg, Rl = (mpmath.mpmathify(v) for v in (W, g, Rg, Rl))
+    W, g = (_finite_complex(name, v) for name, v in (("W", W), ("g", g)))
+    Rg, Rl = (check_positive(name, v) for name, v in (("Rg", Rg), ("Rl", Rl)))
+    n = check_int("n (number of sections)", n, minimum=1)
+    if W == 0:
+        raise ParameterError("W (the image impedance) must be nonzero")
     term = mpmath.cosh(n * g) + (W**2 + Rg * Rl) / (W * (Rg + Rl)) * mpmath.sinh(n * g)
     return (Rg + Rl) ** 2 / (4 * Rg * Rl) * abs(term) ** 2

@@ -27,7 +27,7 @@ import sympy as sp
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ParameterError
-from .._util import P, as_symbol, element_value
+from .._util import P, as_symbol, connection_parts, element_value
 from .oneports import Capacitor, Inductor, OnePort, Parallel, Resistor, Series
 
 __all__ = [
@@ -182,11 +182,11 @@ class MechanicalParallel(MechanicalElement):
         The elements sharing one velocity difference (nested parallel connections are flattened).
     """
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
         flat: list = []
-        for part in self.parts:
+        for part in connection_parts(self.parts, "MechanicalParallel", MechanicalElement, "a | b"):
             flat.extend(part.parts if isinstance(part, MechanicalParallel) else (_check(part),))
         object.__setattr__(self, "parts", tuple(flat))
 
@@ -207,11 +207,11 @@ class MechanicalSeries(MechanicalElement):
         The elements carrying one force (nested series connections are flattened).
     """
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
         flat: list = []
-        for part in self.parts:
+        for part in connection_parts(self.parts, "MechanicalSeries", MechanicalElement, "a + b"):
             flat.extend(part.parts if isinstance(part, MechanicalSeries) else (_check(part),))
         object.__setattr__(self, "parts", tuple(flat))
 

@@ -27,7 +27,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ParameterError
 from .._exact.fields import normalize
-from .._util import P, as_expr, as_symbol, element_value
+from .._util import P, as_expr, as_symbol, connection_parts, element_value
 
 __all__ = [
     "BruneSection",
@@ -257,12 +257,11 @@ class Series(OnePort):
         The connected one-ports, at least one (nested series connections are flattened).
     """
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Series))
-        if len(self.parts) < 1:
-            raise ParameterError("Series needs at least one part")
+        parts = connection_parts(self.parts, "Series", OnePort, "a + b")
+        object.__setattr__(self, "parts", _flatten(parts, Series))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)
@@ -285,12 +284,11 @@ class Parallel(OnePort):
         The connected one-ports, at least one (nested parallel connections are flattened).
     """
 
-    parts: tuple
+    parts: tuple = ()
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "parts", _flatten(tuple(self.parts), Parallel))
-        if len(self.parts) < 1:
-            raise ParameterError("Parallel needs at least one part")
+        parts = connection_parts(self.parts, "Parallel", OnePort, "a | b")
+        object.__setattr__(self, "parts", _flatten(parts, Parallel))
 
     def impedance(self, p: sp.Symbol = P) -> sp.Expr:
         fast = _rational_impedance(self, p)

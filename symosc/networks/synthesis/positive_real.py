@@ -314,11 +314,25 @@ def biquadratic_is_positive_real(a0: Any, a1: Any, a2: Any, b0: Any, b1: Any, b2
     --------
     is_positive_real
     """
-    a = [as_expr(v, n) for v, n in ((a0, "a0"), (a1, "a1"), (a2, "a2"), (b0, "b0"), (b1, "b1"), (b2, "b2"))]
+    names = ("a0", "a1", "a2", "b0", "b1", "b2")
+    a = [as_expr(v, n) for v, n in zip((a0, a1, a2, b0, b1, b2), names, strict=True)]
+    for v, n in zip(a, names, strict=True):
+        if v.is_extended_real is False:
+            raise ParameterError(f"{n} must be a real coefficient, got {v}")
+    if all(v.is_zero for v in a[3:]):
+        raise ParameterError("b0, b1 and b2 are all zero: the denominator must not vanish identically")
     if any(v.is_negative for v in a):
         return False
     a0, a1, a2, b0, b1, b2 = a
-    return bool(sp.simplify(a1 * b1 - (sp.sqrt(a0 * b2) - sp.sqrt(a2 * b0)) ** 2) >= 0)
+    verdict = sp.simplify(a1 * b1 - (sp.sqrt(a0 * b2) - sp.sqrt(a2 * b0)) ** 2) >= 0
+    undecided = [n for v, n in zip(a, names, strict=True) if v.is_nonnegative is None]
+    if undecided or verdict not in (sp.true, sp.false):
+        raise ParameterError(
+            f"{', '.join(names)} must be numbers, or symbols declared nonnegative for which the condition "
+            f"simplifies: {verdict} is undecided"
+            + (f" and the signs of {', '.join(undecided)} are unknown" if undecided else "")
+        )
+    return bool(verdict)
 
 
 @validated

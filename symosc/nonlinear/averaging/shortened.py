@@ -30,6 +30,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
 from ...symbols import sort_symbols, t
+from .. import _checks
 from . import _trig
 from ._numeric import StationaryRegime, a, theta
 
@@ -136,7 +137,7 @@ def describing_function(g: Any, x: sp.Symbol | None = None, amplitude: sp.Symbol
     >>> describing_function(b * sp.sign(x) + c * x)
     a*c + 4*b/pi
     """
-    g = sp.sympify(g)
+    g, amplitude = _checks.expression("g", g), _checks.symbol("amplitude", amplitude)
     x = _lookup(g, "x", x)
     return sp.expand(2 * _cycle_average(g.xreplace({x: amplitude * sp.cos(_psi)}) * sp.cos(_psi), _psi))
 

@@ -41,9 +41,10 @@ import sympy as sp
 from ..._deprecation import module_getattr as _module_getattr
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
-from ..._validate import validated
+from ..._validate import check_finite, check_positive, validated
 from ...errors import ModelError, ParameterError
 from ...numeric import compile as _compile
+from .. import _checks
 from ..averaging.shortened import describing_function
 
 __all__ = [
@@ -411,6 +412,8 @@ def servo_characteristic(T: Any, U: Any, V: Any, x: Any, y: Any, z: Any, D: sp.S
     >>> sp.Poly(servo_characteristic(T, U, V, x, y, z), sp.Symbol("D")).all_coeffs()
     [T*U*V, T*U + T*V, T + x*z, y*z, z]
     """
+    T, U, V, x, y, z = (_checks.expression(n, v, real=True) for n, v in zip("TUVxyz", (T, U, V, x, y, z), strict=True))
+    D = _checks.symbol("D", D)
     return sp.expand(T * D**2 * (U * D + 1) * (V * D + 1) + z * (x * D**2 + y * D + 1))
 
 
@@ -434,6 +437,8 @@ def servo_equations(
     sigma : Symbol
         The characteristic's argument.
     """
+    T, U, V, L, M, n = (check_finite(k, v) for k, v in zip("TUVLMn", (T, U, V, L, M, n), strict=True))
+    g, sigma = _checks.expression("g", g), _checks.symbol("sigma", sigma)
     if T <= 0 or U <= 0 or V < 0:
         raise ParameterError("the servo needs T > 0, U > 0 and V >= 0 (time constants)")
     x = L**2 + T * U * n
@@ -478,6 +483,8 @@ def servo_region(x: float, y: float, T: float, U: float, z0: float) -> int:
     >>> servo_region(1.0, 0.5, 1.0, 1.0, 3.6), servo_region(1.0, 2.0, 1.0, 1.0, 3.6)
     (2, 1)
     """
+    x, y = check_finite("x", x), check_finite("y", y)
+    T, U, z0 = check_positive("T", T), check_positive("U", U), check_positive("z0", z0)
     if (x < 0 and (x * z0 + T) * y > T * U) or (x > 0 and y > U):
         return 1
     if (x * z0 + T) * y > T * U and y < U:

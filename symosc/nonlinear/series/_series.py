@@ -18,6 +18,7 @@ import sympy as sp
 from ..._printing import SymPyPrintable
 from ...errors import SeriesWarning
 from . import _series_algebra
+from . import _series_checks as checks
 from ._series_algebra import SeriesResult
 
 __all__ = ["EpsSeries", "RadiusEstimate", "SeriesResult"]
@@ -462,8 +463,7 @@ class EpsSeries(SymPyPrintable):
             Power of ``eps`` whose coefficient is wanted; an integer from 0 to ``order`` (a larger one raises
             IndexError).
         """
-        if k > self.order:
-            raise IndexError(f"{self.name} is known to order {self.order} only; recompute with order >= {k}")
+        k = checks.power_index(k, self.order, self.name)
         return self.factor * self.coefficients[k]
 
     def evaluate(self, value: Any, order: int | None = None, *, dps: int | None = None) -> Any:
@@ -485,8 +485,9 @@ class EpsSeries(SymPyPrintable):
             Decimal digits of the mpmath working precision, an integer >= 1; when given the sum is formed in mpmath
             and an ``mpf`` is returned, otherwise in float64.
         """
+        value, order, dps = checks.point(value), checks.optional_count("order", order, 0), checks.dps(dps)
         n = self.order if order is None else min(int(order), self.order)
-        _warn_beyond_radius(self, value)
+        _warn_beyond_radius(self, value, n)
         if dps is not None:
             with mpmath.workdps(dps):
                 x = mpmath.mpf(value) if not isinstance(value, mpmath.mpf) else value
@@ -525,22 +526,17 @@ class EpsSeries(SymPyPrintable):
             Decimal digits of the mpmath working precision, an integer >= 1; when given an ``mpf`` is returned,
             otherwise a float computed at 30 digits.
         """
+        value, dps = checks.point(value), checks.dps(dps)
         work = dps or 30
         with mpmath.workdps(work + 10):
             cs = [mpmath.mpf(sp.N(c, work + 10)) for c in self.coefficients]
             even = len(cs) > 4 and all(c == 0 for c in cs[1::2])
             seq = cs[::2] if even else cs
-            N = len(seq) - 1
-            if m is None and n is None:
-                m = N // 2
-                n = N - m
-            elif m is None:
-                m = N - n
-            elif n is None:
-                n = N - m
-            if m < 0 or n < 0 or m + n > N:
-                raise ValueError(f"[{m}/{n}] Padé needs m + n <= {N} coefficients")
-            p, q = mpmath.pade(seq[: m + n + 1], m, n)
+            m, n = checks.pade_degrees(m, n, len(seq) - 1)
+            try:
+                p, q = mpmath.pade(seq[: m + n + 1], m, n)
+            except ZeroDivisionError:
+                raise checks.no_pade(self.name, m, n) from None
             x = mpmath.mpf(value)
             u = x * x if even else x
             val = mpmath.polyval(p[::-1], u) / mpmath.polyval(q[::-1], u) * mpmath.mpf(sp.N(self.factor, work + 10))
@@ -560,13 +556,14 @@ class EpsSeries(SymPyPrintable):
             the ratio fits, a positive integer (fewer than 3 usable ratios leave only the root test); half of them,
             and at least 6, when omitted.
         """
+        terms = checks.optional_count("terms", terms, 1)
         cs = [mpmath.mpf(sp.N(c, 30)) for c in self.coefficients]
         even = all(c == 0 for c in cs[1::2]) and len(cs) > 4
         seq = cs[::2] if even else cs
         # drop leading zeros; need enough terms
         idx = [k for k, c in enumerate(seq) if c != 0]
         if len(idx) < 6:
-            raise ValueError("too few nonzero coefficients to estimate the radius of convergence (need >= 6)")
+            raise checks.too_short(len(idx))
         kmax = len(seq) - 1
         m = terms or max(6, (kmax + 1) // 2)
         ks = [k for k in range(max(2, kmax - m + 1), kmax + 1) if seq[k] != 0 and seq[k - 1] != 0]
@@ -629,12 +626,13 @@ def _radius(coefficients: tuple) -> float | None:
     series = EpsSeries(coefficients, sp.Symbol("eps"), len(coefficients) - 1)
     try:
         return float(series.radius_of_convergence().radius)
-    except (ValueError, ZeroDivisionError, OverflowError):
+    except (ValueError, ArithmeticError):
         return None
 
 
-def _warn_beyond_radius(series: EpsSeries, value: Any) -> None:
-    """SeriesWarning when ``|value|`` exceeds the estimated radius of convergence of ``series``."""
+def _warn_beyond_radius(series: EpsSeries, value: Any, n: int) -> None:
+    """SeriesWarning when ``|value|`` exceeds the estimated radius of convergence of ``series``, or when the sum to
+    order ``n`` has not converged there (judged by its tail)."""
     try:
         size = float(np.max(np.abs(np.asarray(value, dtype=complex))))
     except (TypeError, ValueError):
@@ -649,3 +647,5 @@ def _warn_beyond_radius(series: EpsSeries, value: Any) -> None:
             SeriesWarning,
             stacklevel=3,
         )
+    else:
+        checks.warn_slow_tail(series, value, n)

@@ -25,6 +25,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import check_finite, check_positive, validated
 from ...errors import ConvergenceError, ParameterError, SeriesWarning
 from ...numeric import compile as _compile
+from .. import _checks
 
 __all__ = [
     "NumericCycle",
@@ -73,7 +74,8 @@ class NumericCycle(SymPyPrintable):
 
 
 def _rhs_functions(f: Any, x: sp.Symbol, v: sp.Symbol, eps: sp.Symbol, backend: str, dps: int | None = None) -> Any:
-    f = sp.sympify(f)
+    f = _checks.expression("f", f)
+    x, v, eps = _checks.symbol("x", x), _checks.symbol("v", v), _checks.symbol("eps_symbol", eps)
     extra = f.free_symbols - {x, v, eps}
     if extra:
         raise ParameterError(f"f depends on {', '.join(sorted(s.name for s in extra))}: substitute numbers first")
@@ -463,7 +465,7 @@ def validate_limit_cycle(
     orders = [lc.order] if orders is None else [int(o) for o in orders]
     try:
         radius = float(lc.frequency.radius_of_convergence().radius)
-    except ValueError:
+    except (ValueError, ConvergenceError):
         radius = None
     f_num = lc.f
     rows = []

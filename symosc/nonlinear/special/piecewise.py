@@ -192,6 +192,15 @@ def coulomb_oscillator(x0: Any, B: Any, k: Any = 1, eps: Any = 0, max_half_swing
         raise ParameterError(f"k must be positive, got {k}")
     if not 0 <= eps < k:
         raise ParameterError(f"need 0 <= eps < k (oscillatory half-swings), got eps = {eps}, k = {k}")
+    if B == 0 and x0 != 0:
+        raise ParameterError(
+            "B must be > 0 for the motion to stop: without dry friction (B = 0) the half-swings never end"
+        )
+    if eps == 0 and B > 0 and (abs(x0) - B) / (2 * B) > max_half_swings:  # each half-swing loses exactly 2 B
+        raise ConvergenceError(
+            f"the motion needs about {float((abs(x0) - B) / (2 * B)):.3g} half-swings (|x0| = {abs(x0)}, B = {B}): "
+            f"more than max_half_swings = {max_half_swings}; raise max_half_swings"
+        )
     omega = sp.sqrt(k**2 - eps**2)
     delta = sp.exp(-sp.pi * eps / omega) if eps != 0 else sp.S.One
     exact = all(v.is_Rational for v in (x0, B)) and delta == 1

@@ -216,7 +216,7 @@ def read_record(q: Question) -> tuple[np.ndarray, float]:
         raise q.fail(f"record file {str(path)!r} not found", "give a CSV path relative to the scene file", "record")
     try:
         raw = np.genfromtxt(path, delimiter=",", names=True)
-    except ValueError as exc:
+    except (ValueError, IndexError) as exc:  # IndexError: an empty file
         raise q.fail(
             f"cannot read {path.name} as CSV with a header row: {exc}",
             "write a header line, then one row per sample",
