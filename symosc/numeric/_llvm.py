@@ -37,6 +37,7 @@ def build(fname: str, arg_syms: list[sp.Symbol], items: list[sp.Expr], shape) ->
             raise ParameterError(f"the llvm backend evaluates real-valued expressions only; {e} is complex")
     names = [f"_a{i}" for i in range(len(arg_syms))]
     plain = {s: sp.Symbol(n) for s, n in zip(arg_syms, names, strict=True)}
+    items = [_numbers_as_floats(e) for e in items]
     texts = [sp.srepr(e.xreplace(plain)) for e in items]
     try:
         se_args = [se.Symbol(n) for n in names]
@@ -58,6 +59,26 @@ def build(fname: str, arg_syms: list[sp.Symbol], items: list[sp.Expr], shape) ->
         'backend="llvm", cse=True, real=True)\n'
     )
     return source, _Caller(func, len(items), shape)
+
+
+def _numbers_as_floats(expr: sp.Expr) -> sp.Expr:
+    """Integers and rationals with a part of 2**53 or more, and constant function values (``besselj(0, 2)``), as
+    correctly rounded doubles: symengine's LLVM code would round big rationals twice and cannot call most
+    special functions."""
+    from ._dag import _is_constant
+    from ._emit import number_value
+
+    sub = {}
+    for a in expr.atoms(sp.Rational):
+        if abs(a.p) >= 2**53 or a.q >= 2**53:
+            v = number_value(a)
+            sub[a] = sp.Float(v) if abs(v) != float("inf") else (sp.oo if v > 0 else -sp.oo)
+    for f in expr.atoms(sp.Function):
+        if not f.free_symbols and _is_constant(f):
+            v = number_value(f)
+            if not isinstance(v, complex):
+                sub[f] = sp.Float(v)
+    return expr.xreplace(sub) if sub else expr
 
 
 _REAL_TYPES = frozenset({float, int, np.float64})
