@@ -291,15 +291,12 @@ class LagrangianSystem(SymPyPrintable):
         """T split by velocity monomial (``()``, ``(i,)``, ``(i, j)`` with i <= j), each coefficient
         collected by its factor that depends on the coordinates and time."""
         parts = _terms.velocity_parts(self._T, self._qd, "T")
-        dep = self._dependent
-        return {
-            k: _terms.group_terms([x for term in v for x in _terms.expand_terms(term, dep)], dep)
-            for k, v in parts.items()
-        }
+        dep = _terms._Depends(self._dependent)
+        return {k: _terms.group_terms(_terms.expand_terms(v, dep), dep) for k, v in parts.items()}
 
     @staticmethod
-    def _sum(groups: _terms.Groups) -> sp.Expr:
-        return sp.Add(*(c * d for d, c in groups))
+    def _sum(groups: _terms.Groups, scale: sp.Expr = sp.S.One) -> sp.Expr:
+        return sp.Add(*(scale * g.coeff * g.dep for g in groups))
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:
@@ -310,7 +307,7 @@ class LagrangianSystem(SymPyPrintable):
             if len(key) == 2:
                 i, j = key
                 if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
-                    M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
+                    M[i, i] = self._sum(groups, sp.S(2))
                 else:
                     M[i, j] = M[j, i] = self._sum(groups)
         return M
