@@ -131,19 +131,20 @@ def n_link_pendulum(
     y0 = s["a"] * sp.cos(s["p"] * t) if pivot == "vertical" else sp.S.Zero
     y0_dot = y0.diff(t)
 
-    T = sp.S.Zero
-    V = sp.S.Zero
+    # Sums are built in one sp.Add each (adding term by term re-sorts a growing sum: O(n**2) work per energy).
+    cos, sin = [sp.cos(p) for p in phi], [sp.sin(p) for p in phi]
+    T_terms, V_terms = [], []
     for k in range(n):
         # Position of the body's mass center: hinges 0..k-1 plus the distance along link k.
         arm = [l[i] for i in range(k)] + [l[k] if links == "point" else lc[k]]
-        y = y0 + up * sum(arm[i] * sp.cos(phi[i]) for i in range(k + 1))
-        xd = sum(arm[i] * sp.cos(phi[i]) * dot(phi[i]) for i in range(k + 1))
-        yd = y0_dot - up * sum(arm[i] * sp.sin(phi[i]) * dot(phi[i]) for i in range(k + 1))
-        T += m[k] * (xd**2 + yd**2) / 2
+        y = sp.Add(y0, *(up * arm[i] * cos[i] for i in range(k + 1)))
+        xd = sp.Add(*(arm[i] * cos[i] * dot(phi[i]) for i in range(k + 1)))
+        yd = sp.Add(y0_dot, *(-up * arm[i] * sin[i] * dot(phi[i]) for i in range(k + 1)))
+        T_terms.append(m[k] * (xd**2 + yd**2) / 2)
         if links == "rigid":
-            T += inertia[k] * dot(phi[k]) ** 2 / 2
-        V += m[k] * g * y
-    return LagrangianSystem(T, V, list(phi))
+            T_terms.append(inertia[k] * dot(phi[k]) ** 2 / 2)
+        V_terms.append(m[k] * g * y)
+    return LagrangianSystem(sp.Add(*T_terms), sp.Add(*V_terms), list(phi))
 
 
 @validated
