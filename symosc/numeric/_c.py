@@ -62,7 +62,14 @@ def c_names(python_names: list[str], reserved: frozenset[str] = frozenset()) -> 
 
 class SafeC99Printer(C99CodePrinter):
     """SymPy's C99 printer with integers and rationals of 2**53 or more printed as correctly rounded doubles
-    (a C integer literal of 2**64 or more wraps around or is refused; ``HUGE_VAL`` beyond the double range)."""
+    (a C integer literal of 2**64 or more wraps around or is refused; ``HUGE_VAL`` beyond the double range), and
+    ``loggamma`` and ``Mod`` through :data:`C_HELPERS`."""
+
+    def _print_loggamma(self, expr: sp.Expr) -> str:
+        return f"symosc_loggamma({self._print(expr.args[0])})"
+
+    def _print_Mod(self, expr: sp.Expr) -> str:
+        return f"symosc_mod({self._print(expr.args[0])}, {self._print(expr.args[1])})"
 
     def _print_Integer(self, expr: sp.Integer) -> str:
         return _big_literal(expr) or super()._print_Integer(expr)
@@ -105,8 +112,21 @@ _PRINTABLE = {
 }  # fmt: skip
 
 
+#: Replacements of C library functions whose meaning differs from SymPy's (``lgamma`` is ``log|Gamma|``, ``fmod``
+#: truncates where SymPy's ``Mod`` floors), and ``arg`` of a real number; included in every generated unit.
+C_HELPERS = """\
+static inline double symosc_loggamma(double x) { return x > 0.0 ? lgamma(x) : (x == 0.0 ? HUGE_VAL : NAN); }
+static inline double symosc_arg(double x) { return x > 0.0 ? 0.0 : (x < 0.0 ? 3.141592653589793 : NAN); }
+static inline double symosc_mod(double x, double y)
+{
+    const double r = fmod(x, y);
+    return (r != 0.0 && ((r < 0.0) != (y < 0.0))) ? r + y : r;
+}
+"""
+
+
 def header_lines(used: str) -> list[str]:
-    lines = ["#include <math.h>", ""]
+    lines = ["#include <math.h>", C_HELPERS]
     for name, value in MATH_MACROS.items():
         if name in used:
             lines.append(f"#ifndef {name}\n#define {name} {value}\n#endif")
@@ -199,7 +219,7 @@ def kernel_units(
     main += ["", *groups[0], proto, "{", f"    double _w[{max(len(cross), 1)}];"]
     main += [f"    {name}_part{k}({call_args});" for k in range(len(parts))]
     main += ["}", ""]
-    return ["\n".join(main), *("#include <math.h>\n\n" + "\n".join(g) for g in groups[1:])], proto
+    return ["\n".join(main), *(f"#include <math.h>\n{C_HELPERS}\n" + "\n".join(g) for g in groups[1:])], proto
 
 
 def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str], items: list[sp.Expr], shape) -> str:
@@ -238,7 +258,7 @@ def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str],
         f"   {fname}_batch(count, a, out)  evaluates count points: a is count x {nargs}, out is count x {nout}.",
         f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {fname}.so {fname}.c -lm */",
         "#include <math.h>",
-        "",
+        C_HELPERS,
         units[0],
         f"int {fname}(const double *a, double *out)",
         "{",

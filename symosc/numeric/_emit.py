@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..errors import ParameterError
 from ._dag import ADD, ARG, CONST, FUNC, MUL, OPAQUE, POW, Graph, reachable
+from ._special import REAL_ONLY
 
 ATOM, MULP, ADDP = 3, 2, 1  # precedence of a printed node
 
@@ -155,15 +156,24 @@ class Printer:
             args = [child(c, ADDP) for c in children]
             called = self.call(cls, args)
             if called is None:
-                called = self._placeholder_call(cls, args)
+                constants = [g.data[c] if g.kind[c] == CONST else None for c in children]
+                called = self._placeholder_call(cls, args, constants)
             return called, ATOM, used
         if kind == OPAQUE:
-            return self.fallback(data), ATOM, used
+            deps = g.deps[k]
+            used.extend(name for i, name in enumerate(self.arg_names) if deps >> i & 1)
+            return f"({self.fallback(data)})", ATOM, used
         raise AssertionError(kind)
 
-    def _placeholder_call(self, cls: type, args: list[str]) -> str:
-        holders = [sp.Symbol(f"symoscPLACEHOLDER{i}X", real=True) for i in range(len(args))]
-        code = self.fallback(cls(*holders))
+    def _placeholder_call(self, cls: type, args: list[str], constants: list) -> str:
+        """``cls(args)`` printed by the SymPy printer: constant arguments as themselves (``polygamma(0, x)`` is
+        printed as digamma), the others as placeholders without assumptions (so that ``re(z)`` stays ``re(z)``)."""
+        holders = [c if c is not None else sp.Symbol(f"symoscPLACEHOLDER{i}X") for i, c in enumerate(constants)]
+        try:
+            call = cls(*holders, evaluate=False)
+        except TypeError:  # a function without the evaluate keyword
+            call = cls(*holders)
+        code = self.fallback(call)
         for i in reversed(range(len(args))):
             code = code.replace(f"symoscPLACEHOLDER{i}X", f"({args[i]})")
         return f"({code})"
@@ -235,8 +245,11 @@ _C_FUNCTIONS = {
     "sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos", "atan": "atan", "atan2": "atan2",
     "sinh": "sinh", "cosh": "cosh", "tanh": "tanh", "asinh": "asinh", "acosh": "acosh", "atanh": "atanh",
     "exp": "exp", "Abs": "fabs", "floor": "floor", "ceiling": "ceil", "erf": "erf", "erfc": "erfc",
-    "gamma": "tgamma",
+    "gamma": "tgamma", "Sqrt": "sqrt",
 }  # fmt: skip
+
+
+_C_REAL_PARTS = {"re": "({})", "im": "(0.0*({}))", "conjugate": "({})", "arg": "symosc_arg({})"}
 
 
 class CPrinter(Printer):
@@ -261,6 +274,10 @@ class CPrinter(Printer):
         return lit
 
     def call(self, cls: type, args: list[str]) -> str | None:
+        if cls.__name__ in ("loggamma", "Mod"):  # C's lgamma is log|Gamma|, fmod truncates: see _c.C_HELPERS
+            return f"symosc_{cls.__name__.lower()}({', '.join(args)})"
+        if len(args) == 1 and cls.__name__ in _C_REAL_PARTS:  # the C backend's arguments are real
+            return _C_REAL_PARTS[cls.__name__].format(args[0])
         name = _C_FUNCTIONS.get(cls.__name__)
         if name is None or (cls.__name__ == "atan2") != (len(args) == 2):
             if cls is sp.log and len(args) == 1:
@@ -305,6 +322,7 @@ class PythonPrinter(Printer):
         super().__init__(graph, arg_names)
         self.module = module
         self._fallback = fallback
+        self.helpers: set[str] = set()
 
     def literal(self, value: sp.Expr) -> str:
         v = number_value(value)
@@ -323,6 +341,9 @@ class PythonPrinter(Printer):
         name = table.get(cls.__name__)
         if name is None or (cls.__name__ == "atan2") != (len(args) == 2) or (cls is sp.log and len(args) != 1):
             return None
+        if self.module == "numpy" and cls.__name__ in REAL_ONLY:  # NumPy refuses complex: say which function
+            self.helpers.add("_symosc_real")
+            args = [f'_symosc_real("{cls.__name__}", {a})' for a in args]
         return f"{self.module}.{name}({', '.join(args)})"
 
     def fallback(self, expr: sp.Expr) -> str:

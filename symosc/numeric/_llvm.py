@@ -8,6 +8,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import ParameterError
+from ._special import ORTHOGONAL
 
 
 def available() -> bool:
@@ -35,6 +36,17 @@ def build(fname: str, arg_syms: list[sp.Symbol], items: list[sp.Expr], shape) ->
     for e in items:
         if e.has(sp.I):
             raise ParameterError(f"the llvm backend evaluates real-valued expressions only; {e} is complex")
+        polynomials = sorted({type(f).__name__ for f in e.atoms(sp.Function) if type(f).__name__ in ORTHOGONAL})
+        if polynomials:
+            raise ParameterError(
+                f"the llvm backend cannot evaluate {', '.join(polynomials)}: symengine expands it into monomials, "
+                "which lose all digits for high degrees; use backend='numpy' (three-term recurrence)"
+            )
+        if any(not g.args[0].is_positive for g in e.atoms(sp.loggamma)):
+            raise ParameterError(
+                "the llvm backend cannot evaluate loggamma of an argument not known to be positive: its lgamma is "
+                "log|Gamma(x)|, wrong for x < 0; use backend='c' or 'numpy'"
+            )
     names = [f"_a{i}" for i in range(len(arg_syms))]
     plain = {s: sp.Symbol(n) for s, n in zip(arg_syms, names, strict=True)}
     items = [_numbers_as_floats(e) for e in items]

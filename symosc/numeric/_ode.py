@@ -25,6 +25,7 @@ from . import _build, _c
 from ._core import _argument_names
 from ._dag import CONST, Graph, reachable
 from ._emit import CPrinter, PythonPrinter, comment_text
+from ._special import helper_source
 
 
 class Program:
@@ -119,7 +120,7 @@ class Program:
             "   Each returns 0, or 1 (+ row index for the batch) when the mass matrix is singular.",
             f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {name}.so {name}.c -lm */",
             "#include <math.h>",
-            "",
+            _c.C_HELPERS,
             f"const int {name}_hoisted = {len(self.hoisted)};",
             "",
             _SOLVE,
@@ -237,9 +238,13 @@ class Program:
         preset = dict(zip(self.hoisted, hnames, strict=True))
         nout = len(self.outputs)
 
+        helpers: set[str] = set()
+
         def body(module: str, printer: Any, outputs, targets, preset) -> list[str]:
             fallback = lambda e: _printed(printer, e.xreplace(to_py))  # noqa: E731
-            sts = PythonPrinter(g, names, module, fallback).statements(outputs, targets, preset=preset)
+            emitter = PythonPrinter(g, names, module, fallback)
+            sts = emitter.statements(outputs, targets, preset=preset)
+            helpers.update(emitter.helpers)
             return [f"    {st.target} = {st.text}" for st in sts]
 
         def unpack(values: list[str], array: str) -> str:
@@ -265,7 +270,8 @@ class Program:
             ]
         modules = {"math", "numpy"} | set(numpy_printer.module_imports) | set(math_printer.module_imports)
         modules |= set(math_printer._fallback.module_imports)
-        source = "".join(f"import {m}\n" for m in sorted(modules)) + "\n\n"
+        helpers |= numpy_printer.helpers | math_printer._fallback.helpers
+        source = "".join(f"import {m}\n" for m in sorted(modules)) + helper_source(helpers) + "\n\n"
         source += "\n".join(line for line in setup if line) + "\n\n\n" + "\n".join(line for line in kernels if line)
         namespace: dict[str, Any] = {"__builtins__": builtins}
         exec(builtins.compile(source, "<symosc:first_order>", "exec"), namespace)

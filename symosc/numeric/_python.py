@@ -9,6 +9,7 @@ from sympy.printing.numpy import SciPyPrinter
 from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 
 from ..errors import ParameterError
+from ._special import SpecialFunctions, helper_source
 
 
 def big_number(expr: sp.Rational) -> str | None:
@@ -39,23 +40,16 @@ class _ExactNumbers:
         return big_number(expr) or super()._print_Rational(expr)
 
 
-class SafeNumPyPrinter(_ExactNumbers, SciPyPrinter):
-    """NumPy printer (special functions through ``scipy.special``) with fully qualified module names."""
+class SafeNumPyPrinter(SpecialFunctions, _ExactNumbers, SciPyPrinter):
+    """NumPy printer (special functions through ``scipy.special``, with the corrections of
+    :mod:`symosc.numeric._special`) with fully qualified module names."""
 
     def __init__(self) -> None:
         super().__init__({"fully_qualified_modules": True, "inline": True, "allow_unknown_functions": False})
+        self.helpers = set()
 
     def _print_Pi(self, expr: sp.Expr) -> str:
         return self._module_format("numpy.pi")
-
-    # Complete elliptic integrals: SymPy and SciPy both use the parameter m = k^2.
-    def _print_elliptic_k(self, expr: sp.Expr) -> str:
-        return f"{self._module_format('scipy.special.ellipk')}({self._print(expr.args[0])})"
-
-    def _print_elliptic_e(self, expr: sp.Expr) -> str:
-        if len(expr.args) != 1:
-            return self._print_not_supported(expr)
-        return f"{self._module_format('scipy.special.ellipe')}({self._print(expr.args[0])})"
 
 
 class ScalarPrinter(_ExactNumbers, PythonCodePrinter):
@@ -87,6 +81,13 @@ class ScalarPrinter(_ExactNumbers, PythonCodePrinter):
         return self._fallback.doprint(expr)
 
     def _print_elliptic_e(self, expr: sp.Expr) -> str:
+        return self._fallback.doprint(expr)
+
+    # math.lgamma is log|Gamma| and math.factorial takes integers: SciPy's corrected mappings instead.
+    def _print_loggamma(self, expr: sp.Expr) -> str:
+        return self._fallback.doprint(expr)
+
+    def _print_factorial(self, expr: sp.Expr) -> str:
         return self._fallback.doprint(expr)
 
 
@@ -155,9 +156,13 @@ def numpy_source(fname: str, doc: str, args: list[sp.Symbol], items: list[sp.Exp
     scalar_printer = array_printer if complex_valued else ScalarPrinter(SafeNumPyPrinter())
     targets = [f"_o{i}" for i in range(len(nodes))]
 
+    helpers: set[str] = set()
+
     def statements(module: str, printer: Any) -> list[str]:
         emitter = PythonPrinter(graph, arg_names, module, lambda e: _printed(printer, e))
-        return [f"    {st.target} = {st.text}" for st in emitter.statements(nodes, targets)]
+        lines = [f"    {st.target} = {st.text}" for st in emitter.statements(nodes, targets)]
+        helpers.update(emitter.helpers)
+        return lines
 
     args_text = ", ".join(arg_names)
     scalar = [f"def _{fname}_scalar({args_text}):", *statements("numpy" if complex_valued else "math", scalar_printer)]
@@ -184,9 +189,10 @@ def numpy_source(fname: str, doc: str, args: list[sp.Symbol], items: list[sp.Exp
     modules = {"numpy", "math"} if not complex_valued else {"numpy"}
     for p in (array_printer, scalar_printer, getattr(scalar_printer, "_fallback", array_printer)):
         modules.update(p.module_imports)
+        helpers.update(getattr(p, "helpers", ()))
     imports = "".join(f"import {m}\n" for m in sorted(modules))
     types = "{float, int, complex, numpy.float64, numpy.float32, numpy.int64, numpy.complex128}"
-    preamble = f"{imports}\n_SCALAR_TYPES = frozenset({types})\n\n\n{_HELPERS}\n\n"
+    preamble = f"{imports}\n_SCALAR_TYPES = frozenset({types})\n\n\n{_HELPERS}{helper_source(helpers)}\n\n"
     return preamble + "\n".join(scalar) + "\n\n\n" + "\n".join(lines) + "\n"
 
 
