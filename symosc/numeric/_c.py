@@ -21,7 +21,9 @@ _C_KEYWORDS = set(
     "_Bool _Complex _Imaginary".split()
 )
 _C_RESERVED = set(
-    "a out count k i INFINITY NAN HUGE_VAL isfinite isnan isinf fabs sqrt cbrt pow exp exp2 "
+    "a out count k i INFINITY NAN HUGE_VAL HUGE_VALF HUGE_VALL isfinite isnan isinf isnormal signbit fpclassify "
+    "isgreater isgreaterequal isless islessequal islessgreater isunordered math_errhandling "
+    "fabs sqrt cbrt pow exp exp2 "
     "expm1 log log2 log10 log1p sin cos tan asin acos atan atan2 sinh cosh tanh asinh acosh atanh hypot floor ceil "
     "fmin fmax fmod tgamma lgamma erf erfc j0 j1 jn y0 y1 yn round trunc copysign main".split()
 )
@@ -54,7 +56,7 @@ def c_names(python_names: list[str], reserved: frozenset[str] = frozenset()) -> 
             and n not in _C_RESERVED
             and n not in reserved
             and n not in out
-            and not n.startswith("M_")
+            and not n.startswith(("M_", "FP_", "MATH_", "symosc"))
         )
         out.append(n if ok else f"_a{i}")
     return out

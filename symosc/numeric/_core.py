@@ -116,7 +116,8 @@ class CompiledFunction:
         exprs: Any = self.exprs[0] if shape is None else (sp.ImmutableMatrix(*_2d(shape), list(self.exprs)))
         if shape is not None and len(shape) == 1:
             exprs = list(self.exprs)
-        options = {"backend": self.backend, "dps": self.dps, "check": self.check, "name": self.name}
+        name = None if self.name.startswith("_symosc_f") else self.name  # a default name is made again
+        options = {"backend": self.backend, "dps": self.dps, "check": self.check, "name": name}
         return (_rebuild, (exprs, self.args, options))
 
 
@@ -307,9 +308,9 @@ def compile(
     if backend == "auto":
         return _auto(exprs, arg_syms, dps=dps, check=check, name=name)
     default = "symosc_f" if backend in ("c", "llvm") else f"_symosc_f{next(_counter)}"  # stable C names cache well
+    if name is not None:
+        _check_function_name(name, backend)
     fname = name or default
-    if not fname.isidentifier() or not fname.isascii():
-        raise ParameterError(f"name must be a Python identifier, got {name!r}")
     originals = tuple(items)
     items = [_evaluate_root_constants(e, (dps or mpmath.mp.dps) + 10 if backend == "mpmath" else 20) for e in items]
     if backend == "llvm":
@@ -421,16 +422,40 @@ def _evaluate_root_constants(expr: sp.Expr, digits: int) -> sp.Expr:
     return expr.xreplace({r: r.evalf(digits) for r in roots}) if roots else expr
 
 
+#: Names generated Python code uses besides its own "_"-prefixed ones: modules and the builtins it calls (an
+#: argument named ``type`` or ``sum`` would shadow them).
+_PYTHON_RESERVED = frozenset({"numpy", "mpmath", "math", "scipy", "functools"} | set(dir(builtins)))
+
+
 def _argument_names(symbols: list[sp.Symbol]) -> list[str]:
-    """Readable parameter names for the generated code: the symbol's own name where it is a safe identifier."""
+    """Parameter names for the generated code: the symbol's own name where it is a safe identifier, else ``_a<i>``.
+
+    A name is never pasted into code unchecked: it must be an ASCII identifier that is no Python keyword, no name
+    the generated code itself uses, and does not start with "_" (temporaries and helpers do).
+    """
     import keyword
 
-    reserved = {"numpy", "mpmath", "math", "scipy", "functools", "_bcast", "_stack", "_shape", "_out", "_v", "_s"}
-    reserved |= {"_slow", "_checked", "_scalar_out", "_SCALAR_TYPES", "_REAL_TYPES", "_INF"}
     names = []
     for i, s in enumerate(symbols):
-        # Names starting with "_" are the generated code's own (temporaries, helpers): arguments never take them.
-        ok = s.name.isidentifier() and not keyword.iskeyword(s.name) and not s.name.startswith("_")
-        ok = ok and s.name not in reserved and s.name not in names and not s.name.endswith("_scalar")
+        ok = s.name.isidentifier() and s.name.isascii() and not keyword.iskeyword(s.name)
+        ok = ok and not s.name.startswith("_") and s.name not in _PYTHON_RESERVED and s.name not in names
         names.append(s.name if ok else f"_a{i}")
     return names
+
+
+def _check_function_name(fname: str, backend: str) -> None:
+    """``name=`` must be an identifier that is no keyword or library name of the generated code (named error)."""
+    import keyword
+
+    from ._c import _C_KEYWORDS, _C_RESERVED
+
+    if not isinstance(fname, str) or not fname.isidentifier() or not fname.isascii():
+        raise ParameterError(f"name must be an ASCII identifier, got {fname!r}")
+    clash = keyword.iskeyword(fname) or fname in _PYTHON_RESERVED or fname.startswith(("symosc_solve", "_symosc_"))
+    if backend == "c":
+        clash = clash or fname in _C_KEYWORDS or fname in _C_RESERVED or fname.startswith(("symosc_mod", "symosc_arg"))
+        clash = clash or fname.startswith("symosc_loggamma")
+    if clash:
+        raise ParameterError(
+            f"name {fname!r} is a keyword or a library name of the generated {backend} code; choose another name"
+        )
