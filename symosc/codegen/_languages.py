@@ -78,7 +78,8 @@ def _names(k: Kernel, language: str, locals_: set[str]) -> tuple[dict, list[tupl
             rename.update({s: sp.Symbol("t", **s.assumptions0) for s in syms if s.name != "t"})
             continue
         for i, s in enumerate(syms):
-            ok = s.name.isidentifier() and s.name.isascii() and not s.name.startswith(("_", "x_"))
+            prefixes = ("_", "x_", "symosc") + (("M_", "FP_", "MATH_") if language == "c" else ())  # math.h macros
+            ok = s.name.isidentifier() and s.name.isascii() and not s.name.startswith(prefixes)
             local = s.name if ok and s.name.lower() not in used else f"{arr}_{i}"
             used.add(local.lower())
             if local != s.name:
