@@ -320,29 +320,31 @@ class LagrangianSystem(SymPyPrintable):
         qt = [*q, t]
         rates = [*qd, sp.S.One]
         pieces: list[list[sp.Expr]] = [[] for _ in range(n)]
+        minus, minus2 = sp.S.NegativeOne, sp.Integer(-2)
         for key, groups in self._parts.items():
             grads = _terms.grouped_gradient(groups, qt)
-            mono = sp.Mul(*(qd[i] for i in key))
+            sums = [sp.Add(*g) if g else None for g in grads]
+            mono = [qd[i] for i in key]
             # dT/dq_k: the coefficient's gradient times the velocity monomial.
             for k in range(n):
-                if grads[k]:
-                    pieces[k].append(sp.Add(*grads[k]) * mono)
+                if sums[k] is not None:
+                    pieces[k].append(sp.Mul(sums[k], *mono))
             # d/dt of dT/dq'_i along the motion (accelerations excluded).
-            rate = sp.Add(*(sp.Add(*g) * r for g, r in zip(grads, rates, strict=True) if g))
+            rate = sp.Add(*(sp.Mul(g, r) for g, r in zip(sums, rates, strict=True) if g is not None))
             if rate == 0:
                 continue
             if len(key) == 1:
-                pieces[key[0]].append(-rate)
+                pieces[key[0]].append(sp.Mul(minus, rate))
             elif len(key) == 2:
                 i, j = key
                 if i == j:
-                    pieces[i].append(-2 * rate * qd[i])
+                    pieces[i].append(sp.Mul(minus2, rate, qd[i]))
                 else:
-                    pieces[i].append(-rate * qd[j])
-                    pieces[j].append(-rate * qd[i])
+                    pieces[i].append(sp.Mul(minus, rate, qd[j]))
+                    pieces[j].append(sp.Mul(minus, rate, qd[i]))
         dV = _terms.grouped_gradient(self._potential_groups, q)
         for k in range(n):
-            pieces[k].extend(-x for x in dV[k])
+            pieces[k].extend(sp.Mul(minus, x) for x in dV[k])
             if self._R != 0:
                 pieces[k].append(-self._R.diff(qd[k]))
             pieces[k].append(self._Q[k])
