@@ -9,7 +9,8 @@ Equations of motion (mass matrix and forcing) of the n-link pendulum, from the m
   point chain; T and V are built before the clock starts (the engine is timed, not the user's own expressions).
 
 Every measurement runs in a fresh process (no SymPy cache carried over; both tools' imports are paid before the
-clock starts); each entry is the fastest of three such processes.  Each child also evaluates its M and F at one
+clock starts); each entry is the fastest of three such processes, in CPU seconds of the process (the machine is
+shared: waiting for a core is not the tool's cost).  Each child also evaluates its M and F at one
 random state and parameter set; the parent reports the largest relative difference between symosc and Kane (an
 independent derivation).
 
@@ -77,16 +78,16 @@ def child(tool: str, kind: str, n: int) -> None:
         from symosc.mechanics import LagrangianSystem
 
         T, V, q = _user_chain(n)
-    start = time.perf_counter()
+    start = time.process_time()
     if tool == "kane":
         km, repl = sympy_pendulum_kane(n, links, False, "fixed")
         M, F = km.mass_matrix, km.forcing
-        seconds = time.perf_counter() - start
+        seconds = time.process_time() - start
         M, F = M.xreplace(repl), F.xreplace(repl)
     else:
         system = LagrangianSystem(T, V, q) if kind == "user" else n_link_pendulum(n, links=links)
         M, F = system.mass_matrix, system.forcing
-        seconds = time.perf_counter() - start
+        seconds = time.process_time() - start
     print(json.dumps({"seconds": seconds, "values": _fingerprint(M, F, n)}))
 
 
@@ -103,7 +104,7 @@ def run(tool: str, kind: str, n: int, repeats: int) -> dict:
 
 
 def kane_table(sizes: tuple[int, ...], repeats: int) -> None:
-    print(f"best of {repeats} fresh processes per entry")
+    print(f"CPU seconds, best of {repeats} fresh processes per entry")
     print(f"{'n':>3} {'model':<6} {'symosc, s':>10} {'KanesMethod, s':>15} {'ratio':>8} {'max rel diff':>13}")
     for n in sizes:
         kane = {links: run("kane", links, n, repeats) for links in ("point", "rigid")}

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from collections import defaultdict
+from fractions import Fraction
 from collections.abc import Iterable, Sequence
 from typing import NamedTuple
 
@@ -153,16 +154,20 @@ def group_terms(terms: Iterable[Factors], variables: Iterable[sp.Symbol]) -> Gro
     depends = variables if isinstance(variables, _Depends) else _Depends(variables)
     ids: dict[sp.Expr, int] = {}
     split: dict[sp.Expr, tuple[sp.Expr, int | sp.Expr]] = {}  # factor -> (base, exponent), exponents as ints
-    groups: dict[tuple, dict[tuple, sp.Expr]] = {}
+    groups: dict[tuple, dict[tuple, Fraction | sp.Expr]] = {}
     one = sp.S.One
+    numbers: dict[sp.Expr, Fraction | sp.Expr] = {}  # rational coefficients as Fractions: SymPy arithmetic is slow
     for term in terms:
-        coeff = one
+        coeff: Fraction | sp.Expr = Fraction(1)
         dep: dict[sp.Expr, int | sp.Expr] = {}
         ind: dict[sp.Expr, int | sp.Expr] = {}
         for f in term:
             if f.is_Number:
                 if f is not one:
-                    coeff *= f
+                    v = numbers.get(f)
+                    if v is None:
+                        v = numbers[f] = Fraction(int(f.p), int(f.q)) if f.is_Rational else f
+                    coeff = coeff * v
                 continue
             be = split.get(f)
             if be is None:
@@ -184,7 +189,7 @@ def group_terms(terms: Iterable[Factors], variables: Iterable[sp.Symbol]) -> Gro
     bases = list(ids)
     out: Groups = []
     for dkey, sums in groups.items():
-        entries = [(ikey, c) for ikey, c in sums.items() if c != 0]
+        entries = [(ikey, _number(c)) for ikey, c in sums.items() if c != 0]
         if not entries:
             continue
         powers = tuple((bases[i], sp.Integer(e) if isinstance(e, int) else e) for i, e in dkey)
@@ -213,6 +218,10 @@ def _coefficient(entries: list[tuple[tuple, sp.Expr]], bases: list[sp.Expr]) -> 
         c = c / content if content != 1 else c
         terms.append(rest[0] if c == 1 and len(rest) == 1 else sp.Mul(c, *rest))
     return sp.Mul(content, *(_power(bases[b], e) for b, e in common.items()), sp.Add(*terms))
+
+
+def _number(c: Fraction | sp.Expr) -> sp.Expr:
+    return sp.Rational(c.numerator, c.denominator) if isinstance(c, Fraction) else sp.sympify(c)
 
 
 def _power(base: sp.Expr, e: int | sp.Expr) -> sp.Expr:
