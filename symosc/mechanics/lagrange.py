@@ -43,8 +43,9 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
             q = c
         elif isinstance(c, AppliedUndef) and c.args == (t,):
             q = sp.Symbol(c.func.__name__, real=True)
-            replace[c.diff(t, 2)] = ddot(q)
-            replace[c.diff(t)] = dot(q)
+            # (Derivative objects built directly: c.diff(t) takes SymPy's general differentiation path)
+            replace[sp.Derivative(c, (t, 2))] = ddot(q)
+            replace[sp.Derivative(c, t)] = dot(q)
             replace[c] = q
         else:
             raise ModelError(
