@@ -16,6 +16,8 @@ symengine are benchmark-only dependencies.
 
     python benchmarks/evaluators_vs_peers.py            # n = 3, 6, 10, 20 (several minutes: Cython builds)
     python benchmarks/evaluators_vs_peers.py --quick    # n = 3, 6
+    python benchmarks/evaluators_vs_peers.py --builds   # cold rhs and Jacobian builds vs symengine (n = 10, 20)
+    python benchmarks/evaluators_vs_peers.py --defaults # default rhs() backend per call and RK45 (n = 10, 20)
 """
 
 from __future__ import annotations
@@ -188,12 +190,86 @@ def build_numba(case: Case):
     return (lambda time_, y: f_jit(time_, y, p)), (lambda Y: fb_jit(Y, p)), first, None
 
 
+def _fresh_cache() -> None:
+    os.environ["SYMOSC_CACHE_DIR"] = tempfile.mkdtemp(prefix="symosc_bench_cache_")
+    clear_memory_cache()
+
+
+def _timed(fn) -> tuple[float, float]:
+    """Wall and CPU seconds of ``fn()`` (CPU: this process and the compilers it ran)."""
+    import resource
+
+    r0, c0, w0 = resource.getrusage(resource.RUSAGE_CHILDREN), time.process_time(), time.perf_counter()
+    fn()
+    r1, c1, w1 = resource.getrusage(resource.RUSAGE_CHILDREN), time.process_time(), time.perf_counter()
+    return w1 - w0, (c1 - c0) + (r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime)
+
+
+def symengine_outputs(case: Case, jacobian: bool):
+    """symengine: M, F (and dF/dy, the non-zero dM/dq) differentiated by symengine and LLVM-compiled."""
+    import symengine as se
+
+    args = [se.sympify(a) for a in [t, *case.q, *case.u, *case.params]]
+    M = se.Matrix(case.M.tolist())
+    F = se.Matrix(list(case.F))
+    outs = list(M) + list(F)
+    if jacobian:
+        y = [se.sympify(v) for v in [*case.q, *case.u]]
+        outs += list(F.jacobian(se.Matrix(y)))
+        outs += [d for v in y[: case.n] for d in M.diff(v) if d != 0]
+    return se.Lambdify(args, outs, backend="llvm", cse=True)
+
+
+def builds(sizes: tuple[int, ...], repeats: int) -> None:
+    """Cold builds (fresh disk cache) of the rhs and the analytic Jacobian: symosc C vs symengine LLVM, best of
+    ``repeats`` alternating runs (wall and CPU seconds); M and F are derived before the clock starts."""
+    print(f"cold builds, best of {repeats} alternating runs; derivation of M and F excluded; wall s (CPU s)")
+    print(f"{'n':>3} {'what':<9}{'symosc c':>18}{'symengine llvm':>18}{'ratio (wall)':>14}")
+    for n in sizes:
+        case = Case(n)
+        for what, jac in (("rhs", False), ("jacobian", True)):
+            ours, theirs = [], []
+            for _ in range(repeats):
+                _fresh_cache()
+                fo = FirstOrderSystem(case.system)
+                build = fo.jacobian if jac else fo.rhs
+                ours.append(_timed(lambda b=build, c=case: b(c.values, backend="c")))
+                theirs.append(_timed(lambda c=case, j=jac: symengine_outputs(c, j)))
+            (ow, oc), (tw, tc) = min(ours), min(theirs)
+            print(f"{n:3d} {what:<9}{ow:10.2f} ({oc:5.2f}){tw:10.2f} ({tc:5.2f}){ow / tw:14.2f}", flush=True)
+
+
+def defaults(sizes: tuple[int, ...]) -> None:
+    """The default ``rhs(values)`` (backend="auto") per call and in RK45, against backend="c" and "numpy"."""
+    print("default FirstOrderSystem.rhs(values) vs explicit backends (built once; cached builds not timed)")
+    print(f"{'n':>3}{'backend':>10}{'picked':>8}{'µs/call':>10}{'/c':>7}{'RK45 s':>9}{'nfev':>8}")
+    for n in sizes:
+        case = Case(n)
+        rows = {}
+        for backend in ("auto", "c", "numpy"):
+            f = FirstOrderSystem(case.system).rhs(case.values, backend=backend)
+            start = time.perf_counter()
+            sol = solve_ivp(f, (0, 10), case.y, method="RK45", rtol=1e-8, atol=1e-10)
+            rows[backend] = (f.backend, per_call(f, 0.0, case.y), time.perf_counter() - start, sol.nfev)
+        for backend, (picked, us, rk, nfev) in rows.items():
+            print(f"{n:3d}{backend:>10}{picked:>8}{us:10.2f}{us / rows['c'][1]:7.2f}{rk:9.2f}{nfev:8d}", flush=True)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--builds", action="store_true", help="cold rhs/Jacobian builds: symosc C vs symengine LLVM")
+    ap.add_argument("--defaults", action="store_true", help="default rhs() backend per call and in RK45")
+    ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--build-only", action="store_true", help="only symosc's build times (numpy and c backends)")
     ap.add_argument("--checks", action="store_true", help="only checked vs unchecked calls on scalars and small arrays")
     ns = ap.parse_args()
+    if ns.builds:
+        builds((10,) if ns.quick else (10, 20), ns.repeats)
+        return
+    if ns.defaults:
+        defaults((10,) if ns.quick else (10, 20))
+        return
     if ns.checks:
         print(f"{'n':>3}{'backend':>8}{'states k':>10}{'checked µs':>12}{'raw µs':>10}{'ratio':>7}")
         for n in (3, 10):

@@ -238,7 +238,7 @@ def test_bad_compile_inputs_name_the_argument():
         compile(x, None)
     with pytest.raises(ParameterError, match="exprs: expected a SymPy expression"):
         compile("x + 1", [x])
-    with pytest.raises(ParameterError, match="name must be a Python identifier"):
+    with pytest.raises(ParameterError, match="name must be an ASCII identifier"):
         compile(x, [x], backend="c", name="not valid")
 
 

@@ -5,19 +5,80 @@ phi_i' phi_j'``).  Working term by term — splitting the kinetic energy into it
 and 2 in the velocities without expanding anything else, and differentiating each term only with
 respect to the few coordinates it contains — keeps the derivation of an n-link chain at O(n^3) term
 operations, where differentiating whole expression trees costs O(n^4) or more.
+
+A term is kept as a tuple of factors (no SymPy ``Mul`` is built while the energy is opened: a product is a
+tuple concatenation); SymPy expressions are built once per distinct product, when the terms are collected.
 """
 
 from __future__ import annotations
 
+import math
 from collections import defaultdict
 from collections.abc import Iterable, Sequence
+from fractions import Fraction
+from typing import NamedTuple
 
 import sympy as sp
 
 from ..errors import ModelError
 
 Monomial = tuple[int, ...]  # sorted velocity indices: () constant, (i,) linear, (i, j) quadratic with i <= j
-TermDict = dict[Monomial, list[sp.Expr]]
+Factors = tuple[sp.Expr, ...]  # a product term, as its factors
+TermDict = dict[Monomial, list[Factors]]
+
+
+class Group(NamedTuple):
+    """``coeff * dep``: ``dep`` the product of the factors that depend on the variables (``powers`` lists them as
+    ``(base, exponent)``), ``coeff`` the sum of everything that multiplies it."""
+
+    dep: sp.Expr
+    coeff: sp.Expr
+    powers: tuple[tuple[sp.Expr, sp.Expr], ...]
+
+
+Groups = list[Group]
+
+
+def _product(args: Sequence[sp.Expr]) -> sp.Expr:
+    """Product of a subset of the arguments of a canonical Mul (already ordered and combined)."""
+    if not args:
+        return sp.S.One
+    if len(args) == 1:
+        return args[0]
+    if any(isinstance(a, sp.Add) for a in args):
+        return sp.Mul(*args)
+    return sp.Mul._from_args(tuple(args))
+
+
+def product_group(dep: sp.Expr, coeff: sp.Expr) -> Group:
+    """``coeff * dep`` as a :class:`Group` (a numeric factor of ``dep`` moved into the coefficient)."""
+    number, rest = sp.sympify(dep).as_coeff_Mul()
+    powers = tuple(f.as_base_exp() for f in sp.Mul.make_args(rest) if f is not sp.S.One)
+    return Group(rest, number * coeff, powers)
+
+
+class _Depends:
+    """Memoized "does this expression contain one of ``symbols``" (``free_symbols`` is not cached by SymPy)."""
+
+    def __init__(self, symbols: Iterable[sp.Symbol]) -> None:
+        self.symbols = frozenset(symbols)
+        self.memo: dict[sp.Expr, bool] = {}
+
+    def __call__(self, e: sp.Expr) -> bool:
+        got = self.memo.get(e)
+        if got is None:
+            if e.is_Symbol:
+                got = e in self.symbols
+            elif not e.args:
+                got = False
+            else:
+                got = any(self(a) for a in e.args)
+            self.memo[e] = got
+        return got
+
+
+def _flat(e: sp.Expr) -> Factors:
+    return e.args if e.is_Mul else (e,)
 
 
 def _merge(a: TermDict, b: TermDict) -> TermDict:
@@ -35,34 +96,33 @@ def _multiply(a: TermDict, b: TermDict, what: str) -> TermDict:
             key = tuple(sorted(ka + kb))
             if len(key) > 2:
                 raise ModelError(f"{what} is not quadratic in the velocities (found a term of degree {len(key)})")
-            out[key].extend(x * y for x in va for y in vb)
+            out[key].extend(x + y for x in va for y in vb)
     return out
 
 
 def velocity_parts(expr: sp.Expr, velocities: Sequence[sp.Symbol], what: str = "T") -> TermDict:
     """Split ``expr`` into terms of degree 0, 1, 2 in ``velocities``.
 
-    Returns a mapping ``monomial -> list of coefficient terms``; only products, sums and integer powers
-    are opened, everything free of velocities is kept as it is.
+    Returns a mapping ``monomial -> list of coefficient terms`` (each a tuple of factors); only products, sums
+    and integer powers are opened, everything free of velocities is kept as it is.
     """
     index = {v: i for i, v in enumerate(velocities)}
-    vset = set(velocities)
+    has_velocity = _Depends(velocities)
 
     def walk(e: sp.Expr) -> TermDict:
-        if not (e.free_symbols & vset):
-            return {(): [e]}
+        if not has_velocity(e):
+            return {(): [_flat(e)]}
         if e in index:
-            return {(index[e],): [sp.S.One]}
+            return {(index[e],): [()]}
         if isinstance(e, sp.Add):
             out: TermDict = {}
             for arg in e.args:
                 out = _merge(out, walk(arg))
             return out
         if isinstance(e, sp.Mul):
-            const = [a for a in e.args if not (a.free_symbols & vset)]
-            out = {(): [sp.Mul(*const)]}
+            out = {(): [tuple(a for a in e.args if not has_velocity(a))]}
             for arg in e.args:
-                if arg.free_symbols & vset:
+                if has_velocity(arg):
                     out = _multiply(out, walk(arg), what)
             return out
         if isinstance(e, sp.Pow) and e.exp.is_Integer and e.exp > 0:
@@ -78,65 +138,131 @@ def velocity_parts(expr: sp.Expr, velocities: Sequence[sp.Symbol], what: str = "
     return {k: v for k, v in walk(sp.sympify(expr)).items() if v}
 
 
-def expand_terms(expr: sp.Expr, variables: set[sp.Symbol]) -> list[sp.Expr]:
-    """The additive terms of ``expr``, opening products of sums that involve ``variables``.
-
-    No trigonometric rewriting; sums of constants are left as they are.
-    """
-    out: list[sp.Expr] = []
-    for term in sp.Add.make_args(expr):
-        factors = term.args if isinstance(term, sp.Mul) else (term,)
-        if any(
-            (isinstance(f, sp.Add) or (isinstance(f, sp.Pow) and isinstance(f.base, sp.Add)))
-            and (f.free_symbols & variables)
-            for f in factors
-        ):
-            out.extend(sp.Add.make_args(sp.expand(term, power_base=False, power_exp=False, log=False)))
+def expand_terms(expr: sp.Expr | Iterable[Factors], variables: Iterable[sp.Symbol]) -> list[Factors]:
+    """The additive terms of ``expr`` (an expression, or terms as factor tuples), each a tuple of factors, with
+    the products of sums that involve ``variables`` opened.  No trigonometric rewriting."""
+    depends = variables if isinstance(variables, _Depends) else _Depends(variables)
+    if isinstance(expr, sp.Basic):
+        expr = [_flat(term) for term in sp.Add.make_args(expr)]
+    out: list[Factors] = []
+    stack = list(expr)
+    stack.reverse()
+    while stack:
+        term = stack.pop()
+        for pos, f in enumerate(term):
+            if f.is_Add and depends(f):
+                rest = term[:pos] + term[pos + 1 :]
+                stack.extend(reversed([rest + _flat(a) for a in f.args]))
+                break
+            if f.is_Pow and f.base.is_Add and f.exp.is_Integer and f.exp > 1 and depends(f.base):
+                stack.append(term[:pos] + (f.base,) * int(f.exp) + term[pos + 1 :])
+                break
         else:
             out.append(term)
     return out
 
 
-def _product(args: Sequence[sp.Expr]) -> sp.Expr:
-    """Product of a subset of the arguments of a canonical Mul (already ordered and combined)."""
-    if not args:
-        return sp.S.One
-    if len(args) == 1:
-        return args[0]
-    if any(isinstance(a, sp.Add) for a in args):
-        return sp.Mul(*args)
-    return sp.Mul._from_args(tuple(args))
-
-
-Groups = list[tuple[sp.Expr, sp.Expr]]  # (factor depending on the variables, constant coefficient)
-
-
-def group_terms(terms: Iterable[sp.Expr], variables: set[sp.Symbol]) -> Groups:
+def group_terms(terms: Iterable[Factors], variables: Iterable[sp.Symbol]) -> Groups:
     """Collect ``sum(terms)`` as ``sum_k c_k * d_k`` with distinct factors ``d_k`` depending on ``variables``.
 
     Each distinct dependent factor (e.g. ``cos(phi1)*cos(phi2)``) then needs differentiating only once,
-    whatever the number of terms that share it.
+    whatever the number of terms that share it.  Equal products are merged (their numeric coefficients added)
+    and factors common to all the terms of a coefficient are taken out of its sum (``l1*l2*(m2 + m3)``).
     """
-    groups: dict[tuple, list[sp.Expr]] = {}
+    depends = variables if isinstance(variables, _Depends) else _Depends(variables)
+    ids: dict[sp.Expr, int] = {}
+    split: dict[sp.Expr, tuple[sp.Expr, int | sp.Expr]] = {}  # factor -> (base, exponent), exponents as ints
+    groups: dict[tuple, dict[tuple, Fraction | sp.Expr]] = {}
+    one = sp.S.One
+    numbers: dict[sp.Expr, Fraction | sp.Expr] = {}  # rational coefficients as Fractions: SymPy arithmetic is slow
     for term in terms:
-        factors = term.args if isinstance(term, sp.Mul) else (term,)
-        dep = tuple(f for f in factors if f.free_symbols & variables)
-        ind = [f for f in factors if not (f.free_symbols & variables)]
-        groups.setdefault(dep, []).append(_product(ind))
-    return [(_product(dep), sp.Add(*consts)) for dep, consts in groups.items()]
+        coeff: Fraction | sp.Expr = Fraction(1)
+        dep: dict[sp.Expr, int | sp.Expr] = {}
+        ind: dict[sp.Expr, int | sp.Expr] = {}
+        for f in term:
+            if f.is_Number:
+                if f is not one:
+                    v = numbers.get(f)
+                    if v is None:
+                        v = numbers[f] = Fraction(int(f.p), int(f.q)) if f.is_Rational else f
+                    coeff = coeff * v
+                continue
+            be = split.get(f)
+            if be is None:
+                if f.is_Pow and f.exp.is_Rational:
+                    be = (f.base, int(f.exp) if f.exp.is_Integer else f.exp)
+                else:
+                    be = (f, 1)
+                split[f] = be
+            base, e = be
+            target = dep if depends(base) else ind
+            target[base] = target.get(base, 0) + e
+        if coeff == 0:
+            continue
+        dkey = tuple(sorted((ids.setdefault(b, len(ids)), e) for b, e in dep.items() if e != 0))
+        ikey = tuple(sorted((ids.setdefault(b, len(ids)), e) for b, e in ind.items() if e != 0))
+        sums = groups.setdefault(dkey, {})
+        old = sums.get(ikey)
+        sums[ikey] = coeff if old is None else old + coeff
+    bases = list(ids)
+    out: Groups = []
+    for dkey, sums in groups.items():
+        entries = [(ikey, _number(c)) for ikey, c in sums.items() if c != 0]
+        if not entries:
+            continue
+        powers = tuple((bases[i], sp.Integer(e) if isinstance(e, int) else e) for i, e in dkey)
+        dep = sp.Mul(*(b if e == 1 else b**e for b, e in powers))
+        out.append(Group(dep, _coefficient(entries, bases), powers))
+    return out
+
+
+def _coefficient(entries: list[tuple[tuple, sp.Expr]], bases: list[sp.Expr]) -> sp.Expr:
+    """``sum_k c_k prod_b b**e_bk`` with the rational content of the ``c_k`` and the factors common to every
+    term taken out of the sum (``l1*l2*(m2 + m3)/2``)."""
+    common = {b: e for b, e in entries[0][0] if e > 0}
+    for ikey, _ in entries[1:]:
+        powers = dict(ikey)
+        common = {b: min(e, powers[b]) for b, e in common.items() if powers.get(b, 0) > 0}
+        if not common:
+            break
+    content = sp.S.One
+    if len(entries) > 1 and all(c.is_Rational for _, c in entries):
+        content = sp.Rational(
+            math.gcd(*(int(c.p) for _, c in entries)), math.lcm(*(int(c.q) for _, c in entries))
+        ) * sp.sign(entries[0][1])
+    terms = []
+    for ikey, c in entries:
+        rest = [_power(bases[b], e - common.get(b, 0)) for b, e in ikey if e != common.get(b, 0)]
+        c = c / content if content != 1 else c
+        terms.append(rest[0] if c == 1 and len(rest) == 1 else sp.Mul(c, *rest))
+    return sp.Mul(content, *(_power(bases[b], e) for b, e in common.items()), sp.Add(*terms))
+
+
+def _number(c: Fraction | sp.Expr) -> sp.Expr:
+    return sp.Rational(c.numerator, c.denominator) if isinstance(c, Fraction) else sp.sympify(c)
+
+
+def _power(base: sp.Expr, e: int | sp.Expr) -> sp.Expr:
+    return base if e == 1 else base**e
 
 
 def grouped_gradient(groups: Groups, variables: Sequence[sp.Symbol]) -> list[list[sp.Expr]]:
     """Gradient of ``sum c_k d_k``: per variable the list of pieces ``c_k * d(d_k)/dv``."""
     index = {v: i for i, v in enumerate(variables)}
     out: list[list[sp.Expr]] = [[] for _ in variables]
-    for dep, c in groups:
-        for v in dep.free_symbols:
-            i = index.get(v)
-            if i is not None:
-                d = d_term(dep, v)
-                if d != 0:
-                    out[i].append(c * d)
+    memo: dict[sp.Expr, list[int]] = {}
+    for g in groups:
+        factors = [b**e for b, e in g.powers]
+        for pos, (base, e) in enumerate(g.powers):
+            found = memo.get(base)
+            if found is None:
+                found = memo[base] = sorted(index[v] for v in base.free_symbols if v in index)
+            for i in found:
+                d = _d_factor(base, variables[i])
+                if d == 0:
+                    continue
+                outer = e * base ** (e - 1) if e != 1 else sp.S.One
+                out[i].append(sp.Mul(g.coeff, outer, d, *factors[:pos], *factors[pos + 1 :]))
     return out
 
 

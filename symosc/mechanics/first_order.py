@@ -89,7 +89,7 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         both = s.mass_matrix.row_join(s.forcing)
         return compile(both, [t, *s.coordinates, *s.velocities, *s.parameters], name="mass_and_forcing")
 
-    def rhs(self, values: Mapping[Any, Any], backend: str = "numpy") -> Callable[[float, np.ndarray], np.ndarray]:
+    def rhs(self, values: Mapping[Any, Any], backend: str = "auto") -> Callable[[float, np.ndarray], np.ndarray]:
         """Numeric f(t, y) for ``scipy.integrate.solve_ivp``, with the parameters fixed to ``values``.
 
         Parameters
@@ -97,11 +97,13 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         values : mapping
             Parameter values keyed by Symbol or name.  Checked once (missing, non-finite or wrongly
             signed values raise :class:`~symosc.errors.ParameterError`).
-        backend : {"numpy", "c", "auto"}
-            ``"numpy"``: compiled M and F, solved with LAPACK.  ``"c"``: one call into generated C that
-            evaluates M and F and solves ``M q'' = F`` by Gaussian elimination with partial pivoting (see
-            :func:`symosc.numeric.compile` for the compiler and the disk cache).  ``"auto"``: ``"c"`` when a
-            C compiler is available, else ``"numpy"``.
+        backend : {"auto", "c", "llvm", "numpy"}
+            ``"c"``: one call into generated C that evaluates M and F and solves ``M q'' = F`` by Gaussian
+            elimination with partial pivoting (see :func:`symosc.numeric.compile` for the compiler and the disk
+            cache).  ``"llvm"``: M and F by symengine's LLVM JIT, solved with LAPACK.  ``"numpy"``: M and F in
+            Python (``math`` for one state, NumPy for a batch), solved with LAPACK.  ``"auto"`` (default): the
+            fastest available -- ``"c"`` when a C compiler works, else ``"llvm"`` when symengine is installed,
+            else ``"numpy"``; the result's ``.backend`` says which.  All agree to rounding.
 
         Returns
         -------
@@ -109,10 +111,16 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
             ``f(t, y)`` for a state of shape ``(2n,)`` or a batch of shape ``(2n, k)`` (one state per
             column, as ``solve_ivp(..., vectorized=True)`` passes); the result has the same shape.  A
             singular mass matrix met during integration raises :class:`~symosc.errors.ModelError`.
+            ``.backend`` is the backend used, ``.source`` the generated code.
 
         See Also
         --------
         jacobian, symosc.numeric.compile, symosc.codegen.export
+
+        Notes
+        -----
+        Expressions that depend on the parameters alone are evaluated once, when ``values`` are bound; a call
+        evaluates only what depends on t and the state.
 
         Examples
         --------
@@ -122,15 +130,25 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         >>> f = fo.rhs({"m1": 1.0, "l1": 1.0, "g": 9.81})
         >>> f(0.0, np.array([[0.1, 0.2], [0.0, 0.0]])).round(4).tolist()
         [[0.0, 0.0], [-0.9794, -1.9489]]
+        >>> f.backend in ("c", "llvm", "numpy")
+        True
         """
-        return _OdeFunction(self._evaluator(values, backend, jacobian=False), "rhs", 2 * len(self.system.coordinates))
+        backend = self._backend(backend)
+        return _OdeFunction(self._evaluator(values, backend, jacobian=False), "rhs", self._size, backend)
 
-    def jacobian(self, values: Mapping[Any, Any], backend: str = "numpy") -> Callable[[float, np.ndarray], np.ndarray]:
+    def jacobian(self, values: Mapping[Any, Any], backend: str = "auto") -> Callable[[float, np.ndarray], np.ndarray]:
         """Analytic Jacobian ``df/dy(t, y)`` of :meth:`rhs`, for stiff solvers (``solve_ivp(..., jac=...)``).
 
         With ``u = q'`` and ``f = (u, M^{-1} F)`` the lower block is
-        ``M^{-1} (dF/dy - (dM/dy) M^{-1} F)``; the derivatives are symbolic, the solves numeric (LAPACK for
-        ``backend="numpy"``, generated C for ``"c"``).
+        ``M^{-1} (dF/dy - (dM/dy) M^{-1} F)``.  The derivatives are symbolic, taken on the shared expression graph
+        of M and F (only the entries that can be non-zero; see :mod:`symosc.numeric`), the solves numeric.
+
+        Parameters
+        ----------
+        values : mapping
+            Parameter values keyed by Symbol or name (checked as in :meth:`rhs`).
+        backend : {"auto", "c", "llvm", "numpy"}
+            As in :meth:`rhs`.
 
         Parameters
         ----------
@@ -144,7 +162,8 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         Returns
         -------
         callable
-            ``jac(t, y)`` for a state of shape ``(2n,)``, giving a ``(2n, 2n)`` array.
+            ``jac(t, y)`` for a state of shape ``(2n,)``, giving a ``(2n, 2n)`` array; ``.backend`` says which
+            backend evaluates it.
 
         See Also
         --------
@@ -157,17 +176,33 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         >>> jac(0.0, [0.0, 0.0]).tolist()
         [[0.0, 1.0], [-4.905, 0.0]]
         """
-        return _OdeFunction(
-            self._evaluator(values, backend, jacobian=True), "jacobian", 2 * len(self.system.coordinates)
-        )
+        backend = self._backend(backend)
+        return _OdeFunction(self._evaluator(values, backend, jacobian=True), "jacobian", self._size, backend)
+
+    @property
+    def _size(self) -> int:
+        return 2 * len(self.system.coordinates)
+
+    @staticmethod
+    def _backend(backend: str) -> str:
+        from ..numeric import available_backends
+
+        if backend not in ("auto", "c", "llvm", "numpy"):
+            raise ParameterError(f"backend must be 'auto', 'c', 'llvm' or 'numpy', got {backend!r}")
+        if backend == "auto":
+            found = available_backends()
+            return "c" if "c" in found else "llvm" if "llvm" in found else "numpy"
+        return backend
+
+    def _program(self, jacobian: bool) -> Any:
+        from ..numeric import _ode
+
+        s = self.system
+        return _ode.Program(s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters, jacobian)
 
     def _evaluator(self, values: Mapping[Any, Any], backend: str, jacobian: bool) -> Any:
-        from ..numeric import _ode, available_backends
+        from ..numeric import _ode
 
-        if backend not in ("numpy", "c", "auto"):
-            raise ParameterError(f"backend must be 'numpy', 'c' or 'auto', got {backend!r}")
-        if backend == "auto":
-            backend = "c" if "c" in available_backends() else "numpy"
         s = self.system
         params = check_all(s.parameters, tuple(resolve(s.parameters, values)), "numpy")
         if any(np.ndim(v) for v in params):
@@ -176,20 +211,20 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         key = (backend, jacobian)
         parts = self._parts.get(key)
         if parts is None:
-            symbolic = (s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters)
             if backend == "c":
                 from ..numeric import _build
 
                 items = [*s.mass_matrix, *s.forcing, t, *s.coordinates, *s.velocities, *s.parameters]
                 tag = _build.expression_digest(items, "first_order", str(jacobian), str(len(s.coordinates)))
-                parts = _build.memoized_source(tag, lambda: _ode.c_first_order_source(*symbolic, jacobian=jacobian))
+                parts = _build.memoized_source(tag, lambda: self._program(jacobian).c_source())
             else:
-                parts = _ode.numpy_parts(*symbolic, jacobian=jacobian)
+                program = self._program(jacobian)
+                parts = (program, program.llvm_function() if backend == "llvm" else program.python_functions())
             self._parts[key] = parts
         n = len(s.coordinates)
         if backend == "c":
             return _ode.CFirstOrder(parts, n, values, jacobian=jacobian)
-        return _ode.NumpyFirstOrder(parts, n, values)
+        return _ode.NumpyFirstOrder(*parts, values)
 
     def simulate(
         self,
@@ -253,15 +288,19 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
 
 
 class _OdeFunction:
-    """``f(t, y)`` (or ``jac(t, y)``) with the shape of ``y`` checked; picklable-free of closures."""
+    """``f(t, y)`` (or ``jac(t, y)``) with the shape of ``y`` checked; ``.backend`` names the backend."""
 
-    def __init__(self, evaluator: Any, kind: str, size: int) -> None:
+    def __init__(self, evaluator: Any, kind: str, size: int, backend: str) -> None:
         self._ev, self._kind, self._size = evaluator, kind, size
+        self.backend = backend
         self._call = evaluator.rhs if kind == "rhs" else evaluator.jacobian
+
+    def __repr__(self) -> str:
+        return f"<{self._kind} of a first-order system ({self._size} states), backend {self.backend!r}>"
 
     @property
     def source(self) -> str | None:
-        """The generated C source (backend "c"), else None."""
+        """The generated code (C for backend "c", Python for "numpy", a symengine script for "llvm")."""
         return getattr(self._ev, "source", None)
 
     def __call__(self, time: float, y: Any) -> np.ndarray:

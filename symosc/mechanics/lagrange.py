@@ -48,8 +48,9 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
             q = c
         elif isinstance(c, AppliedUndef) and c.args == (t,):
             q = sp.Symbol(c.func.__name__, real=True)
-            replace[c.diff(t, 2)] = ddot(q)
-            replace[c.diff(t)] = dot(q)
+            # (Derivative objects built directly: c.diff(t) takes SymPy's general differentiation path)
+            replace[sp.Derivative(c, (t, 2))] = ddot(q)
+            replace[sp.Derivative(c, t)] = dot(q)
             replace[c] = q
         else:
             raise ModelError(
@@ -322,20 +323,20 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         """T split by velocity monomial (``()``, ``(i,)``, ``(i, j)`` with i <= j), each coefficient
         collected by its factor that depends on the coordinates and time."""
         parts = _terms.velocity_parts(self._T, self._qd, "T")
-        dep = self._dependent
-        out = {
-            k: _terms.group_terms([x for term in v for x in _terms.expand_terms(term, dep)], dep)
-            for k, v in parts.items()
-        }
+        dep = _terms._Depends(self._dependent)
+        out = {k: _terms.group_terms(_terms.expand_terms(v, dep), dep) for k, v in parts.items()}
         if self._simplify:  # sin**2 + cos**2 and angle-difference pairs, found by hashing (presentation-ready M, F)
             from ..algebra.trig import trig_reduce_groups
 
-            out = {k: trig_reduce_groups(g) for k, g in out.items()}
+            out = {
+                k: [_terms.product_group(d, c) for d, c in trig_reduce_groups([(g.dep, g.coeff) for g in groups])]
+                for k, groups in out.items()
+            }
         return out
 
     @staticmethod
-    def _sum(groups: _terms.Groups) -> sp.Expr:
-        return sp.Add(*(c * d for d, c in groups))
+    def _sum(groups: _terms.Groups, scale: sp.Expr = sp.S.One) -> sp.Expr:
+        return sp.Add(*(scale * g.coeff * g.dep for g in groups))
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:
@@ -346,9 +347,9 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
             if len(key) == 2:
                 i, j = key
                 if self._simplify:  # common factors of each coefficient taken out: l1*(l2*m3 + lc2*m2)*cos(...)
-                    groups = [(d, _common_factor(c)) for d, c in groups]
+                    groups = [_terms.product_group(g.dep, _common_factor(g.coeff)) for g in groups]
                 if i == j:  # T holds m_ii q_i'^2 / 2: double each constant before it multiplies its factor
-                    M[i, i] = self._sum([(d, 2 * c) for d, c in groups])
+                    M[i, i] = self._sum(groups, sp.S(2))
                 else:
                     M[i, j] = M[j, i] = self._sum(groups)
         return M
@@ -363,29 +364,31 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         qt = [*q, t]
         rates = [*qd, sp.S.One]
         pieces: list[list[sp.Expr]] = [[] for _ in range(n)]
+        minus, minus2 = sp.S.NegativeOne, sp.Integer(-2)
         for key, groups in self._parts.items():
             grads = _terms.grouped_gradient(groups, qt)
-            mono = sp.Mul(*(qd[i] for i in key))
+            sums = [sp.Add(*g) if g else None for g in grads]
+            mono = [qd[i] for i in key]
             # dT/dq_k: the coefficient's gradient times the velocity monomial.
             for k in range(n):
-                if grads[k]:
-                    pieces[k].append(sp.Add(*grads[k]) * mono)
+                if sums[k] is not None:
+                    pieces[k].append(sp.Mul(sums[k], *mono))
             # d/dt of dT/dq'_i along the motion (accelerations excluded).
-            rate = sp.Add(*(sp.Add(*g) * r for g, r in zip(grads, rates, strict=True) if g))
+            rate = sp.Add(*(sp.Mul(g, r) for g, r in zip(sums, rates, strict=True) if g is not None))
             if rate == 0:
                 continue
             if len(key) == 1:
-                pieces[key[0]].append(-rate)
+                pieces[key[0]].append(sp.Mul(minus, rate))
             elif len(key) == 2:
                 i, j = key
                 if i == j:
-                    pieces[i].append(-2 * rate * qd[i])
+                    pieces[i].append(sp.Mul(minus2, rate, qd[i]))
                 else:
-                    pieces[i].append(-rate * qd[j])
-                    pieces[j].append(-rate * qd[i])
+                    pieces[i].append(sp.Mul(minus, rate, qd[j]))
+                    pieces[j].append(sp.Mul(minus, rate, qd[i]))
         dV = _terms.grouped_gradient(self._potential_groups, q)
         for k in range(n):
-            pieces[k].extend(-x for x in dV[k])
+            pieces[k].extend(sp.Mul(minus, x) for x in dV[k])
             if self._R != 0:
                 pieces[k].append(-self._R.diff(qd[k]))
             pieces[k].append(self._Q[k])

@@ -14,12 +14,12 @@ from ..symbols import dot, t
 
 __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "n_link_pendulum_linearization", "pendulum_symbols"]
 
-#: Largest chain for the full symbolic model.  Building the Lagrangian system costs about 0.7 s at n = 20, 8 s at
-#: n = 40 and 17 s at n = 50 (growth about n**3.6; measured on a loaded 2-core machine), so n = 200 would take
-#: roughly 45 minutes before a single equation is used.
+#: Largest chain for the full symbolic model.  Deriving the equations (model, mass matrix and forcing) costs about
+#: 0.5 s of CPU at n = 20, 2.2 s at n = 40 and 3.7 s at n = 50 (growth about n**2.2); the symbolic model of a very
+#: long chain is still large (its forcing has O(n**2) terms per equation), so longer chains are refused unless asked.
 MAX_SYMBOLIC_LINKS = 40
-_COST_AT_MAX_S = 8.0
-_COST_EXPONENT = 3.6
+_COST_AT_MAX_S = 2.2
+_COST_EXPONENT = 2.2
 
 
 def _check_chain_arguments(n, links, inverted, pivot, *, max_links=None):
@@ -33,7 +33,7 @@ def _check_chain_arguments(n, links, inverted, pivot, *, max_links=None):
             estimate = _COST_AT_MAX_S * (n / MAX_SYMBOLIC_LINKS) ** _COST_EXPONENT
             raise ParameterError(
                 f"n_link_pendulum(n={n}) is beyond the supported size n <= {max_links}: building the symbolic "
-                f"model costs about {_COST_AT_MAX_S:.0f} s at n = {MAX_SYMBOLIC_LINKS} and grows like "
+                f"model costs about {_COST_AT_MAX_S:.1f} s of CPU at n = {MAX_SYMBOLIC_LINKS} and grows like "
                 f"n**{_COST_EXPONENT} (measured), so n = {n} would take about {estimate:.0f} s. For small "
                 f"oscillations of a long chain use n_link_pendulum_linearization({n}, ...) (closed-form M and K, "
                 "built in O(n**2)); for large motions integrate a shorter chain's compiled equations, or pass "
@@ -92,8 +92,9 @@ def n_link_pendulum(
     Parameters
     ----------
     n : int
-        Number of links, numbered from the pivot (1 <= n <= 40; the symbolic model's cost grows like n**3.6,
-        about 8 s at n = 40: for longer chains use :func:`n_link_pendulum_linearization`).
+        Number of links, numbered from the pivot (1 <= n <= 40; deriving the equations costs about n**2.2,
+        about 2 s of CPU at n = 40: for small oscillations of longer chains use
+        :func:`n_link_pendulum_linearization`).
     links : {"point", "rigid"}
         ``"point"``: massless link ``i`` of length ``l_i`` with a point mass ``m_i`` at its end.
         ``"rigid"``: physical link with mass ``m_i``, hinge-to-hinge length ``l_i``, distance ``lc_i``
@@ -105,7 +106,7 @@ def n_link_pendulum(
         ``"vertical"``: the pivot moves as ``y = a*cos(p*t)`` (a rheonomic system).
     max_links : int or None
         Refuse chains longer than this up front (default 40) with the estimated cost; ``None`` builds any
-        length (minutes from n of about 60 on).
+        length (about 30 s of CPU at n = 130).
 
     Returns
     -------
@@ -140,19 +141,20 @@ def n_link_pendulum(
     y0 = s["a"] * sp.cos(s["p"] * t) if pivot == "vertical" else sp.S.Zero
     y0_dot = y0.diff(t)
 
-    T = sp.S.Zero
-    V = sp.S.Zero
+    # Sums are built in one sp.Add each (adding term by term re-sorts a growing sum: O(n**2) work per energy).
+    cos, sin = [sp.cos(p) for p in phi], [sp.sin(p) for p in phi]
+    T_terms, V_terms = [], []
     for k in range(n):
         # Position of the body's mass center: hinges 0..k-1 plus the distance along link k.
         arm = [l[i] for i in range(k)] + [l[k] if links == "point" else lc[k]]
-        y = y0 + up * sum(arm[i] * sp.cos(phi[i]) for i in range(k + 1))
-        xd = sum(arm[i] * sp.cos(phi[i]) * dot(phi[i]) for i in range(k + 1))
-        yd = y0_dot - up * sum(arm[i] * sp.sin(phi[i]) * dot(phi[i]) for i in range(k + 1))
-        T += m[k] * (xd**2 + yd**2) / 2
+        y = sp.Add(y0, *(up * arm[i] * cos[i] for i in range(k + 1)))
+        xd = sp.Add(*(arm[i] * cos[i] * dot(phi[i]) for i in range(k + 1)))
+        yd = sp.Add(y0_dot, *(-up * arm[i] * sin[i] * dot(phi[i]) for i in range(k + 1)))
+        T_terms.append(m[k] * (xd**2 + yd**2) / 2)
         if links == "rigid":
-            T += inertia[k] * dot(phi[k]) ** 2 / 2
-        V += m[k] * g * y
-    system = LagrangianSystem(T, V, list(phi))
+            T_terms.append(inertia[k] * dot(phi[k]) ** 2 / 2)
+        V_terms.append(m[k] * g * y)
+    system = LagrangianSystem(sp.Add(*T_terms), sp.Add(*V_terms), list(phi))
     system.geometry = _chain_geometry(n, links, up, y0, s)
     return system
 
@@ -199,7 +201,7 @@ def n_link_pendulum_linearization(
 
     with ``s = 1`` hanging and ``s = -1`` inverted (``a = 0`` for a fixed pivot); the terms ``I_i`` are absent for
     point links.  The result equals ``n_link_pendulum(n, ...).linearize()`` (same symbols), but costs O(n**2)
-    instead of the full model's roughly n**3.6.
+    without forming the full nonlinear model.
 
     Parameters
     ----------

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ctypes
 import keyword
+import os
 from typing import Any
 
 import numpy as np
@@ -20,7 +21,9 @@ _C_KEYWORDS = set(
     "_Bool _Complex _Imaginary".split()
 )
 _C_RESERVED = set(
-    "a out count k i INFINITY NAN HUGE_VAL isfinite isnan isinf fabs sqrt cbrt pow exp exp2 "
+    "a out count k i INFINITY NAN HUGE_VAL HUGE_VALF HUGE_VALL isfinite isnan isinf isnormal signbit fpclassify "
+    "isgreater isgreaterequal isless islessequal islessgreater isunordered math_errhandling "
+    "fabs sqrt cbrt pow exp exp2 "
     "expm1 log log2 log10 log1p sin cos tan asin acos atan atan2 sinh cosh tanh asinh acosh atanh hypot floor ceil "
     "fmin fmax fmod tgamma lgamma erf erfc j0 j1 jn y0 y1 yn round trunc copysign main".split()
 )
@@ -46,17 +49,47 @@ def c_names(python_names: list[str], reserved: frozenset[str] = frozenset()) -> 
     """C identifiers for the arguments: the Python name unless it collides with C or ``math.h``."""
     out: list[str] = []
     for i, n in enumerate(python_names):
-        ok = n.isidentifier() and n.isascii() and not keyword.iskeyword(n)
+        ok = n.isidentifier() and n.isascii() and not keyword.iskeyword(n) and not n.startswith("_")
         ok = (
             ok
             and n not in _C_KEYWORDS
             and n not in _C_RESERVED
             and n not in reserved
             and n not in out
-            and not n.startswith("M_")
+            and not n.startswith(("M_", "FP_", "MATH_", "symosc"))
         )
         out.append(n if ok else f"_a{i}")
     return out
+
+
+class SafeC99Printer(C99CodePrinter):
+    """SymPy's C99 printer with integers and rationals of 2**53 or more printed as correctly rounded doubles
+    (a C integer literal of 2**64 or more wraps around or is refused; ``HUGE_VAL`` beyond the double range), and
+    ``loggamma`` and ``Mod`` through :data:`C_HELPERS`."""
+
+    def _print_loggamma(self, expr: sp.Expr) -> str:
+        return f"symosc_loggamma({self._print(expr.args[0])})"
+
+    def _print_Mod(self, expr: sp.Expr) -> str:
+        return f"symosc_mod({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+
+    def _print_Integer(self, expr: sp.Integer) -> str:
+        return _big_literal(expr) or super()._print_Integer(expr)
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        return _big_literal(expr) or super()._print_Rational(expr)
+
+
+def _big_literal(expr: sp.Rational) -> str | None:
+    if abs(expr.p) < 2**53 and expr.q < 2**53:
+        return None
+    from ._emit import double_literal, number_value
+
+    value = number_value(expr)
+    text = double_literal(value)
+    if text is None:
+        return "HUGE_VAL" if value > 0 else "(-HUGE_VAL)"
+    return f"({text})" if text.startswith("-") else text
 
 
 def printed(printer: C99CodePrinter, expr: sp.Expr) -> str:
@@ -81,38 +114,141 @@ _PRINTABLE = {
 }  # fmt: skip
 
 
+#: Replacements of C library functions whose meaning differs from SymPy's (``lgamma`` is ``log|Gamma|``, ``fmod``
+#: truncates where SymPy's ``Mod`` floors), and ``arg`` of a real number; included in every generated unit.
+C_HELPERS = """\
+static inline double symosc_loggamma(double x) { return x > 0.0 ? lgamma(x) : (x == 0.0 ? HUGE_VAL : NAN); }
+static inline double symosc_arg(double x) { return x > 0.0 ? 0.0 : (x < 0.0 ? 3.141592653589793 : NAN); }
+static inline double symosc_mod(double x, double y)
+{
+    const double r = fmod(x, y);
+    return (r != 0.0 && ((r < 0.0) != (y < 0.0))) ? r + y : r;
+}
+"""
+
+
 def header_lines(used: str) -> list[str]:
-    lines = ["#include <math.h>", ""]
+    lines = ["#include <math.h>", C_HELPERS]
     for name, value in MATH_MACROS.items():
         if name in used:
             lines.append(f"#ifndef {name}\n#define {name} {value}\n#endif")
     return lines
 
 
-def function_source(
-    fname: str, arg_syms: list[sp.Symbol], arg_names: list[str], replacements, reduced, shape
-) -> tuple[str, list[str]]:
+#: Characters of expression text per function of a long straight-line kernel.  GCC's instruction combiner and
+#: register allocator grow faster than linearly with a function's size; splitting keeps the build time linear.
+SEGMENT_TEXT = 1200
+#: A kernel is spread over several translation units (compiled in parallel, one per core) from this much
+#: expression text per unit on.
+UNIT_TEXT = 8000
+
+
+def kernel_units(
+    name: str, inputs: list[tuple[str, list[str]]], statements: list, outputs: str = "out"
+) -> tuple[list[str], str]:
+    """C99 definitions of ``void name(const double *<input>, ..., double *<outputs>)`` from straight-line
+    ``statements`` (see :class:`symosc.numeric._emit.Statement`).
+
+    ``inputs`` lists the input arrays and the variable name of each element.  A long kernel is cut into parts of
+    :data:`SEGMENT_TEXT` characters of code (values passed between parts go through a stack array ``_w``), spread
+    evenly over as many translation units as there are cores (at least :data:`UNIT_TEXT` characters each).
+    Returns the units (the first holds ``name``; it has no ``#include``, the caller's source provides it) and the
+    prototype of ``name``.
+    """
+    where = {var: (arr, i) for arr, names in inputs for i, var in enumerate(names)}
+    params = ", ".join([f"const double *restrict {arr}" for arr, _ in inputs] + [f"double *restrict {outputs}"])
+    proto = f"void {name}({params})"
+
+    def loads(seg: list, local: set[str], cross: dict[str, int]) -> list[str]:
+        lines, seen = [], set()
+        for st in seg:
+            for u in st.uses:
+                if u in seen or u in local:
+                    continue
+                seen.add(u)
+                if u in where:
+                    arr, i = where[u]
+                    lines.append(f"    const double {u} = {arr}[{i}];")
+                else:
+                    lines.append(f"    const double {u} = _w[{cross[u]}];")
+        return lines
+
+    def body(seg: list, cross: dict[str, int]) -> list[str]:
+        lines = []
+        for st in seg:
+            if st.temp is None:
+                lines.append(f"    {st.target} = {st.text};")
+            else:
+                lines.append(f"    const double {st.temp} = {st.text};")
+                if st.temp in cross:
+                    lines.append(f"    _w[{cross[st.temp]}] = {st.temp};")
+        return lines
+
+    if sum(len(st.text) for st in statements) <= SEGMENT_TEXT:
+        local = {st.temp for st in statements if st.temp}
+        lines = [f"{proto}", "{", *loads(statements, local, {}), *body(statements, {}), "}", ""]
+        if not statements:
+            lines[2:2] = [f"    (void){arr};" for arr, _ in inputs] + [f"    (void){outputs};"]
+        return ["\n".join(lines)], proto
+    segs: list[list] = [[]]
+    size = 0
+    for st in statements:
+        if size > SEGMENT_TEXT:
+            segs.append([])
+            size = 0
+        segs[-1].append(st)
+        size += len(st.text) + 20
+    defined = {st.temp: k for k, seg in enumerate(segs) for st in seg if st.temp}
+    cross: dict[str, int] = {}
+    for k, seg in enumerate(segs):
+        for st in seg:
+            for u in st.uses:
+                if u not in where and defined[u] != k and u not in cross:
+                    cross[u] = len(cross)
+    part_params = ", ".join(
+        [f"const double *restrict {arr}" for arr, _ in inputs] + [f"double *restrict {outputs}", "double *restrict _w"]
+    )
+    parts = []
+    for k, seg in enumerate(segs):
+        local = {st.temp for st in seg if st.temp}
+        lines = [f"void {name}_part{k}({part_params})", "{", *loads(seg, local, cross), *body(seg, cross), "}", ""]
+        parts.append("\n".join(lines))
+    total = sum(len(st.text) for st in statements)
+    count = max(1, min(os.cpu_count() or 1, total // UNIT_TEXT, len(parts)))
+    groups = [parts[len(parts) * u // count : len(parts) * (u + 1) // count] for u in range(count)]
+    call_args = ", ".join([arr for arr, _ in inputs] + [outputs, "_w"])
+    main = [f"void {name}_part{k}({part_params});" for k in range(len(parts))]
+    main += ["", *groups[0], proto, "{", f"    double _w[{max(len(cross), 1)}];"]
+    main += [f"    {name}_part{k}({call_args});" for k in range(len(parts))]
+    main += ["}", ""]
+    return ["\n".join(main), *(f"#include <math.h>\n{C_HELPERS}\n" + "\n".join(g) for g in groups[1:])], proto
+
+
+def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str], items: list[sp.Expr], shape) -> str:
     """Complete C99 source of ``fname`` (scalar, checked scalar and batched entry points)."""
-    printer = C99CodePrinter()
+    from ._dag import Graph
+    from ._emit import CPrinter, comment_text
+
+    for e in items:
+        if e.has(sp.I) or any(a.is_real is False for a in e.atoms(sp.Number)):
+            raise ParameterError(
+                f"the C backend evaluates real-valued expressions only; {e} is complex (use backend='numpy')"
+            )
     names = c_names(arg_names)
-    rename = {
-        sp.Symbol(a, **s.assumptions0): sp.Symbol(c, **s.assumptions0)
-        for s, a, c in zip(arg_syms, arg_names, names, strict=True)
-        if a != c
-    }
-    nargs, nout = len(names), len(reduced)
-    body = []
-    for i, c in enumerate(names):
-        body.append(f"    const double {c} = a[{i}];")
-    for sym, sub in replacements:
-        body.append(f"    const double {sym} = {printed(printer, sub.xreplace(rename))};")
-    for i, e in enumerate(reduced):
-        body.append(f"    out[{i}] = {printed(printer, e.xreplace(rename))};")
-    if not names:
-        body.insert(0, "    (void)a;")
-    text = "\n".join(body)
+    syms = [sp.Symbol(a, **s.assumptions0) for s, a in zip(arg_syms, arg_names, strict=True)]
+    to_c = {s: sp.Symbol(c, **s.assumptions0) for s, c in zip(syms, names, strict=True)}
+    graph = Graph(syms)
+    try:
+        nodes = [graph.node(e) for e in items]
+    except ValueError as exc:
+        raise ParameterError(str(exc)) from exc
+    printer = SafeC99Printer()
+    cprinter = CPrinter(graph, names, lambda e: printed(printer, e.xreplace(to_c)))
+    statements = cprinter.statements(nodes, [f"out[{i}]" for i in range(len(nodes))])
+    units, _ = kernel_units(f"{fname}_body", [("a", names)], statements)
+    nargs, nout = len(names), len(items)
     what = "a scalar" if shape is None else f"an array of shape {shape}, flattened in row-major (C) order"
-    argument_list = ", ".join(f"a[{i}] = {s.name}" for i, s in enumerate(arg_syms)) or "none"
+    argument_list = ", ".join(f"a[{i}] = {comment_text(s.name)}" for i, s in enumerate(arg_syms)) or "none"
     checks = [f"    if (!{c_condition(s, f'a[{i}]')}) return {i + 1};" for i, s in enumerate(arg_syms)]
     lines = [
         "/* Generated by symosc.numeric.compile (backend 'c').",
@@ -122,14 +258,10 @@ def function_source(
         f"   {fname}_checked(a, out)    also checks the arguments (finite, declared signs): returns i+1 for a bad",
         "                              argument a[i], -1 when a result is not finite, 0 otherwise.",
         f"   {fname}_batch(count, a, out)  evaluates count points: a is count x {nargs}, out is count x {nout}.",
-        f"   Build: cc -O2 -std=c99 -fPIC -shared -o {fname}.so {fname}.c -lm */",
-        *header_lines(text),
-        "",
-        f"static void {fname}_body(const double *restrict a, double *restrict out)",
-        "{",
-        text,
-        "}",
-        "",
+        f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {fname}.so {fname}.c -lm */",
+        "#include <math.h>",
+        C_HELPERS,
+        units[0],
         f"int {fname}(const double *a, double *out)",
         "{",
         f"    {fname}_body(a, out);",
@@ -152,14 +284,20 @@ def function_source(
         "}",
         "",
     ]
-    return "\n".join(lines), names
+    return join_units(["\n".join(lines), *units[1:]])
+
+
+def join_units(units: list[str]) -> str:
+    """One source text of several translation units, separated by :data:`symosc.numeric._build.UNIT_MARKER`
+    (:func:`symosc.numeric._build.load` compiles the units in parallel; concatenated they form one valid C file)."""
+    return f"\n{_build.UNIT_MARKER}\n".join(units)
 
 
 class CCaller:
     """Calls the entry points of a built library; holds nothing that cannot be rebuilt from the source."""
 
     def __init__(self, source: str, fname: str, nargs: int, nout: int, shape) -> None:
-        lib = _build.load(source)
+        lib = _build.load(source, _build.GENERATED_FLAGS)
         self.lib = lib
         self.nargs, self.nout, self.shape = nargs, nout, shape
         self.scalar = getattr(lib, fname)

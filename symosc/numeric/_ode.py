@@ -1,94 +1,303 @@
-"""Right-hand side and Jacobian of ``M(q, t) q'' = F(q, q', t)`` in first-order form, for NumPy and C.
+"""Right-hand side and Jacobian of ``M(q, t) q'' = F(q, q', t)`` in first-order form, for C and NumPy.
 
 The state is ``y = (q, u)`` with ``u = q'``; ``f(t, y) = (u, M^{-1} F)`` and its Jacobian is
-``[[0, I], [M^{-1} (dF/dy - (dM/dy) M^{-1} F)]]``.  The C backend evaluates M and F (and the derivatives) from
-CSE'd expressions and solves with Gaussian elimination with partial pivoting in the same call.
+``[[0, I], [M^{-1} (dF/dy - (dM/dy) M^{-1} F)]]``.
+
+:class:`Program` puts M (its upper triangle when M is symmetric), F and, for the Jacobian, every structurally
+non-zero entry of dF/dy and dM/dy into one :class:`~symosc.numeric._dag.Graph`: the derivatives are taken on the
+graph (forward mode, only nodes that depend on the variable), so they share their subexpressions with M and F and
+with each other.  Everything that depends on the parameters alone (``l1*l2*(m2 + m3)``) is computed once, when
+the parameter values are bound (``setup``); a call evaluates only what depends on t and y.  The C code solves
+``M q'' = F`` by Gaussian elimination with partial pivoting in the same call.
 """
 
 from __future__ import annotations
 
+import builtins
 import ctypes
 from typing import Any
 
 import numpy as np
 import sympy as sp
 
-from ..errors import ModelError
+from ..errors import ModelError, ParameterError
 from . import _build, _c
-from ._core import _argument_names, compile
+from ._core import _argument_names
+from ._dag import CONST, Graph, reachable
+from ._emit import CPrinter, PythonPrinter, comment_text
+from ._special import helper_source
 
 
-def _pieces(M: sp.Matrix, F: sp.Matrix, y: list[sp.Symbol], jacobian: bool):
-    """Flat expression list [M, F, (dF/dy, nonzero dM/dy)] and the index list of the nonzero dM/dy_j entries."""
-    n = M.shape[0]
-    items = list(M) + list(F)
-    dm_index: list[tuple[int, int, int]] = []
-    if jacobian:
-        items += [sp.diff(F[i], v) for i in range(n) for v in y]
-        for j, v in enumerate(y):
-            for r in range(n):
-                for c in range(n):
-                    d = sp.diff(M[r, c], v)
-                    if d != 0:
-                        dm_index.append((j, r, c))
-                        items.append(d)
-    return items, dm_index
+class Program:
+    """M, F (and the derivatives) of a first-order system as one graph, with the outputs' layout.
 
+    Attributes: ``n``; ``pairs`` the stored (r, c) entries of M (``r <= c`` when ``symmetric``); ``outputs`` the
+    node of each output, in the order M entries, F, dF entries (``df`` = (i, j) pairs), dM entries (``dm`` =
+    (entry index into ``pairs``, j) pairs); ``hoisted`` the parameter-only nodes computed at set-up.
+    """
 
-def numpy_parts(M, F, t, q, u, params, jacobian: bool) -> tuple[Any, list]:
-    """The compiled NumPy function of the flat pieces, and the dM/dy index list (see :func:`_pieces`)."""
-    y = [*q, *u]
-    items, dm_index = _pieces(M, F, y, jacobian)
-    name = "first_order_jacobian" if jacobian else "first_order_rhs"
-    return compile(items, [t, *y, *params], check=False, name=name), dm_index
-
-
-class NumpyFirstOrder:
-    """f(t, y) and df/dy with NumPy: compiled M, F (and derivatives), LAPACK solves; batched over y's columns."""
-
-    def __init__(self, parts: tuple[Any, list], n: int, values: list[float]) -> None:
-        self.fn, self.dm_index = parts
-        self.n, self.nm = n, n * n
-        self.raw = self.fn.raw
-        self.params = list(values)
-
-    def _eval(self, t: float, y: np.ndarray) -> np.ndarray:
-        return self.raw(float(t), *y, *self.params)
-
-    def rhs(self, t: float, y: np.ndarray) -> np.ndarray:
-        n, nm = self.n, self.nm
-        vals = self._eval(t, y)
-        if y.ndim == 1:
-            M, F = vals[:nm].reshape(n, n), vals[nm : nm + n]
+    def __init__(self, M: sp.Matrix, F: sp.Matrix, t, q, u, params, jacobian: bool) -> None:
+        n = M.shape[0]
+        self.n, self.jacobian = n, jacobian
+        self.state = [*q, *u]
+        self.params = list(params)
+        args = [t, *self.state, *self.params]
+        self.symbols = args
+        varying = (1 << (1 + 2 * n)) - 1  # t and the state
+        g = self.graph = Graph(args, varying)
+        self.symmetric = all(M[i, j] == M[j, i] for i in range(n) for j in range(i + 1, n))
+        self.pairs = [(i, j) for i in range(n) for j in range(i if self.symmetric else 0, n)]
+        try:
+            m_nodes = [g.node(M[i, j]) for i, j in self.pairs]
+            f_nodes = [g.node(F[i]) for i in range(n)]
+        except ValueError as exc:
+            raise ParameterError(f"the equations depend on symbols that are not parameters: {exc}") from exc
+        self.outputs = m_nodes + f_nodes
+        self.df: list[tuple[int, int]] = []
+        self.dm: list[tuple[int, int]] = []
+        if jacobian:
             try:
-                qdd = np.linalg.solve(M, F)
-            except np.linalg.LinAlgError as exc:
-                raise ModelError(f"mass matrix is singular at t={t}, state={y.tolist()}") from exc
-            return np.concatenate([y[n:], qdd])
-        M, F = vals[:, :nm].reshape(-1, n, n), vals[:, nm : nm + n]
-        try:
-            qdd = np.linalg.solve(M, F[..., None])[..., 0]
-        except np.linalg.LinAlgError as exc:
-            raise ModelError(f"mass matrix is singular at t={t} for one of the states") from exc
-        return np.concatenate([y[n:], qdd.T])
+                for i, node in enumerate(f_nodes):
+                    for j in range(2 * n):
+                        d = g.derivative(node, 1 + j)
+                        if d != g.zero:
+                            self.df.append((i, j))
+                            self.outputs.append(d)
+                for k, node in enumerate(m_nodes):
+                    for j in range(2 * n):
+                        d = g.derivative(node, 1 + j)
+                        if d != g.zero:
+                            self.dm.append((k, j))
+                            self.outputs.append(d)
+            except NotImplementedError as exc:
+                raise ParameterError(f"cannot differentiate the equations of motion: {exc}") from exc
+        self.hoisted = self._parameter_only()
 
-    def jacobian(self, t: float, y: np.ndarray) -> np.ndarray:
-        n, nm = self.n, self.nm
-        vals = self._eval(t, y)
-        M, F = vals[:nm].reshape(n, n), vals[nm : nm + n]
-        dF = vals[nm + n : nm + n + 2 * n * n].reshape(n, 2 * n)
-        dM = np.zeros((2 * n, n, n))
-        for (j, r, c), v in zip(self.dm_index, vals[nm + n + 2 * n * n :], strict=True):
-            dM[j, r, c] = v
-        try:
-            qdd = np.linalg.solve(M, F)
-            X = np.linalg.solve(M, dF - np.einsum("jrc,c->rj", dM, qdd))
-        except np.linalg.LinAlgError as exc:
-            raise ModelError(f"mass matrix is singular at t={t}, state={y.tolist()}") from exc
-        J = np.zeros((2 * n, 2 * n))
-        J[:n, n:] = np.eye(n)
-        J[n:] = X
-        return J
+    def _parameter_only(self) -> list[int]:
+        """Nodes that depend on the parameters only (parameters themselves included) and are needed by a node that
+        varies, or are outputs."""
+        g = self.graph
+        varying = g.varying
+        order, _ = reachable(g, self.outputs)
+        needed = set()
+        for k in order:
+            if g.deps[k] & varying:
+                for c in g._children(k):
+                    needed.add(c)
+        needed.update(self.outputs)
+        return [k for k in sorted(needed) if not g.deps[k] & varying and g.kind[k] != CONST]
+
+    # ------------------------------------------------------------------ C
+    def c_source(self, name: str = "symosc_ode") -> str:
+        """C99 source: ``{name}_setup``, ``{name}_rhs``, ``{name}_rhs_batch`` or ``{name}_jac`` (see the header)."""
+        g, n = self.graph, self.n
+        py = _argument_names(self.symbols)
+        names = _c.c_names(py, _RESERVED)
+        to_c = {s: sp.Symbol(c, **s.assumptions0) for s, c in zip(self.symbols, names, strict=True)}
+        printer = _c.SafeC99Printer()
+        fallback = lambda e: _c.printed(printer, e.xreplace(to_c))  # noqa: E731
+        ny = 1 + 2 * n
+        hnames = [f"_h{j}" for j in range(len(self.hoisted))]
+        setup = CPrinter(g, names, fallback).statements(self.hoisted, [f"_H[{j}]" for j in range(len(self.hoisted))])
+        preset = dict(zip(self.hoisted, hnames, strict=True))
+        main = CPrinter(g, names, fallback).statements(
+            self.outputs, [f"_O[{i}]" for i in range(len(self.outputs))], preset=preset
+        )
+        setup_units, _ = _c.kernel_units(f"{name}_setup_kernel", [("_P", names[ny:])], setup, "_H")
+        main_units, _ = _c.kernel_units(
+            f"{name}_kernel", [("_T", names[:1]), ("_Y", names[1:ny]), ("_H", hnames)], main, "_O"
+        )
+        listing = ", ".join(comment_text(s.name) for s in self.params) or "none"
+        header = [
+            "/* Generated by symosc (FirstOrderSystem, backend 'c'): y' = f(t, y) for M(q, t) q'' = F(q, q', t).",
+            f"   State y = ({', '.join(comment_text(s.name) for s in self.state)}); parameters p = ({listing}).",
+            f"   int {name}_setup(const double *p, double *h)   h (length {name}_hoisted) = values that depend on p",
+            "       alone; call once per parameter set, then pass h to:",
+            f"   int {name}_rhs(double t, const double *y, const double *h, double *dy)   dy = f(t, y), 2n = {2 * n}",
+            f"   int {name}_rhs_batch(long count, double t, const double *Y, const double *h, double *dY)",
+            "       Y and dY are count x 2n, row-major (one state per row).",
+            f"   int {name}_jac(double t, const double *y, const double *h, double *J)       J = df/dy, 2n x 2n",
+            "   Each returns 0, or 1 (+ row index for the batch) when the mass matrix is singular.",
+            f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {name}.so {name}.c -lm */",
+            "#include <math.h>",
+            _c.C_HELPERS,
+            f"const int {name}_hoisted = {len(self.hoisted)};",
+            "",
+            _SOLVE,
+            setup_units[0],
+            main_units[0],
+            f"int {name}_setup(const double *p, double *h)",
+            "{",
+            f"    {name}_setup_kernel(p, h);",
+            "    return 0;",
+            "}",
+            "",
+            *self._c_unpack(name),
+            *(self._c_jacobian(name) if self.jacobian else self._c_rhs(name)),
+        ]
+        return _c.join_units(["\n".join(header), *setup_units[1:], *main_units[1:]])
+
+    def _c_unpack(self, name: str) -> list[str]:
+        """``{name}_eval``: the kernel, then M (full, row-major) and F unpacked from its outputs."""
+        n, pairs = self.n, self.pairs
+        rows = ", ".join(str(r) for r, _ in pairs)
+        cols = ", ".join(str(c) for _, c in pairs)
+        mirror = [f"        _M[c * {n} + r] = v;"] if self.symmetric else []
+        return [
+            f"static const int {name}_mr[{len(pairs)}] = {{{rows}}};",
+            f"static const int {name}_mc[{len(pairs)}] = {{{cols}}};",
+            "",
+            f"static void {name}_eval(double t, const double *y, const double *h, double *_O, double *_M, double *_F)",
+            "{",
+            f"    {name}_kernel(&t, y, h, _O);",
+            f"    for (int k = 0; k < {len(pairs)}; k++) {{",
+            f"        const int r = {name}_mr[k], c = {name}_mc[k];",
+            "        const double v = _O[k];",
+            f"        _M[r * {n} + c] = v;",
+            *mirror,
+            "    }",
+            f"    for (int i = 0; i < {n}; i++) _F[i] = _O[{len(pairs)} + i];",
+            "}",
+            "",
+        ]
+
+    def _c_rhs(self, name: str) -> list[str]:
+        n = self.n
+        return [
+            f"int {name}_rhs(double _t, const double *_y, const double *_h, double *_dy)",
+            "{",
+            f"    double _O[{len(self.outputs)}], _M[{n * n}], _F[{n}];",
+            f"    {name}_eval(_t, _y, _h, _O, _M, _F);",
+            f"    for (int i = 0; i < {n}; i++) _dy[i] = _y[{n} + i];",
+            f"    if (symosc_solve({n}, _M, _F, 1)) return 1;",
+            f"    for (int i = 0; i < {n}; i++) _dy[{n} + i] = _F[i];",
+            "    return 0;",
+            "}",
+            "",
+            f"int {name}_rhs_batch(long count, double _t, const double *_Y, const double *_h, double *_dY)",
+            "{",
+            "    for (long k = 0; k < count; k++)",
+            f"        if ({name}_rhs(_t, _Y + k * {2 * n}, _h, _dY + k * {2 * n})) return (int)(1 + k);",
+            "    return 0;",
+            "}",
+            "",
+        ]
+
+    def _c_jacobian(self, name: str) -> list[str]:
+        n, n2 = self.n, 2 * self.n
+        base = len(self.pairs) + n
+        df_at = ", ".join(str(i * n2 + j) for i, j in self.df) or "0"
+        dm_r = ", ".join(str(self.pairs[k][0]) for k, _ in self.dm) or "0"
+        dm_c = ", ".join(str(self.pairs[k][1]) for k, _ in self.dm) or "0"
+        dm_j = ", ".join(str(j) for _, j in self.dm) or "0"
+        mirror = (
+            [f"        if (r != c) _R[c * {n2} + j] -= v * _F[r];"] if self.symmetric else []
+        )  # dM[c, r] = dM[r, c]
+        return [
+            f"static const int {name}_df[{max(len(self.df), 1)}] = {{{df_at}}};",
+            f"static const int {name}_dmr[{max(len(self.dm), 1)}] = {{{dm_r}}};",
+            f"static const int {name}_dmc[{max(len(self.dm), 1)}] = {{{dm_c}}};",
+            f"static const int {name}_dmj[{max(len(self.dm), 1)}] = {{{dm_j}}};",
+            "",
+            f"int {name}_jac(double _t, const double *_y, const double *_h, double *_J)",
+            "{",
+            f"    double _O[{len(self.outputs)}], _M[{n * n}], _M2[{n * n}], _F[{n}], _R[{n * n2}];",
+            f"    {name}_eval(_t, _y, _h, _O, _M, _F);",
+            f"    for (int i = 0; i < {n * n}; i++) _M2[i] = _M[i];",
+            f"    if (symosc_solve({n}, _M2, _F, 1)) return 1;  /* _F = q'' */",
+            f"    for (int i = 0; i < {n * n2}; i++) _R[i] = 0.0;",
+            f"    for (int k = 0; k < {len(self.df)}; k++) _R[{name}_df[k]] = _O[{base} + k];",
+            f"    for (int k = 0; k < {len(self.dm)}; k++) {{  /* _R -= (dM/dy_j) q'' */",
+            f"        const int r = {name}_dmr[k], c = {name}_dmc[k], j = {name}_dmj[k];",
+            f"        const double v = _O[{base + len(self.df)} + k];",
+            f"        _R[r * {n2} + j] -= v * _F[c];",
+            *mirror,
+            "    }",
+            f"    if (symosc_solve({n}, _M, _R, {n2})) return 1;",
+            f"    for (int i = 0; i < {n2 * n2}; i++) _J[i] = 0.0;",
+            f"    for (int i = 0; i < {n}; i++) _J[i * {n2} + {n} + i] = 1.0;",
+            f"    for (int i = 0; i < {n * n2}; i++) _J[{n * n2} + i] = _R[i];",
+            "    return 0;",
+            "}",
+            "",
+        ]
+
+    # ------------------------------------------------------------------ Python
+    def python_functions(self) -> dict[str, Any]:
+        """``setup(p)``, ``scalar(t, y, h)`` (floats, ``math``) and ``array(t, Y, h)`` (NumPy rows) as functions,
+        and ``source``."""
+        from ._python import SafeNumPyPrinter, ScalarPrinter
+
+        g = self.graph
+        names = _argument_names(self.symbols)
+        to_py = {s: sp.Symbol(c, **s.assumptions0) for s, c in zip(self.symbols, names, strict=True)}
+        numpy_printer = SafeNumPyPrinter()
+        math_printer = ScalarPrinter(SafeNumPyPrinter())
+        ny = 1 + 2 * self.n
+        hnames = [f"_h{j}" for j in range(len(self.hoisted))]
+        preset = dict(zip(self.hoisted, hnames, strict=True))
+        nout = len(self.outputs)
+
+        helpers: set[str] = set()
+
+        def body(module: str, printer: Any, outputs, targets, preset) -> list[str]:
+            fallback = lambda e: _printed(printer, e.xreplace(to_py))  # noqa: E731
+            emitter = PythonPrinter(g, names, module, fallback)
+            sts = emitter.statements(outputs, targets, preset=preset)
+            helpers.update(emitter.helpers)
+            return [f"    {st.target} = {st.text}" for st in sts]
+
+        def unpack(values: list[str], array: str) -> str:
+            return f"    {', '.join(values)}, = {array}" if values else ""
+
+        setup = [
+            "def setup(_P):",
+            unpack(names[ny:], "_P"),
+            f"    _H = [0.0] * {len(self.hoisted)}",
+            *body("math", math_printer, self.hoisted, [f"_H[{j}]" for j in range(len(self.hoisted))], None),
+            "    return _H",
+        ]
+        kernels = []
+        for fname, module, printer in (("scalar", "math", math_printer), ("array", "numpy", numpy_printer)):
+            kernels += [
+                f"def {fname}({names[0]}, _Y, _H):",
+                unpack(names[1:ny], "_Y"),
+                unpack(hnames, "_H"),
+                f"    _O = [0.0] * {nout}",
+                *body(module, printer, self.outputs, [f"_O[{i}]" for i in range(nout)], preset),
+                "    return _O",
+                "",
+            ]
+        modules = {"math", "numpy"} | set(numpy_printer.module_imports) | set(math_printer.module_imports)
+        modules |= set(math_printer._fallback.module_imports)
+        helpers |= numpy_printer.helpers | math_printer._fallback.helpers
+        source = "".join(f"import {m}\n" for m in sorted(modules)) + helper_source(helpers) + "\n\n"
+        source += "\n".join(line for line in setup if line) + "\n\n\n" + "\n".join(line for line in kernels if line)
+        namespace: dict[str, Any] = {"__builtins__": builtins}
+        exec(builtins.compile(source, "<symosc:first_order>", "exec"), namespace)
+        return {name: namespace[name] for name in ("setup", "scalar", "array")} | {"source": source}
+
+    # ------------------------------------------------------------------ LLVM
+    def llvm_function(self) -> dict[str, Any]:
+        """The outputs by symengine's LLVM JIT, in the interface of :meth:`python_functions` (no set-up step)."""
+        from ._core import compile
+
+        fn = compile([self.graph.expression(k) for k in self.outputs], self.symbols, backend="llvm", check=False)
+        raw = fn.raw
+
+        def scalar(t: float, y: list, h: list) -> np.ndarray:
+            return raw(t, *y, *h)
+
+        def array(t: float, rows: list, h: list) -> np.ndarray:
+            return raw(t, *rows, *h).T
+
+        return {"setup": list, "scalar": scalar, "array": array, "source": fn.source}
+
+
+def _printed(printer: Any, expr: sp.Expr) -> str:
+    from ._python import _printed as printed
+
+    return printed(printer, expr)
 
 
 _SOLVE = """\
@@ -132,111 +341,24 @@ static int symosc_solve(int n, double *A, double *B, int nrhs)
 _RESERVED = frozenset({"symosc_solve"})
 
 
-def c_first_order_source(M, F, t, q, u, params, *, jacobian: bool = False, name: str = "symosc_ode") -> str:
-    """C99 source with ``{name}_rhs`` and ``{name}_rhs_batch``, or ``{name}_jac`` (see the header comment)."""
-    n = M.shape[0]
-    y = [*q, *u]
-    syms = [t, *y, *params]
-    py_names = _argument_names(syms)
-    names = _c.c_names(py_names, _RESERVED)
-    rename = {s: sp.Symbol(c, **s.assumptions0) for s, c in zip(syms, names, strict=True)}
-    printer = _c.C99CodePrinter()
-
-    def body(items: list[sp.Expr], targets: list[str]) -> list[str]:
-        items = [e.xreplace(rename) for e in items]
-        repl, reduced = sp.cse(items, symbols=sp.numbered_symbols("_c"), optimizations=None, order="none")
-        lines = ["    const double " + f"{names[0]} = _t;"]
-        lines += [f"    const double {c} = _y[{i}];" for i, c in enumerate(names[1 : 1 + 2 * n])]
-        lines += [f"    const double {c} = _p[{i}];" for i, c in enumerate(names[1 + 2 * n :])]
-        lines += [f"    const double {s} = {_c.printed(printer, e)};" for s, e in repl]
-        lines += [f"    {tg} = {_c.printed(printer, e)};" for tg, e in zip(targets, reduced, strict=True)]
-        return lines
-
-    mf_targets = [f"_M[{i}]" for i in range(n * n)] + [f"_F[{i}]" for i in range(n)]
-    if jacobian:
-        items, dm_index = _pieces(M, F, y, True)
-        jac_targets = mf_targets + [f"_R[{i}]" for i in range(2 * n * n)]
-        jac_targets += [f"_dM[{j * n * n + r * n + c}]" for j, r, c in dm_index]
-        jac_body, rhs_body = body(items, jac_targets), []
-    else:
-        # M is symmetric for a Lagrangian system: generate the upper triangle only and mirror it in C.
-        upper = [(i, j) for i in range(n) for j in range(i, n)]
-        if all(M[i, j] == M[j, i] for i, j in upper):
-            targets = [f"_M[{i * n + j}]" for i, j in upper] + [f"_F[{i}]" for i in range(n)]
-            rhs_body = body([M[i, j] for i, j in upper] + list(F), targets)
-            rhs_body += [f"    _M[{j * n + i}] = _M[{i * n + j}];" for i, j in upper if i != j]
-        else:
-            rhs_body = body(list(M) + list(F), mf_targets)
-        jac_body = []
-    listing = ", ".join(s.name for s in params) or "none"
-    header = [
-        "/* Generated by symosc (FirstOrderSystem, backend 'c'): y' = f(t, y) for M(q, t) q'' = F(q, q', t).",
-        f"   State y = ({', '.join(s.name for s in y)}); parameters p = ({listing}).",
-        f"   int {name}_rhs(double t, const double *y, const double *p, double *dy)      dy = f(t, y), 2n = {2 * n}",
-        f"   int {name}_rhs_batch(long count, double t, const double *Y, const double *p, double *dY)",
-        "       Y and dY are count x 2n, row-major (one state per row).",
-        f"   int {name}_jac(double t, const double *y, const double *p, double *J)       J = df/dy, 2n x 2n row-major",
-        "   Each returns 0, or 1 (+ row index for the batch) when the mass matrix is singular.",
-        f"   Build: cc -O2 -std=c99 -fPIC -shared -o {name}.so {name}.c -lm */",
-    ]
-    text = "\n".join(rhs_body + jac_body)
-    rhs_src = [
-        f"int {name}_rhs(double _t, const double *_y, const double *_p, double *_dy)",
-        "{",
-        f"    double _M[{n * n}], _F[{n}];",
-        *rhs_body,
-        f"    for (int i = 0; i < {n}; i++) _dy[i] = _y[{n} + i];",
-        f"    if (symosc_solve({n}, _M, _F, 1)) return 1;",
-        f"    for (int i = 0; i < {n}; i++) _dy[{n} + i] = _F[i];",
-        "    return 0;",
-        "}",
-        "",
-        f"int {name}_rhs_batch(long count, double _t, const double *_Y, const double *_p, double *_dY)",
-        "{",
-        "    for (long k = 0; k < count; k++)",
-        f"        if ({name}_rhs(_t, _Y + k * {2 * n}, _p, _dY + k * {2 * n})) return (int)(1 + k);",
-        "    return 0;",
-        "}",
-        "",
-    ]
-    jac_src = [
-        f"int {name}_jac(double _t, const double *_y, const double *_p, double *_J)",
-        "{",
-        f"    double _M[{n * n}], _M2[{n * n}], _F[{n}], _R[{2 * n * n}], _dM[{max(2 * n * n * n, 1)}];",
-        f"    for (int i = 0; i < {max(2 * n * n * n, 1)}; i++) _dM[i] = 0.0;",
-        *jac_body,
-        f"    for (int i = 0; i < {n * n}; i++) _M2[i] = _M[i];",
-        f"    if (symosc_solve({n}, _M2, _F, 1)) return 1;",
-        f"    for (int j = 0; j < {2 * n}; j++)",
-        f"        for (int r = 0; r < {n}; r++) {{",
-        "            double s = 0.0;",
-        f"            for (int c = 0; c < {n}; c++) s += _dM[j * {n * n} + r * {n} + c] * _F[c];",
-        f"            _R[r * {2 * n} + j] -= s;",
-        "        }",
-        f"    if (symosc_solve({n}, _M, _R, {2 * n})) return 1;",
-        f"    for (int i = 0; i < {4 * n * n}; i++) _J[i] = 0.0;",
-        f"    for (int i = 0; i < {n}; i++) _J[i * {2 * n} + {n} + i] = 1.0;",
-        f"    for (int i = 0; i < {2 * n * n}; i++) _J[{2 * n * n} + i] = _R[i];",
-        "    return 0;",
-        "}",
-        "",
-    ]
-    return "\n".join([*header, *_c.header_lines(text), "", _SOLVE, *(jac_src if jacobian else rhs_src)])
-
-
 class CFirstOrder:
-    """ctypes caller of :func:`c_first_order_source`; the parameters are bound once as a C array."""
+    """ctypes caller of :meth:`Program.c_source`; the parameter-only values are computed once, at binding."""
 
-    def __init__(self, source: str, n: int, values: list[float], jacobian: bool) -> None:
+    def __init__(self, source: str, n: int, values: list[float], jacobian: bool, name: str = "symosc_ode") -> None:
         self.n = n
         self.source = source
-        lib = _build.load(self.source)
+        lib = _build.load(self.source, _build.GENERATED_FLAGS)
         self.lib = lib
-        names = ["symosc_ode_jac"] if jacobian else ["symosc_ode_rhs", "symosc_ode_rhs_batch"]
-        for attr, sym in zip(["fj"] if jacobian else ["f", "fb"], names, strict=True):
-            setattr(self, attr, getattr(lib, sym))
-            getattr(self, attr).restype = ctypes.c_int
-        self.p = (ctypes.c_double * max(len(values), 1))(*[float(v) for v in values])
+        hoisted = ctypes.c_int.in_dll(lib, f"{name}_hoisted").value
+        p = (ctypes.c_double * max(len(values), 1))(*[float(v) for v in values])
+        self.h = (ctypes.c_double * max(hoisted, 1))()
+        lib[f"{name}_setup"](p, self.h)
+        if jacobian:
+            self.fj = lib[f"{name}_jac"]
+            self.fj.restype = ctypes.c_int
+        else:
+            self.f, self.fb = lib[f"{name}_rhs"], lib[f"{name}_rhs_batch"]
+            self.f.restype = self.fb.restype = ctypes.c_int
         self.ytype = ctypes.c_double * (2 * n)
         self.jtype = ctypes.c_double * (4 * n * n)
 
@@ -249,14 +371,14 @@ class CFirstOrder:
     def rhs(self, t: float, y: np.ndarray) -> np.ndarray:
         if y.ndim == 1:
             out = self.ytype()
-            if self.f(ctypes.c_double(t), self._buffer(y), self.p, out):
+            if self.f(ctypes.c_double(t), self._buffer(y), self.h, out):
                 raise ModelError(f"mass matrix is singular at t={t}, state={y.tolist()}")
             return np.frombuffer(out)
         Y = np.ascontiguousarray(y.T, dtype=float)
         out = np.empty_like(Y)
         ptr = ctypes.c_void_p
         status = self.fb(
-            ctypes.c_long(Y.shape[0]), ctypes.c_double(t), ptr(Y.ctypes.data), self.p, ptr(out.ctypes.data)
+            ctypes.c_long(Y.shape[0]), ctypes.c_double(t), ptr(Y.ctypes.data), self.h, ptr(out.ctypes.data)
         )
         if status:
             raise ModelError(f"mass matrix is singular at t={t}, state={Y[status - 1].tolist()}")
@@ -264,6 +386,81 @@ class CFirstOrder:
 
     def jacobian(self, t: float, y: np.ndarray) -> np.ndarray:
         out = self.jtype()
-        if self.fj(ctypes.c_double(t), self._buffer(y), self.p, out):
+        if self.fj(ctypes.c_double(t), self._buffer(y), self.h, out):
             raise ModelError(f"mass matrix is singular at t={t}, state={y.tolist()}")
         return np.frombuffer(out).reshape(2 * self.n, 2 * self.n)
+
+
+class NumpyFirstOrder:
+    """f(t, y) and df/dy in Python: ``math`` for one state, NumPy for a batch (and where ``math`` raises, so
+    that ``1/0`` gives inf as in every other backend); LAPACK solves."""
+
+    def __init__(self, program: Program, functions: dict[str, Any], values: list[float]) -> None:
+        self.n, self.pairs, self.symmetric = program.n, program.pairs, program.symmetric
+        self.df, self.dm = program.df, program.dm
+        self.scalar, self.array = functions["scalar"], functions["array"]
+        self.source = functions["source"]
+        self.h = functions["setup"]([float(v) for v in values])
+        rows = [r for r, _ in self.pairs]
+        cols = [c for _, c in self.pairs]
+        self.index = (np.array(rows + cols), np.array(cols + rows)) if self.symmetric else (rows, cols)
+
+    def _values(self, t: float, y: np.ndarray) -> np.ndarray:
+        """Outputs for one state (1-D) or a batch (2n, k) -> (k, nout)."""
+        if y.ndim == 1:
+            try:
+                return np.array(self.scalar(float(t), y.tolist(), self.h))
+            except (ArithmeticError, ValueError):
+                pass
+            y = y[:, None]
+            with np.errstate(all="ignore"):
+                return self._batch(t, y)[0]
+        with np.errstate(all="ignore"):
+            return self._batch(t, y)
+
+    def _batch(self, t: float, y: np.ndarray) -> np.ndarray:
+        outs = self.array(float(t), list(np.asarray(y, dtype=float)), self.h)
+        k = y.shape[1]
+        return np.stack([np.broadcast_to(np.asarray(o, dtype=float), (k,)) for o in outs], axis=-1)
+
+    def _mass_forcing(self, vals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        n, m = self.n, len(self.pairs)
+        M = np.empty((*vals.shape[:-1], n, n))
+        entries = vals[..., :m]
+        M[(..., *self.index)] = np.concatenate([entries, entries], axis=-1) if self.symmetric else entries
+        return M, vals[..., m : m + n]
+
+    def rhs(self, t: float, y: np.ndarray) -> np.ndarray:
+        n = self.n
+        M, F = self._mass_forcing(self._values(t, y))
+        try:
+            if y.ndim == 1:
+                return np.concatenate([y[n:], np.linalg.solve(M, F)])
+            qdd = np.linalg.solve(M, F[..., None])[..., 0]
+        except np.linalg.LinAlgError as exc:
+            where = f"state={y.tolist()}" if y.ndim == 1 else "one of the states"
+            raise ModelError(f"mass matrix is singular at t={t}, {where}") from exc
+        return np.concatenate([y[n:], qdd.T])
+
+    def jacobian(self, t: float, y: np.ndarray) -> np.ndarray:
+        n = self.n
+        vals = self._values(t, y)
+        M, F = self._mass_forcing(vals)
+        base = len(self.pairs) + n
+        R = np.zeros((n, 2 * n))
+        for (i, j), v in zip(self.df, vals[base : base + len(self.df)], strict=True):
+            R[i, j] = v
+        try:
+            qdd = np.linalg.solve(M, F)
+            for (k, j), v in zip(self.dm, vals[base + len(self.df) :], strict=True):
+                r, c = self.pairs[k]
+                R[r, j] -= v * qdd[c]
+                if self.symmetric and r != c:
+                    R[c, j] -= v * qdd[r]
+            X = np.linalg.solve(M, R)
+        except np.linalg.LinAlgError as exc:
+            raise ModelError(f"mass matrix is singular at t={t}, state={y.tolist()}") from exc
+        J = np.zeros((2 * n, 2 * n))
+        J[:n, n:] = np.eye(n)
+        J[n:] = X
+        return J

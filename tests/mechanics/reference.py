@@ -52,3 +52,46 @@ def sympy_pendulum(n: int, links: str, inverted: bool, pivot: str):
         repl[qk.diff(tt)] = dot(phik)
         repl[qk] = phik
     return lm, repl
+
+
+def sympy_pendulum_kane(n: int, links: str, inverted: bool, pivot: str):
+    """Return (KanesMethod, replacement dict dynamicsymbols -> symosc plain symbols) for the same chain.
+
+    Kane's method with ``u_k = q_k'`` (PyDy's usual set-up): the mass matrix and forcing of ``M u' = F`` equal
+    those of the Lagrange equations.
+    """
+    from sympy.physics.mechanics import KanesMethod
+
+    s = pendulum_symbols(n)
+    tt = dynamicsymbols._t
+    q = dynamicsymbols(f"phi1:{n + 1}")
+    u = dynamicsymbols(f"w1:{n + 1}")
+    N = ReferenceFrame("N")
+    O = Point("O")
+    y0 = s["a"] * sp.cos(s["p"] * tt) if pivot == "vertical" else sp.S.Zero
+    O.set_vel(N, y0.diff(tt) * N.y)
+    sign = 1 if inverted else -1
+    bodies, loads = [], []
+    hinge = O
+    for k in range(n):
+        frame = N.orientnew(f"A{k + 1}", "Axis", [-q[k] if inverted else q[k], N.z])
+        frame.set_ang_vel(N, (-u[k] if inverted else u[k]) * N.z)
+        arm = s["l"][k] if links == "point" else s["lc"][k]
+        direction = sp.sin(q[k]) * N.x + sign * sp.cos(q[k]) * N.y
+        P = hinge.locatenew(f"P{k + 1}", arm * direction)
+        P.v2pt_theory(hinge, N, frame)
+        if links == "point":
+            bodies.append(Particle(f"B{k + 1}", P, s["m"][k]))
+        else:
+            bodies.append(RigidBody(f"B{k + 1}", P, frame, s["m"][k], (inertia(frame, 0, 0, s["I"][k]), P)))
+        loads.append((P, -s["m"][k] * s["g"] * N.y))
+        nxt = hinge.locatenew(f"H{k + 1}", s["l"][k] * direction)
+        nxt.v2pt_theory(hinge, N, frame)
+        hinge = nxt
+    km = KanesMethod(N, q_ind=q, u_ind=u, kd_eqs=[qk.diff(tt) - uk for qk, uk in zip(q, u, strict=True)])
+    km.kanes_equations(bodies, loads)
+    repl = {}
+    for qk, uk, phik in zip(q, u, s["phi"], strict=True):
+        repl[uk] = dot(phik)
+        repl[qk] = phik
+    return km, repl
