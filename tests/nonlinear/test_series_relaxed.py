@@ -148,3 +148,22 @@ def test_without_flint_the_pairwise_engine_runs(monkeypatch):
     assert poincare.relaxed_exact_arith() is None
     lc = limit_cycle((1 - x**2) * v, 6)
     assert lc.amplitude.coefficient(4) == R(-1033, 552960)  # Andersen & Geer (1982), Table 1
+
+
+def test_relaxed_scalar_times_series_equals_pairwise_fraction_sums():
+    """sum_i w_i x_(m-i) with scalar w (blocks of 8 by per-harmonic products when complete), to m = 34."""
+    rng = random.Random(5)
+    ar = LaurentArith()
+    limit = 34
+    W = [R(rng.randint(-10**9, 10**9), rng.randint(1, 10**7)) if k % 3 else R(0) for k in range(limit + 1)]
+    X = [_random_series(rng, 2 * (k % 4) + 1, 1, "c" if k % 2 else "s") for k in range(limit + 1)]
+    w_list, x_list = [], []
+    conv = ar.cauchy(w_list, x_list, limit=limit, scalar_a=True)
+    for m in range(limit + 1):
+        w_list.append(W[m])
+        x_list.append(_to_half(ar, X[m]))
+        expected: dict = {}
+        for i in range(m + 1):
+            for key, val in X[m - i].items():
+                expected[key] = expected.get(key, 0) + W[i] * val
+        assert _from_half(ar, conv(m)) == {k: val for k, val in expected.items() if val}, m

@@ -229,12 +229,9 @@ class LaurentArith(_Arith):
 
     # --- Cauchy products in eps ------------------------------------------------------------------------------------
     def cauchy(self, a: list, b: list, *, shift: int = 0, limit: int, scalar_a: bool = False) -> Any:
-        """``m -> sum_(i=0..m) a_(i+shift) b_(m-i+shift)``: relaxed block products of series (see
-        :class:`RelaxedCauchy`); scalars times series pair by pair (a scalar is cheap to multiply, and a block product
-        would pad it to the size of the series' coefficients)."""
-        if scalar_a:
-            return super().cauchy(a, b, shift=shift, limit=limit, scalar_a=True)
-        return RelaxedCauchy(self, a, b, shift=shift, limit=limit)
+        """``m -> sum_(i=0..m) a_(i+shift) b_(m-i+shift)`` by relaxed block products (see :class:`RelaxedCauchy`;
+        ``a`` scalars when ``scalar_a``)."""
+        return RelaxedCauchy(self, a, b, shift=shift, limit=limit, scalar_a=scalar_a)
 
 
 def _phases(side: list[Half], first: int) -> set[tuple[int, int]]:
@@ -349,18 +346,48 @@ def block_products(
     return out
 
 
+def scalar_block_products(ar: LaurentArith, W: list, X: list[Half]) -> list[Half]:
+    """``C_t = sum_(i+j=t) W_i X_j`` (``W`` scalars): for every harmonic one product of integer polynomials in the
+    order (a Kronecker product over all harmonics would pad each scalar to the size of a series coefficient)."""
+    P = ar.P
+    dw = _lcm([Fraction(w).denominator for w in W])
+    pw = P([Fraction(w).numerator * (dw // Fraction(w).denominator) for w in W])
+    off, step = ar._layout(X)
+    dx = _lcm([t.den for t in X])
+    parts = [ar._at(t, off, step) for t in X]
+    size = max(max(u.length(), v.length()) for u, v in parts)
+    columns = ([[0] * len(X) for _ in range(size)], [[0] * len(X) for _ in range(size)])
+    for j, ((u, v), t) in enumerate(zip(parts, X, strict=True)):
+        f = dx // t.den
+        for cols, p in zip(columns, (u, v), strict=True):
+            if not p.is_zero():
+                for h, c in enumerate((p * f).coeffs() if f != 1 else p.coeffs()):
+                    cols[h][j] = c
+    prods = [[(pw * P(c)).coeffs() if any(c) else [] for c in cols] for cols in columns]
+    count = len(W) + len(X) - 1
+    return [
+        Half(*(P([o[t] if t < len(o) else 0 for o in outs]) for outs in prods), off, step, dw * dx)
+        for t in range(count)
+    ]
+
+
+#: blocks of scalars times series: per-harmonic products from this size on, and only untruncated blocks
+_SCALAR_BLOCK_MIN = 8
+
+
 class RelaxedCauchy:
     """``c_m = sum_(i=0..m) a_i b_(m-i)`` for ``m = 0, 1, ...`` (each once, in order) of sequences that grow.
 
     ``a_i = a[i + shift]`` (a list that the recurrence extends and may still correct at its newest index), likewise
-    ``b``.  At order ``m`` the terms ``a_i, b_i`` with ``i < m`` must be final.  The pairs ``(i, m - i)`` with
-    ``1 <= i <= m - 1`` come from block products formed when their blocks are complete; ``a_0 b_m + a_m b_0`` is
-    formed directly.  A square (``a is b``) uses each block once.
+    ``b``; scalars (Fractions) with ``scalar_a``.  At order ``m`` the terms ``a_i, b_i`` with ``i < m`` must be
+    final.  The pairs ``(i, m - i)`` with ``1 <= i <= m - 1`` come from block products formed when their blocks are
+    complete; ``a_0 b_m + a_m b_0`` is formed directly.  A square (``a is b``) uses each block once.
     """
 
-    def __init__(self, ar: LaurentArith, a: list, b: list, *, shift: int, limit: int):
+    def __init__(self, ar: LaurentArith, a: list, b: list, *, shift: int, limit: int, scalar_a: bool = False):
         self.ar, self.a, self.b, self.shift, self.limit = ar, a, b, shift, limit
         self.square = a is b
+        self.scalar_a = scalar_a
         self.pending: dict[int, list[tuple[Half, int]]] = defaultdict(list)
         self.next = 0
 
@@ -375,15 +402,26 @@ class RelaxedCauchy:
             return
         A = [self._get(self.a, i) for i in range(i0, i0 + size)]
         B = [self._get(self.b, j) for j in range(j0, j0 + size)]
-        if size < _BLOCK_MIN:  # small blocks: the products of the pairs cost less than packing them
+        if self.scalar_a:
+            blocked = size >= _SCALAR_BLOCK_MIN and count == 2 * size - 1
+        else:
+            blocked = size >= _BLOCK_MIN  # small blocks: the products of the pairs cost less than packing them
+        if not blocked:
             for i, a in enumerate(A):
                 for j, b in enumerate(B[: count - i]):
                     self.pending[first + i + j].append((self._pair(a, b, i0 + i, j0 + j), weight))
             return
-        for t, c in enumerate(block_products(self.ar, A, B, count, (i0, j0))):
+        if self.scalar_a:
+            blocks = scalar_block_products(self.ar, A, B)
+        else:
+            blocks = block_products(self.ar, A, B, count, (i0, j0))
+        for t, c in enumerate(blocks):
             self.pending[first + t].append((c, weight))
 
-    def _pair(self, a: Half, b: Half, i: int, j: int) -> Half:
+    def _pair(self, a: Any, b: Half, i: int, j: int) -> Half:
+        if self.scalar_a:
+            q = Fraction(a)
+            return Half(b.u * q.numerator, b.v * q.numerator, b.off, b.step, b.den * q.denominator)
         return block_products(self.ar, [a], [b], 1, (i, j))[0]
 
     def __call__(self, m: int) -> Half:
