@@ -8,7 +8,12 @@ Part B (float matrices with clustered eigenvalues, gap δ): relative error of ex
 reference of the same float matrix, for symosc "auto", the plain Sylvester formula, scipy.linalg.expm and SymPy's
 Matrix.exp on the float matrix.
 
-Run:  python benchmarks/algebra_vs_sympy.py [--quick]
+Part C (integer matrices with irreducible characteristic polynomials of degree 3 and 4, roots CRootOf): exact
+log A, exp A and exp(A t) by symosc against SymPy's Matrix.log / Matrix.exp (60 s limit), and the largest
+difference to mpmath's logm / expm of the same matrix at 30 digits (scipy's logm, in double precision, where an
+eigenvalue lies on the negative axis: mpmath's logm takes the other side of the cut there).
+
+Run:  python benchmarks/algebra_vs_sympy.py [--quick] [--part C]
 """
 
 from __future__ import annotations
@@ -146,13 +151,71 @@ def part_b(repeat: int) -> None:
         print(f"| {delta:7.0e} | " + " | ".join(f"{c:>22}" for c in cells) + " |")
 
 
+def _mp_value(M: sp.Matrix, digits: int = 30) -> mpmath.matrix:
+    """Entries at ``digits`` digits, each CRootOf polished by Newton's method in mpmath from 15 digits."""
+    values = {}
+    for r in M.atoms(sp.CRootOf):
+        with mpmath.workdps(digits + 15):
+            z = mpmath.findroot(sp.lambdify(r.poly.gen, r.expr, "mpmath"), mpmath.mpc(complex(r.n(15))))
+        values[r] = sp.Float(z.real, digits + 15) + sp.I * sp.Float(z.imag, digits + 15)
+    rows = []
+    for row in M.xreplace(values).tolist():
+        vals = [sp.N(e, digits) for e in row]
+        rows.append([mpmath.mpc(mpmath.mpf(str(sp.re(v))), mpmath.mpf(str(sp.im(v)))) for v in vals])
+    return mpmath.matrix(rows)
+
+
+def part_c(repeat: int) -> None:
+    print("\nPart C: exact functions of integer matrices with irreducible characteristic polynomials (CRootOf roots)")
+    print("error: largest |symosc - reference| / largest |reference| (mpmath 30 digits; * = scipy logm)\n")
+    print(f"| {'case':36} | {'symosc':>10} | {'SymPy':>10} | {'error':>9} |")
+    print(f"|{'-' * 38}|{'-' * 12}|{'-' * 12}|{'-' * 11}|")
+    tv = sp.Rational(7, 10)
+    for poly in (x**3 - x - 1, x**4 - x - 1):
+        A = sp.Matrix.companion(sp.Poly(poly, x))
+        name = f"{A.rows}x{A.rows} companion of {poly}"
+        cases = [
+            ("log", lambda A=A: matrix_function(A, sp.log), lambda A=A: A.log(), "log"),
+            ("exp", lambda A=A: matrix_function(A, sp.exp), lambda A=A: A.exp(), "exp"),
+            ("exp(A t)", lambda A=A: matrix_function(A * t, sp.exp), lambda A=A: (A * t).exp(), "expt"),
+        ]
+        for label, ours, peer, kind in cases:
+            ts, F = timed(ours, repeat)
+            try:
+                tp, _ = timed(peer, 1)
+                peer_time = _fmt_t(tp)
+            except Exception as exc:  # SymPy refuses some of these
+                peer_time = type(exc).__name__
+            with mpmath.workdps(30):
+                An = mpmath.matrix((A * tv if kind == "expt" else A).tolist())
+                got = _mp_value(F.subs(t, tv) if kind == "expt" else F)
+                star = ""
+                if kind == "log" and any(r.is_real and r < 0 for r in sp.Poly(poly, x).all_roots()):
+                    ref = mpmath.matrix(sla.logm(np.array(A, dtype=float)).tolist())
+                    star = "*"
+                else:
+                    ref = mpmath.logm(An) if kind == "log" else mpmath.expm(An)
+                diff = got - ref
+                err = max(abs(diff[i, j]) for i in range(A.rows) for j in range(A.rows)) / max(
+                    abs(ref[i, j]) for i in range(A.rows) for j in range(A.rows)
+                )
+            print(
+                f"| {name + ': ' + label:36} | {_fmt_t(ts):>10} | {peer_time:>10} | {float(err):>8.1e}{star or ' '} |"
+            )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one timing run per case instead of three")
+    parser.add_argument("--part", choices=["A", "B", "C"], help="run one part only")
     args = parser.parse_args()
     repeat = 1 if args.quick else 3
-    part_a(repeat)
-    part_b(repeat)
+    if args.part in (None, "A"):
+        part_a(repeat)
+    if args.part in (None, "B"):
+        part_b(repeat)
+    if args.part in (None, "C"):
+        part_c(repeat)
 
 
 if __name__ == "__main__":

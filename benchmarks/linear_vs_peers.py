@@ -8,6 +8,9 @@ Part B  Modal analysis of uniform and random chains: closed forms and power iter
         ``scipy.linalg.eigh``/``eigh_tridiagonal``; Dunkerley and Papkovich bounds (tightness).
 Part C  Stability margins and Nyquist counts against python-control (``control.margin``,
         ``control.nyquist_response``).
+Part D  Region labels of a 100 x 100 D-partition grid (``DPartition.roots_right``) and of a stability region
+        (``StabilityRegion.roots_right``) against ``numpy.roots`` called point by point on the same coefficients;
+        the labels must agree everywhere.
 
 Run:  python benchmarks/linear_vs_peers.py [--quick]
 """
@@ -24,12 +27,14 @@ import sympy as sp
 
 from symosc.linear import (
     chain_matrices,
+    d_partition,
     dunkerley,
     dunkerley_bounds,
     hurwitz,
     nyquist,
     power_iteration,
     stability_margins,
+    stability_region,
     string_frequencies,
 )
 
@@ -141,6 +146,58 @@ def part_c() -> None:
         )
 
 
+def part_d(n: int) -> None:
+    print(f"\nPart D: region labels of a {n} x {n} grid (times per point)")
+    lam, mu, nu = sp.symbols("lambda mu nu")
+    cases = [
+        ("Neimark (8.26)", (lam**2 + lam) * mu + (lam**2 + 1) * nu - lam**2 + 2, 0),
+        ("Vyshnegradsky", lam**3 + mu * lam**2 + nu * lam + 1, 0),
+        ("degree 6, eps=-0.2", lam**6 + 3 * lam**5 + mu * lam**4 + 5 * lam**3 + nu * lam**2 + 2 * lam + 1, -0.2),
+    ]
+    print(
+        f"{'case':>20} {'grid call':>10} {'point calls':>12} {'numpy.roots':>12} {'grid/roots':>11}"
+        f" {'points/roots':>13} {'agree':>6}"
+    )
+    xs = np.linspace(-4, 6, n)
+    X, Y = np.meshgrid(xs, xs)
+    for name, F, eps in cases:
+        coeffs = [sp.lambdify((mu, nu), c) for c in sp.Poly(F, lam).all_coeffs()]
+
+        def peer(F=F, coeffs=coeffs, eps=eps):
+            out = np.empty(X.shape, dtype=int)
+            for i, j in np.ndindex(X.shape):
+                c = np.trim_zeros(np.array([f(X[i, j], Y[i, j]) for f in coeffs], dtype=float), "f")
+                out[i, j] = np.sum(np.roots(c).real > eps)
+            return out
+
+        def fresh(F=F, eps=eps):  # a new partition: includes computing its coefficient arrays
+            return d_partition(F, lam, (mu, nu), epsilon=eps)
+
+        dp = fresh()
+        tg, grid = best(lambda dp=dp: fresh().roots_right(X, Y), repeat=3)
+        tp, points = best(lambda dp=dp: np.array([[dp.roots_right(a, b) for a in xs] for b in xs]), repeat=1)
+        tr, ref = best(peer, repeat=1)
+        agree = bool((grid == ref).all() and (points == ref).all())
+        per = X.size
+        print(
+            f"{name:>20} {tg / per * 1e6:>7.1f} µs {tp / per * 1e6:>9.1f} µs {tr / per * 1e6:>9.1f} µs"
+            f" {tg / tr:>11.3f} {tp / tr:>13.2f} {agree!s:>6}"
+        )
+    x, y = sp.symbols("x y")
+    region = stability_region([1, x, y, 1], (x, y))
+    tg, grid = best(lambda: stability_region([1, x, y, 1], (x, y)).roots_right({x: X, y: Y}), repeat=3)
+
+    def peer_region():
+        return np.array([[np.sum(np.roots([1.0, a, b, 1.0]).real > 0) for a in xs] for b in xs])
+
+    tr, ref = best(peer_region, repeat=1)
+    agree = bool((grid == ref).all()) and region.contains({x: 2, y: 1})
+    print(
+        f"{'stability_region':>20} {tg / X.size * 1e6:>7.1f} µs {'-':>12} {tr / X.size * 1e6:>9.1f} µs"
+        f" {tg / tr:>11.3f} {'-':>13} {agree!s:>6}"
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer polynomials and smaller chains")
@@ -148,6 +205,7 @@ def main() -> None:
     part_a(10 if args.quick else 40)
     part_b((10, 100) if args.quick else (10, 100, 500))
     part_c()
+    part_d(40 if args.quick else 100)
 
 
 if __name__ == "__main__":

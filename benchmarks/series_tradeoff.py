@@ -4,7 +4,11 @@ Compares the series evaluated at eps = 0.1, 0.5, 1 with the numerically located 
 DOP853 at rtol 1e-12: the reference the user would otherwise compute), and times the series generation in each
 arithmetic against one shooting solve.  Writes docs/img/series_tradeoff.png.
 
-    python benchmarks/series_tradeoff.py [--quick]
+``--exact-growth`` times only the exact series of high order (relaxed block products) against the former
+pair-by-pair engine and the float series, with the local cost exponents, and checks that both exact engines give
+the same rationals.
+
+    python benchmarks/series_tradeoff.py [--quick | --exact-growth]
 """
 
 from __future__ import annotations
@@ -94,10 +98,50 @@ def high_order() -> None:
     print(f"radius of convergence of the frequency series from the exact eps^100 series: {radius}")
 
 
+def exact_growth() -> None:
+    """Exact van der Pol to eps^150: CPU time per order, local exponent d log t / d log N, the pairwise engine."""
+    import math
+
+    import symosc.nonlinear.series.poincare as poincare
+
+    relaxed = poincare.relaxed_exact_arith
+    limit_cycle(VDP, 24)  # warm: imports, FLINT, caches
+    print("== exact series (van der Pol): CPU seconds of this process, one run each ==")
+    print(f"{'order':>5} {'relaxed':>9} {'exponent':>9} {'pairwise':>9} {'exponent':>9} {'same':>5}")
+    prev = {}
+    for n in (48, 60, 80, 100, 120, 150):
+        lc, _, t_new = timed_cpu(lambda n=n: limit_cycle(VDP, n))
+        row = f"{n:>5d} {t_new:9.2f} "
+        row += f"{math.log(t_new / prev['new'][1]) / math.log(n / prev['new'][0]):9.2f} " if "new" in prev else " " * 10
+        prev["new"] = (n, t_new)
+        if n <= 100:
+            poincare.relaxed_exact_arith = lambda: None
+            try:
+                old, _, t_old = timed_cpu(lambda n=n: limit_cycle(VDP, n))
+            finally:
+                poincare.relaxed_exact_arith = relaxed
+            expo = (
+                f"{math.log(t_old / prev['old'][1]) / math.log(n / prev['old'][0]):9.2f}" if "old" in prev else " " * 9
+            )
+            prev["old"] = (n, t_old)
+            same = all(
+                getattr(lc, k).coefficients == getattr(old, k).coefficients
+                for k in ("frequency", "amplitude", "floquet_exponent")
+            ) and tuple(lc._harmonics) == tuple(old._harmonics)
+            row += f"{t_old:9.2f} {expo} {same!s:>5}"
+        print(row, flush=True)
+    _, _, t_float = timed_cpu(lambda: limit_cycle(VDP, 100, arithmetic="float"), repeat=3)
+    print(f"float to eps^100: {t_float:.2f} s CPU (best of 3)")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--exact-growth", action="store_true", help="only the high-order exact timings")
     args = ap.parse_args()
+    if args.exact_growth:
+        exact_growth()
+        return
     orders = [2, 4, 8, 12, 16, 24] + ([] if args.quick else [32, 48, 64])
     eps_values = [0.1, 0.5, 1.0]
 

@@ -330,3 +330,63 @@ def test_log_near_convergence_boundary_non_normal():
     L = matrix_function(np.eye(3) + z, sp.log)
     np.testing.assert_allclose(L, sla.logm(np.eye(3) + z), rtol=1e-11, atol=1e-12)
     np.testing.assert_allclose(matrix_function(L, sp.exp), np.eye(3) + z, rtol=1e-11, atol=1e-11)
+
+
+def _mp_matrix(M, digits=30):
+    """Entries at ``digits`` digits as an mpmath matrix; each CRootOf replaced by its value polished by Newton's
+    method in mpmath from a 15-digit start (SymPy's own refinement to 40 digits takes seconds per root)."""
+    values = {}
+    for r in M.atoms(sp.CRootOf):
+        with mpmath.workdps(digits + 15):
+            z = mpmath.findroot(sp.lambdify(r.poly.gen, r.expr, "mpmath"), mpmath.mpc(complex(r.n(15))))
+        values[r] = sp.Float(z.real, digits + 15) + sp.I * sp.Float(z.imag, digits + 15)
+    M = M.xreplace(values)
+
+    def mp(e):
+        v = sp.N(e, digits)
+        return mpmath.mpc(mpmath.mpf(str(sp.re(v))), mpmath.mpf(str(sp.im(v))))
+
+    return mpmath.matrix([[mp(e) for e in row] for row in M.tolist()])
+
+
+@pytest.mark.parametrize("poly", ["x**3 - x - 1", "x**4 - x - 1"])
+def test_log_and_exp_of_companions_with_irreducible_characteristic_polynomials(poly):
+    """Exact log A and exp A (CRootOf roots) of the companion matrices of x³ - x - 1 and x⁴ - x - 1, against
+    mpmath's expm and logm at 30 digits; x⁴ - x - 1 has a root near -0.72, where the principal logarithm
+    (ln|λ| + iπ) is checked against scipy's logm (mpmath's logm takes the other side of the cut there)."""
+    A = sp.Matrix.companion(sp.Poly(sp.sympify(poly), x))
+    with mpmath.workdps(30):
+        An = mpmath.matrix(A.tolist())
+        ref = mpmath.expm(An)
+        got = _mp_matrix(matrix_function(A, sp.exp))
+        assert mpmath.mnorm(got - ref, 1) < mpmath.mpf(10) ** -25 * mpmath.mnorm(ref, 1)
+        log = _mp_matrix(matrix_function(A, sp.log))
+        if A.rows == 3:
+            ref = mpmath.logm(An)
+            assert mpmath.mnorm(log - ref, 1) < mpmath.mpf(10) ** -25 * mpmath.mnorm(ref, 1)
+        else:
+            got = np.array(log.tolist(), dtype=complex)
+            assert np.max(np.abs(got - sla.logm(np.array(A, dtype=float)))) < 1e-12
+            assert mpmath.mnorm(mpmath.expm(log) - An, 1) < mpmath.mpf(10) ** -25
+
+
+def test_exp_At_of_an_irreducible_cubic_with_a_symbolic_scale():
+    """exp(A t) for A with an irreducible cubic (and a Jordan block): A t = t * B, B's projectors, roots t λ
+    (CRootOf), nilpotent t η; against mpmath.expm at two values of t.  The quadratic case keeps its cos/sin form."""
+    C = sp.Matrix.companion(sp.Poly(x**3 - x - 1, x))
+    A = sp.diag(C, sp.Matrix([[1, 1], [0, 1]]))
+    A[0, 4] = A[1, 3] = 1  # couple the blocks (block triangular: det(λE - A) = (λ³ - λ - 1)(λ - 1)²)
+    result = matrix_function(A * t, sp.exp, spectral=True)
+    E, S = result.value, result.spectral
+    assert E.has(sp.CRootOf) and E.free_symbols == {t}
+    with mpmath.workdps(30):
+        for tv in (sp.Rational(2, 5), sp.Rational(-13, 10)):
+            ref = mpmath.expm(mpmath.matrix((A * tv).tolist()))
+            got = _mp_matrix(E.subs(t, tv))
+            assert mpmath.mnorm(got - ref, 1) < mpmath.mpf(10) ** -25 * mpmath.mnorm(ref, 1)
+    assert sorted(c.index for c in S.components) == [1, 1, 1, 2]
+    assert any(c.root == t for c in S.components)
+    # a polynomial f: the sum over the conjugate roots is exact (RootSum), here (A t)**2
+    assert (matrix_function(A * t, sp.Lambda(x, x**2)) - (A * t) ** 2).applyfunc(sp.expand).is_zero_matrix
+    osc = matrix_function(sp.Matrix([[0, 1], [-4, 0]]) * t, sp.exp)
+    assert sp.simplify(osc[0, 0] - sp.cos(2 * t)) == 0

@@ -169,3 +169,55 @@ def test_e10_robust_envelope():
     pt = {x: 1 / (4 * kv), y: sp.Rational(1, 4), k: kv}
     assert F.subs(pt).subs(z, 4 * kv) == 0 and book.subs(pt) == 0
     assert book.subs({x: 1 / k, y: 0}) == 0 and book.subs({x: 0, y: 1}) == 0
+
+
+@pytest.mark.parametrize("F, params, eps", CASES)
+def test_grid_labels_match_numpy_roots_per_point(F, params, eps):
+    """Vectorised labels of a grid equal numpy.roots point by point (coefficients lambdified here from F), including
+    points where the degree drops (leading coefficient 0) and where λ = 0 is an exact root (constant term 0)."""
+    dp = d_partition(F, lam, params, epsilon=eps)
+    if len(params) == 1:
+        z = sp.symbols("x y", real=True)
+        count = _counter(F.subs(params[0], z[0] + sp.I * z[1]), z, eps)
+    else:
+        count = _counter(F, params, eps)
+    xs = np.concatenate([np.linspace(-3.3, 3.1, 15), [0.0, 1.0, -2.0]])
+    ys = np.concatenate([np.linspace(-2.9, 3.4, 12), [0.0, 1.0, -2.0]])
+    X, Y = np.meshgrid(xs, ys)
+    grid = dp.roots_right(X, Y)
+    assert grid.shape == X.shape and grid.dtype.kind == "i"
+    for i, j in np.ndindex(X.shape):
+        expected = count((X[i, j], Y[i, j]))[0]
+        assert grid[i, j] == expected == dp.roots_right(X[i, j], Y[i, j]), (X[i, j], Y[i, j])
+
+
+def test_degree_drop_and_zero_roots_in_one_grid():
+    """Neimark's example: on μ + ν = 1 the λ² term vanishes (one root goes to infinity), on ν = -2 λ = 0 is a root;
+    the labels there are those of the lower-degree polynomial (numpy.roots strips the same coefficients)."""
+    dp = d_partition((lam**2 + lam) * mu + (lam**2 + 1) * nu - lam**2 + 2, lam, (mu, nu))
+    pts = np.array([[0.5, 0.5], [-1.0, 2.0], [-3.0, 4.0], [1.0, -2.0], [-1.0, -2.0], [0.0, 0.0], [0.0, 1.0]])
+    got = dp.roots_right(pts[:, 0], pts[:, 1])
+    # F at each point by hand: (m + n - 1) λ² + m λ + (n + 2)
+    expected = []
+    for m, n in pts:
+        c = np.trim_zeros(np.array([m + n - 1, m, n + 2]), "f")
+        expected.append(int(np.sum(np.roots(c).real > 0)))
+    assert got.tolist() == expected == [0, 1, 1, 1, 0, 1, 0]
+    with pytest.raises(ParameterError, match="vanishes"):
+        d_partition(lam * mu + nu, lam, (mu, nu)).roots_right(np.array([1.0, 0.0]), np.array([2.0, 0.0]))
+
+
+def test_stability_region_numeric_labels():
+    """StabilityRegion.roots_right (coefficients compiled once, batched) against the exact Hurwitz verdict."""
+    from symosc.linear import stability_region
+
+    x, y = sp.symbols("x y")
+    r = stability_region([1, x, y, 1], (x, y))
+    rng = np.random.default_rng(7)
+    xv, yv = rng.uniform(-2, 4, (2, 150))
+    counts = r.roots_right({"x": xv, y: yv})
+    assert counts.shape == (150,)
+    for a, b, n in zip(xv, yv, counts, strict=True):
+        assert (n == 0) == r.contains({x: float(a), y: float(b)})
+        assert n == int(np.sum(np.roots([1, a, b, 1]).real > 0))
+    assert r.roots_right({x: 2.0, y: 1.0}) == 0

@@ -148,17 +148,19 @@ class SpectralDecomposition(SymPyPrintable):
                 if id(fam) in families_done:
                     continue
                 families_done.add(id(fam))
-                p, rho, mats = fam
+                p, rho, mats = fam[:3]
+                # A = scale * B (see _scaled_decomposition): f(scale x) at B's roots with B's idempotents
+                f_fam = expr.xreplace({x: fam[3] * x}) if len(fam) > 3 else expr
                 for r in p.all_roots():
-                    _terms(expr, x, r, c.index, mats[: c.index])  # singularity check at every root
-                g = _terms(expr, x, rho, c.index, mats[: c.index])
+                    _terms(f_fam, x, r, c.index, mats[: c.index])  # singularity check at every root
+                g = _terms(f_fam, x, rho, c.index, mats[: c.index])
                 if all(e.is_rational_function(rho) for e in g):
                     out += g.applyfunc(lambda e, p=p, rho=rho: sp.RootSum(p.as_expr(), sp.Lambda(rho, e)))
                 else:
                     out += sum((g.xreplace({rho: r}) for r in p.all_roots()), sp.zeros(n, n))
                 continue
             out += _terms(expr, x, c.root, c.index, (c.projector, *c.nilpotents))
-        if not self.matrix.free_symbols:
+        if not self.matrix.free_symbols or any(len(c._family or ()) > 3 for c in self.components):
             out = out.applyfunc(_tidy_numeric)
         # (symbolic: the components are simplified already; simplifying the sum costs more than it gains)
         if all(e.is_real for e in self.matrix) and out.has(sp.I):
@@ -294,6 +296,9 @@ def _inverse_series(others: list[tuple[sp.Expr, int]], root: sp.Expr, order: int
 
 def _exact_decomposition(A: sp.Matrix) -> SpectralDecomposition:
     n = A.rows
+    scaled = _scalar_multiple(A)
+    if scaled is not None:  # A = c B with B rational (the idiom A*t): B's projectors, roots c λ, nilpotents c^p η^p
+        return _scaled_decomposition(A, *scaled)
     lam = sp.Dummy("lambda")
     F = adjugate_poly(A, lam)
     if not A.free_symbols:
@@ -314,6 +319,51 @@ def _exact_decomposition(A: sp.Matrix) -> SpectralDecomposition:
         coeffs = [sum((Fj[j] * d[k - j] for j in range(k + 1)), sp.zeros(n, n)) for k in range(q)]
         comps.append(_component(root, q, [c.applyfunc(_tidy) for c in coeffs]))
     return SpectralDecomposition(matrix=A, components=tuple(comps), exact=True)
+
+
+def _scalar_multiple(A: sp.Matrix) -> tuple[sp.Expr, sp.Matrix] | None:
+    """``(c, B)`` with ``A = c B``, ``c`` symbolic and ``B`` rational with a factor of degree >= 3 in its
+    characteristic polynomial (whose roots, times ``c``, have no closed form), else None."""
+    if not A.free_symbols:
+        return None
+    entry = next((e for e in A if e != 0), None)
+    if entry is None:
+        return None
+    _, c = sp.sympify(entry).as_coeff_Mul()
+    if not c.free_symbols:
+        return None
+    B = (A / c).applyfunc(sp.cancel)
+    if B.free_symbols or not all(e.is_Rational for e in B):
+        return None
+    char = B.charpoly()
+    factors = sp.factor_list(char.as_expr(), char.gen)[1]
+    if all(sp.degree(fac, char.gen) < 3 for fac, _ in factors):
+        return None  # radicals: the general path gives them (and the real cos/sin form)
+    return c, B
+
+
+def _scaled_decomposition(A: sp.Matrix, c: sp.Expr, B: sp.Matrix) -> SpectralDecomposition:
+    """Components of ``A = c B`` from those of the rational ``B``: the same projectors, roots ``c λ``, nilpotents
+    ``(c η)^p``; a family of conjugate roots keeps ``c`` so that :meth:`SpectralDecomposition.apply` evaluates
+    ``f(c x)`` at the generic root."""
+    inner = _rational_components(B)
+    families: dict[int, tuple] = {}
+    comps = []
+    for comp in inner:
+        fam = comp._family
+        if fam is not None:
+            fam = families.setdefault(id(fam), (*fam[:3], c))
+        nil = tuple(sp.expand(c ** (p + 1)) * N for p, N in enumerate(comp.nilpotents))
+        comps.append(
+            SpectralComponent(sp.expand(c * comp.root), comp.multiplicity, comp.index, comp.projector, nil, (), fam)
+        )
+    return SpectralDecomposition(matrix=A, components=tuple(comps), exact=True)
+
+
+def _rational_components(B: sp.Matrix) -> tuple[SpectralComponent, ...]:
+    lam = sp.Dummy("lambda")
+    delta = sp.Poly(B.charpoly().as_expr(lam), lam)
+    return _rational_decomposition(B, adjugate_poly(B, lam), delta, lam).components
 
 
 def _component(root: sp.Expr, q: int, coeffs: list[sp.Matrix]) -> SpectralComponent:

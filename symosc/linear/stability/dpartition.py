@@ -12,6 +12,7 @@ coefficients, whose curve is traversed twice).  One complex parameter ``μ`` is 
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -21,6 +22,7 @@ import sympy as sp
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ParameterError
+from ._root_counts import count_roots_right
 
 __all__ = ["DPartition", "DiscriminantCurve", "d_partition", "discriminant_curve", "vyshnegradsky_diagram"]
 
@@ -112,27 +114,47 @@ class DPartition(SymPyPrintable):
             mu, nu, d = (np.broadcast_to(np.asarray(v, dtype=float), w.shape) for v in f(w))
         return mu, nu, d
 
-    def roots_right(self, mu: float, nu: float = 0.0) -> int:
-        """Number of roots with ``Re λ > ε`` at the parameter point (numpy.roots): the region label ``C_ε(j)``.
+    def roots_right(self, mu: Any, nu: Any = 0.0) -> Any:
+        """Number of roots with ``Re λ > ε`` at parameter points: the region label ``C_ε(j)`` (§8.25).
 
         Parameters
         ----------
-        mu : float
-            Value of the first parameter (``Re μ`` for one complex parameter); a finite number.
-        nu : float, optional
-            Value of the second parameter (``Im μ`` for one complex parameter); a finite number (default 0).
+        mu : float or array_like of float
+            First parameter (for one complex parameter: its real part).
+        nu : float or array_like of float
+            Second parameter (for one complex parameter: its imaginary part); broadcast against ``mu``.
 
         Returns
         -------
-        int
+        int or ndarray of int
+            An int for scalar arguments, else an array of the broadcast shape.  The roots are the eigenvalues of
+            the companion matrices (as :func:`numpy.roots`), for a whole grid in one LAPACK call per degree; the
+            coefficient arrays of ``P``, ``Q``, ``R`` are computed once per partition.
         """
+        cP, cQ, cR = self._coefficient_arrays
+        if not (np.all(np.isfinite(np.asarray(mu, dtype=float))) and np.all(np.isfinite(np.asarray(nu, dtype=float)))):
+            raise ParameterError(f"roots_right(): mu and nu must be finite numbers, got mu={mu!r}, nu={nu!r}")
+        if np.ndim(mu) == 0 and np.ndim(nu) == 0:  # one point: numpy.roots on the cached coefficients
+            c = float(mu) * cP + float(nu) * cQ + cR
+            nz = np.flatnonzero(c)
+            if nz.size == 0:
+                raise ParameterError(f"F vanishes identically at ({mu}, {nu})")
+            c = c[nz[0] :]
+            return int(np.sum(np.roots(c).real > self.epsilon)) if c.size > 1 else 0
+        m, n = np.broadcast_arrays(np.asarray(mu, dtype=float), np.asarray(nu, dtype=float))
+        c = m.reshape(-1, 1) * cP + n.reshape(-1, 1) * cQ + cR
+        try:
+            counts = count_roots_right(c, self.epsilon)
+        except ParameterError:
+            bad = np.flatnonzero(~(c != 0).any(axis=1))[0]
+            raise ParameterError(f"F vanishes identically at ({m.flat[bad]}, {n.flat[bad]})") from None
+        return counts.reshape(m.shape)
+
+    @functools.cached_property
+    def _coefficient_arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Coefficients of ``P``, ``Q``, ``R`` (highest power first, common length) as complex arrays."""
         deg = max(sp.degree(e, self.var) if e != 0 else 0 for e in (self.P, self.Q, self.R))
-        c = _coeffs(self.P, self.var, deg) * mu + _coeffs(self.Q, self.var, deg) * nu + _coeffs(self.R, self.var, deg)
-        nz = np.flatnonzero(np.abs(c) > 0)
-        if nz.size == 0:
-            raise ParameterError(f"F vanishes identically at ({mu}, {nu})")
-        c = c[nz[0] :]
-        return int(np.sum(np.roots(c).real > self.epsilon)) if c.size > 1 else 0
+        return tuple(_coeffs(e, self.var, deg) for e in (self.P, self.Q, self.R))
 
     def shaded_normal(self, omega: float) -> tuple[np.ndarray, np.ndarray]:
         """Point of ``T_ε`` at ``ω`` and the unit normal pointing to its shaded side (the rule of §8.25).
@@ -186,7 +208,7 @@ class DPartition(SymPyPrintable):
 
         ax = figure_axes(ax)
         mus, nus = np.linspace(*xlim, grid), np.linspace(*ylim, grid)
-        counts = np.array([[self.roots_right(m, n) for m in mus] for n in nus])
+        counts = self.roots_right(*np.meshgrid(mus, nus))
         ax.contourf(mus, nus, counts, levels=np.arange(counts.max() + 2) - 0.5, cmap="Greens_r", alpha=0.35)
         theta = np.linspace(-np.pi / 2 + 1e-4, np.pi / 2 - 1e-4, n_omega)
         w = np.tan(theta)

@@ -6,6 +6,8 @@ The region is bounded by ``T1`` (part of ``ks = 0``: a zero root) and ``T2`` (pa
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -16,6 +18,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ParameterError
 from .._util import as_coefficients
+from ._root_counts import count_roots_right
 from .criteria import hurwitz
 
 __all__ = ["StabilityRegion", "robust_boundary", "stability_region"]
@@ -63,6 +66,46 @@ class StabilityRegion(SymPyPrintable):
         if missing:
             raise ParameterError(f"missing values for {missing}")
         return bool(hurwitz([sp.sympify(c).subs(vals) for c in self.coefficients]).stable)
+
+    def roots_right(self, values: Mapping) -> Any:
+        """Number of roots with ``Re λ > 0`` at parameter points (0 inside the region), in floating point.
+
+        The coefficients are compiled once per region (:func:`symosc.numeric.compile`) and the roots of a whole
+        grid are the eigenvalues of a stack of companion matrices (as :func:`numpy.roots`, one LAPACK call per
+        degree).  Points on the boundary get either label; :meth:`contains` decides one point exactly.
+
+        Parameters
+        ----------
+        values : mapping
+            A number or an array for each parameter (keyed by Symbol or name); arrays are broadcast together.
+
+        Returns
+        -------
+        int or ndarray of int
+            An int when every value is a scalar, else an array of the broadcast shape.
+
+        Examples
+        --------
+        >>> import numpy as np, sympy as sp
+        >>> from symosc.linear import stability_region
+        >>> x, y = sp.symbols("x y")
+        >>> r = stability_region([1, x, y, 1], (x, y))
+        >>> r.roots_right({x: np.array([2.0, 2.0, -1.0]), "y": np.array([1.0, 0.4, 1.0])})
+        array([0, 2, 2])
+        """
+        from ...numeric import resolve
+
+        given = resolve(self.params, values)
+        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in given))
+        c = np.asarray(self._coefficient_function.raw(*arrays), dtype=complex)
+        counts = count_roots_right(c.reshape(-1, len(self.coefficients)), 0.0)
+        return int(counts[0]) if arrays[0].ndim == 0 else counts.reshape(arrays[0].shape)
+
+    @functools.cached_property
+    def _coefficient_function(self) -> Any:
+        from ...numeric import compile as compile_numeric
+
+        return compile_numeric(list(self.coefficients), list(self.params), backend="numpy", check=False)
 
     def __repr__(self) -> str:
         return f"StabilityRegion({sp.sstr(self.inequalities)})"

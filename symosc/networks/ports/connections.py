@@ -298,10 +298,17 @@ def parallel_series(a: FourPole, b: FourPole, check: bool = True) -> FourPole:
 
 
 @validated
-def chain_power(section: Any, n: Any) -> sp.Matrix:
-    """Chain matrix of ``n`` identical sections in closed form (Sylvester's formula, Chebyshev polynomials).
+def chain_power(section: Any, n: Any) -> FourPole | sp.Matrix:
+    """``n`` identical sections in cascade: the four-pole ``section**n``, or the closed form for a symbolic ``n``.
 
-    With ``Δ = det A`` and ``x = tr A / (2 sqrt(Δ))``,
+    For an integer ``n`` and a :class:`FourPole` the result is the four-pole of the chain (``section**n``): its
+    exact chain matrix is ``A**n`` by repeated squaring in the polynomial ring (or rational function field) of the
+    entries, formed when first read, and :meth:`FourPole.evaluate_numeric` evaluates it as the ``n``-th power of the
+    section's numeric matrix at every frequency (accurate where the multiplied-out polynomials of degree ``n``
+    cancel).  For a matrix ``section`` the result is the exact matrix ``A**n``.
+
+    For a symbolic ``n`` the result is the closed form (Sylvester's formula, Chebyshev polynomials): with
+    ``Δ = det A`` and ``x = tr A / (2 sqrt(Δ))``,
 
     ``A**n = Δ**((n-1)/2) (U_{n-1}(x) A - sqrt(Δ) U_{n-2}(x) I)``,
 
@@ -313,16 +320,17 @@ def chain_power(section: Any, n: Any) -> sp.Matrix:
     section : FourPole or 2x2 matrix
         The repeated section (a four-pole, or its chain matrix).
     n : int or SymPy symbol
-        Number of sections (a symbol gives the formula for general ``n``).
+        Number of sections, a positive integer (a symbol gives the closed form for general ``n``).
 
     Returns
     -------
-    sympy.Matrix
+    FourPole or sympy.Matrix
+        A :class:`FourPole` when ``section`` is one and ``n`` an integer; otherwise the chain matrix.
 
     Examples
     --------
-    >>> import sympy as sp
-    >>> from symosc.networks import chain_power
+    >>> import numpy as np, sympy as sp
+    >>> from symosc.networks import chain_power, series_element, shunt_element
     >>> n = sp.Symbol("n", integer=True, positive=True)
     >>> chain_power([[2, 1], [3, 2]], n)[0, 1]
     chebyshevu(n - 1, 2)
@@ -330,24 +338,47 @@ def chain_power(section: Any, n: Any) -> sp.Matrix:
     Matrix([
     [26, 15],
     [45, 26]])
+    >>> p = sp.Symbol("p")
+    >>> line = chain_power(series_element(p) @ shunt_element(1 / p), 100)   # 100 L-C sections
+    >>> line.chain[0, 1].as_poly(p).degree()
+    199
+    >>> line.evaluate_numeric([0.5, 1.5]).shape                              # ABCD at omega = 0.5, 1.5 rad/s
+    (2, 2, 2)
 
     See Also
     --------
-    cascade, image_parameters
+    cascade, image_parameters, FourPole.evaluate_numeric
     """
-    A = section.chain if isinstance(section, FourPole) else check_sympy_matrix("section", section)
-    if A.shape != (2, 2):
-        raise ParameterError(f"section must be a FourPole or 2x2 matrix, got shape {A.shape}")
+    if isinstance(section, FourPole):
+        A = None
+    else:
+        A = check_sympy_matrix("section", section)
+        if A.shape != (2, 2):
+            raise ParameterError(f"section must be a FourPole or 2x2 matrix, got shape {A.shape}")
     n = as_expr(n, "n")
     if n.is_integer is False or n.is_positive is False:
         raise ParameterError(f"n must be a positive integer (number of sections), got {n}")
+    if n.is_Integer:
+        if A is None:
+            return section ** int(n)
+        if sp.cancel(A.det()) == 0:
+            raise ModelError("the section's chain matrix is singular (det A = 0)")
+        return _exact_power(A, int(n))
+    A = section.chain if A is None else A
     delta = sp.cancel(A.det())
     if delta == 0:
         raise ModelError("the section's chain matrix is singular (det A = 0)")
     root = sp.sqrt(delta) if delta != 1 else sp.Integer(1)
     x = sp.cancel(A.trace() / (2 * root)) if root == 1 else A.trace() / (2 * root)
     factor = delta ** ((n - 1) / 2) if delta != 1 else sp.Integer(1)
-    M = factor * (sp.chebyshevu(n - 1, x) * A - root * sp.chebyshevu(n - 2, x) * sp.eye(2))
-    if n.is_Integer:
-        M = M.applyfunc(lambda e: sp.cancel(sp.expand(e)))
-    return M
+    return factor * (sp.chebyshevu(n - 1, x) * A - root * sp.chebyshevu(n - 2, x) * sp.eye(2))
+
+
+def _exact_power(A: sp.Matrix, n: int) -> sp.Matrix:
+    """``A**n`` by repeated squaring in the ring of the entries (SymPy expressions for the ``EX`` domain)."""
+    from sympy.polys.matrices import DomainMatrix
+
+    D = DomainMatrix.from_Matrix(A)
+    if D.domain.is_EX or D.domain.is_EXRAW:
+        return (A**n).applyfunc(lambda e: sp.cancel(sp.expand(e)))
+    return (D**n).to_Matrix().applyfunc(sp.cancel)

@@ -12,20 +12,27 @@ Z + Z_H
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import sympy as sp
-from sympy.polys.matrices import DomainMatrix
 
 from ..._printing import SymPyPrintable
-from ..._validate import validated
-from ...errors import ModelError, ParameterError
+from ..._validate import check_finite_array, validated
+from ...errors import AccuracyWarning, ModelError, ParameterError
 from .._util import P, as_expr, as_symbol, is_zero
-from ._nodal import Netlist, cascade_netlists
+from ._chain_product import Deferred, PendingChain, PendingNetlist, merge_runs, mpmath_product, numeric_product
+from ._nodal import Netlist
 from .conversions import _kind, convert_parameters
 
 __all__ = ["FourPole", "cascade"]
+
+#: the chain matrix and netlist fields: a cascade stores its factors and multiplies them out on first read
+_CHAIN = Deferred()
+_NETLIST = Deferred(None)
 
 
 @dataclass(frozen=True)
@@ -66,13 +73,16 @@ class FourPole(SymPyPrintable):
     convert_parameters, cascade, image_parameters
     """
 
-    chain: Any
+    chain: Any = _CHAIN
     p: sp.Symbol = P
-    netlist: Netlist | None = field(default=None, compare=False)
+    netlist: Netlist | None = field(default=_NETLIST, compare=False)
     isolated: bool = field(default=False, compare=False)
     name: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        if self._runs() is not None:  # a cascade: the factors were checked, the product is formed on first read
+            as_symbol(self.p)
+            return
         try:
             A = sp.ImmutableMatrix(self.chain)
         except (TypeError, ValueError) as exc:
@@ -208,6 +218,10 @@ class FourPole(SymPyPrintable):
 
     def reversed(self) -> FourPole:
         """The same network driven from the other side (ports interchanged)."""
+        runs = self._runs()
+        if runs is not None:  # rev(A B) = rev(B) rev(A): rev(A) = J A^-1 J with J = diag(1, -1)
+            parts = [(f.reversed(), n) for f, n in reversed(runs)]
+            return _product(parts, self.p, self.isolated, f"reversed({self.name})" if self.name else "")
         A = self.chain
         Ar = sp.Matrix([[A[1, 1], A[0, 1]], [A[1, 0], A[0, 0]]]) / A.det()
         net = None
@@ -239,17 +253,24 @@ class FourPole(SymPyPrintable):
         return sp.cancel((A[1, 1] * Zx + A[0, 1]) / (A[1, 0] * Zx + A[0, 0]))
 
     def subs(self, *args: Any, **kwargs: Any) -> FourPole:
-        """Substitute into the chain matrix (the terminal-level netlist is dropped: the result is not Brune-tested).
+        """Substitute into the chain matrix (the netlist is dropped unless nothing structural changes).
+
+        A cascade substitutes into each of its sections and stays a product (see :meth:`evaluate_numeric`).
 
         Parameters
         ----------
         args
             What to substitute, as for ``sympy.Matrix.subs``: ``old, new``, a dict or a list of ``(old, new)`` pairs.
         """
+        runs = self._runs()
+        if runs is not None:
+            return _product([(f.subs(*args, **kwargs), n) for f, n in runs], self.p, self.isolated, self.name)
         return FourPole(self.chain.subs(*args, **kwargs), self.p, None, self.isolated, self.name)
 
     def evaluate(self, value: Any) -> Any:
         """Chain matrix at ``p = value`` as an mpmath matrix (``value`` may be complex, e.g. ``1j*omega``).
+
+        A cascade is evaluated as the product of its sections' matrices at the working precision.
 
         Parameters
         ----------
@@ -258,11 +279,120 @@ class FourPole(SymPyPrintable):
         """
         import mpmath
 
+        runs = self._runs()
+        if runs is not None:
+            return mpmath_product(runs, value)
         f = sp.lambdify(self.p, self.chain, "mpmath")
         return mpmath.matrix(f(mpmath.mpmathify(value)).tolist())
 
+    def evaluate_numeric(self, omega: Any = None, values: Mapping | None = None, *, p_values: Any = None) -> np.ndarray:
+        """Chain (ABCD) matrices at many frequencies in double precision: an array of shape ``(..., 2, 2)``.
+
+        The layout of scikit-rf's ``Network.a`` (frequency first).  A cascade is evaluated as the product of its
+        sections' numeric chain matrices at every frequency (``numpy.matmul`` on the stacks, repeated squaring for
+        runs of identical sections), never through its multiplied-out polynomials: those cancel catastrophically in
+        a pass band (100 L-C sections: degree 200, coefficients of 1e60, values of order one).  So build long chains
+        with :func:`cascade`, ``@``, ``**`` or :func:`chain_power` and evaluate them here.
+
+        Parameters
+        ----------
+        omega : float or array_like of float, optional
+            Angular frequencies in rad/s; the chain matrix is evaluated at ``p = i*omega``.
+        values : mapping, optional
+            Numbers for the other symbols of the chain matrix (element values), keyed by Symbol or name.
+        p_values : complex or array_like of complex, optional
+            Values of the operator variable ``p`` itself (instead of ``omega``), e.g. ``sigma + i*omega``.
+
+        Returns
+        -------
+        ndarray
+            Complex, shape ``shape(omega) + (2, 2)``.
+
+        Raises
+        ------
+        ParameterError
+            Neither or both of ``omega`` and ``p_values`` given, non-finite frequencies, or a value missing for a
+            symbol of the chain matrix.
+
+        Warns
+        -----
+        AccuracyWarning
+            When an entry overflows double precision (a long chain far in its stop band grows like
+            ``exp(n * attenuation)``).
+
+        Examples
+        --------
+        >>> import numpy as np, sympy as sp
+        >>> from symosc.networks import series_element, shunt_element
+        >>> p = sp.Symbol("p")
+        >>> lc = series_element(p) @ shunt_element(1 / p)            # one L-C low-pass section
+        >>> A = (lc**100).evaluate_numeric(np.array([0.5, 1.0, 1.5]))  # pass band: omega < 2
+        >>> A.shape
+        (3, 2, 2)
+        >>> np.allclose(np.linalg.det(A), 1.0)                        # reciprocal: det A = 1
+        True
+
+        See Also
+        --------
+        evaluate, cascade, chain_power
+        """
+        if (omega is None) == (p_values is None):
+            raise ParameterError("evaluate_numeric needs exactly one of omega (rad/s) or p_values")
+        if p_values is None:
+            p_arr = 1j * check_finite_array("omega", omega)
+        else:
+            p_arr = check_finite_array("p_values", p_values, complex_ok=True)
+        given = dict(values) if values is not None else {}
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = self._numeric_chain(p_arr, given)
+        if not np.all(np.isfinite(out)):
+            import warnings
+
+            warnings.warn(
+                "the chain matrix is not finite at some frequencies (it overflows double precision far in a stop "
+                "band, or p is at a pole of a section); evaluate there with evaluate() at higher precision",
+                AccuracyWarning,
+                stacklevel=2,
+            )
+        return out
+
+    def _numeric_chain(self, p_arr: np.ndarray, values: dict) -> np.ndarray:
+        runs = self._runs()
+        if runs is not None:
+            return numeric_product(runs, p_arr, values)
+        fn, others = self._chain_function
+        from ...numeric import resolve
+
+        args = resolve(others, values) if others else []
+        out = np.asarray(fn.raw(p_arr, *args), dtype=complex)
+        shape = (*p_arr.shape, 2, 2)
+        return out if out.shape == shape else np.broadcast_to(out, shape)
+
+    @functools.cached_property
+    def _chain_function(self) -> tuple[Any, list[sp.Symbol]]:
+        """The chain matrix compiled once (NumPy backend), and its symbols other than ``p`` in call order."""
+        from ...numeric import compile as compile_numeric
+
+        others = sorted(self.chain.free_symbols - {self.p}, key=lambda s: s.name)
+        return compile_numeric(self.chain, [self.p, *others], backend="numpy", check=False), others
+
+    def _runs(self) -> tuple[tuple[FourPole, int], ...] | None:
+        """The factors ``((four_pole, power), ...)`` of a cascade not yet multiplied out, else None."""
+        stored = _CHAIN.stored(self)
+        return stored.runs if isinstance(stored, PendingChain) else None
+
     def __matmul__(self, other: FourPole) -> FourPole:
         return cascade(self, other)
+
+    def __pow__(self, n: int) -> FourPole:
+        if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
+            raise ParameterError(
+                f"a four-pole's power is the cascade of n >= 1 copies; n must be such an integer, got {n!r}"
+            )
+        if n == 1:
+            return self
+        name = f"({self.name})**{int(n)}" if self.name else ""
+        return _product([(self, int(n))], self.p, self.isolated, name)
 
     # -- printing ------------------------------------------------------------------------------------------
     def __repr__(self) -> str:
@@ -279,14 +409,29 @@ class FourPole(SymPyPrintable):
         return f"${self._latex(None)}$"
 
 
+def _product(runs: list[tuple[FourPole, int]], p: sp.Symbol, isolated: bool, name: str) -> FourPole:
+    """A four-pole whose chain matrix is the product of ``runs``, formed exactly on first read."""
+    merged = merge_runs(runs)
+    return FourPole(PendingChain(merged), p, PendingNetlist(merged), isolated, name)
+
+
 @validated
 def cascade(*four_poles: FourPole) -> FourPole:
     """Cascade (tandem) connection, chain matrix A = A_1 A_2 ⋯ A_n (Bulgakov (1954), eq. (8.270)).
 
+    The result keeps its sections: its exact chain matrix is multiplied out (in the polynomial ring or rational
+    function field of the entries) when first read, and :meth:`FourPole.evaluate_numeric` multiplies the sections'
+    numeric matrices frequency by frequency, which stays accurate where the multiplied-out polynomials cancel.
+    ``a @ b`` is ``cascade(a, b)``; ``a**n`` is the cascade of ``n`` copies.
+
     Parameters
     ----------
-    four_poles : FourPole
-        The four-poles in order from input to output, at least one.
+    *four_poles : FourPole
+        The sections, from input to output (at least one).
+
+    Returns
+    -------
+    FourPole
 
     Examples
     --------
@@ -299,7 +444,7 @@ def cascade(*four_poles: FourPole) -> FourPole:
 
     See Also
     --------
-    chain_power, series, parallel
+    chain_power, series, parallel, FourPole.evaluate_numeric
     """
     if not four_poles:
         raise ParameterError("cascade needs at least one four-pole")
@@ -307,24 +452,7 @@ def cascade(*four_poles: FourPole) -> FourPole:
         if not isinstance(f, FourPole):
             raise ParameterError(f"four_poles[{i}] must be a FourPole, got {type(f).__name__}")
     fps = list(four_poles)
-    net = cascade_netlists([f.netlist for f in fps])
+    if len(fps) == 1:
+        return fps[0]
     isolated = any(f.isolated for f in fps)
-    A = _chain_product([f.chain for f in fps])
-    return FourPole(A, fps[0].p, net, isolated, " * ".join(f.name for f in fps if f.name))
-
-
-def _chain_product(chains: list[sp.Matrix]) -> sp.Matrix:
-    """``A_1 A_2 ⋯ A_n`` with cancelled entries: exact arithmetic in the polynomial ring or rational function field
-    of the entries (SymPy's ``DomainMatrix``: products of expressions keep growing unexpanded entries; the cascade
-    of eight L-C sections in the networks benchmark took 0.84 s that way, 0.13 s this way), SymPy's expressions
-    when the entries need its ``EX`` domain (radicals, functions)."""
-    whole = DomainMatrix.from_Matrix(sp.Matrix.hstack(*chains))
-    if whole.domain.is_EX or whole.domain.is_EXRAW:
-        A = sp.eye(2)
-        for chain in chains:
-            A = A * chain
-        return A.applyfunc(sp.cancel)
-    A = whole[:, 0:2]
-    for i in range(1, len(chains)):
-        A = A * whole[:, 2 * i : 2 * i + 2]
-    return A.to_Matrix().applyfunc(sp.cancel)
+    return _product([(f, 1) for f in fps], fps[0].p, isolated, " * ".join(f.name for f in fps if f.name))

@@ -216,6 +216,11 @@ class _Arith:
             acc = self.add(acc, self.scale(t, c))
         return acc
 
+    def cauchy(self, a: list, b: list, *, shift: int = 0, limit: int, scalar_a: bool = False) -> _DirectCauchy:
+        """``m -> sum_(i=0..m) a_(i+shift) b_(m-i+shift)`` for ``m = 0, 1, ...`` (``a``, ``b`` lists that grow;
+        ``a`` of scalars when ``scalar_a``): here formed pair by pair at each order."""
+        return _DirectCauchy(self, a, b, shift, scalar_a)
+
     def solve_forced(self, r: Trig) -> Trig:
         """Periodic solution of ``x'' + x = r`` with the n = 1 harmonics of ``r`` ignored (and set to 0)."""
         raise NotImplementedError
@@ -250,6 +255,24 @@ class _Arith:
 
     def is_zero_num(self, x: Any) -> bool:
         return x == 0
+
+
+class _DirectCauchy:
+    """Cauchy coefficients formed pair by pair (see :meth:`_Arith.cauchy`); a square uses each pair once."""
+
+    def __init__(self, ar: _Arith, a: list, b: list, shift: int, scalar_a: bool):
+        self.ar, self.a, self.b, self.shift, self.scalar_a = ar, a, b, shift, scalar_a
+
+    def __call__(self, m: int) -> Trig:
+        a, b, sh, ar = self.a, self.b, self.shift, self.ar
+        if self.scalar_a:
+            return ar.lincomb([a[i + sh] for i in range(m + 1)], [b[m - i + sh] for i in range(m + 1)])
+        if a is not b or m == 0:
+            return ar.dot([(a[i + sh], b[m - i + sh]) for i in range(m + 1)])
+        # a square: the pairs (i, m - i) and (m - i, i) give the same product
+        pairs = [(a[i + sh], a[m - i + sh]) for i in range((m + 1) // 2)]
+        middle = (a[m // 2 + sh], a[m // 2 + sh]) if m % 2 == 0 else None
+        return ar.symmetric_dot(pairs, middle)
 
 
 class ExactArith(_Arith):
@@ -385,6 +408,10 @@ class ExactArith(_Arith):
     def coeff(self, t: Trig, kind: str, n: int) -> Fraction:
         arr = t.cos if kind == "c" else t.sin
         return Fraction(int(arr[n]), t.den) if n < len(arr) else Fraction(0)
+
+    def exact_harmonics(self, t: Trig) -> tuple[int, list[int], list[int]]:
+        """``(den, cos numerators, sin numerators)``."""
+        return int(t.den), [int(c) for c in t.cos.tolist()], [int(c) for c in t.sin.tolist()]
 
     def sine_moment(self, t: Trig, start: int = 2) -> Fraction:
         """``sum n * b_n`` (n >= start) summed on the integer numerators, reduced once."""
@@ -628,7 +655,7 @@ def from_number(arith: _Arith, value: Any) -> Any:
     import sympy as sp
 
     value = sp.sympify(value)
-    if isinstance(arith, ExactArith):
+    if arith.name == "exact":
         if not value.is_Rational:
             raise TypeError(f"{value} is not rational")
         return Fraction(int(value.p), int(value.q))

@@ -154,9 +154,10 @@ class _RawSeries:
 
 
 class _Tables:
-    """Coefficients ``[eps^m] x^p v^q`` built incrementally (one new coefficient per order, O(m) products)."""
+    """Coefficients ``[eps^m] x^p v^q`` built incrementally (one new coefficient per order, Cauchy products in eps
+    formed by :meth:`_Arith.cauchy`: pair by pair, or in relaxed blocks for the FLINT exact arithmetic)."""
 
-    def __init__(self, ar: _Arith, pairs: set[tuple[int, int]]):
+    def __init__(self, ar: _Arith, pairs: set[tuple[int, int]], limit: int):
         self.ar = ar
         self.pmax = max([p for p, _ in pairs] + [1])
         self.qmax = max([q for _, q in pairs] + [1])
@@ -165,25 +166,25 @@ class _Tables:
         self.V: dict[int, list[Trig]] = {q: [] for q in range(1, self.qmax + 1)}
         self.M: dict[tuple[int, int], list[Trig]] = {pq: [] for pq in self.mixed}
         self.one = ar.monomial("c", 0, ar.scalar(1))
-
-    def _conv(self, a: list[Trig], b: list[Trig], m: int) -> Trig:
-        if a is not b or m == 0:
-            return self.ar.dot([(a[i], b[m - i]) for i in range(m + 1)])
-        # a square: the pairs (i, m - i) and (m - i, i) give the same product
-        pairs = [(a[i], b[m - i]) for i in range((m + 1) // 2)]
-        return self.ar.symmetric_dot(pairs, (a[m // 2], a[m // 2]) if m % 2 == 0 else None)
+        self.products = {}
+        for p in range(2, self.pmax + 1):
+            self.products[("X", p)] = ar.cauchy(self.X[1], self.X[p - 1], limit=limit)
+        for q in range(2, self.qmax + 1):
+            self.products[("V", q)] = ar.cauchy(self.V[1], self.V[q - 1], limit=limit)
+        for p, q in self.mixed:
+            self.products[(p, q)] = ar.cauchy(self.X[p], self.V[q], limit=limit)
 
     def push(self, xm: Trig, vm: Trig) -> None:
         """Append the coefficients of order m = len(X[1]) given x_m and v_m."""
         m = len(self.X[1])
         self.X[1].append(xm)
         for p in range(2, self.pmax + 1):
-            self.X[p].append(self._conv(self.X[1], self.X[p - 1], m))
+            self.X[p].append(self.products[("X", p)](m))
         self.V[1].append(vm)
         for q in range(2, self.qmax + 1):
-            self.V[q].append(self._conv(self.V[1], self.V[q - 1], m))
+            self.V[q].append(self.products[("V", q)](m))
         for p, q in self.mixed:
-            self.M[(p, q)].append(self._conv(self.X[p], self.V[q], m))
+            self.M[(p, q)].append(self.products[(p, q)](m))
 
     def get(self, p: int, q: int, m: int) -> Trig | None:
         if p == 0 and q == 0:
@@ -242,21 +243,23 @@ def _poincare_raw(coeffs: dict, dcoeffs: dict, ar: _Arith, order: int) -> _RawSe
     pairs = {(p, q) for (p, q, _) in coeffs} | {(p, q) for (p, q, _) in dcoeffs}
     pairs.add((1, 0))
     pairs.add((0, 1))
-    tables = _Tables(ar, pairs)
+    tables = _Tables(ar, pairs, order)
     one = ar.scalar(1)
     x: list[Trig] = [ar.monomial("c", 1, one)]
     s: list[Any] = [one]
     w: list[Any] = [one]
+    # v_m = sum_i w_i x'_{m-i};  sum_{i=1}^{k-1} s_i x_{k-i} = (s_{.+1} * x_{.+1})_{k-2}
+    w_x = ar.cauchy(w, x, limit=order, scalar_a=True)
+    s_x = ar.cauchy(s, x, shift=1, limit=order - 1, scalar_a=True)
     var = None
     L = None
     for k in range(1, order + 2):
         m = k - 1
-        # v_m = sum_i w_i x'_{m-i}
-        vm = ar.deriv(ar.lincomb(w[: m + 1], x[m::-1]))
+        vm = ar.deriv(w_x(m))
         tables.push(x[m], vm)
         R = _combine(ar, tables, coeffs, m)
         if k > 1:
-            R = ar.sub(R, ar.deriv(ar.deriv(ar.lincomb(s[1:k], x[k - 1 : 0 : -1]))))
+            R = ar.sub(R, ar.deriv(ar.deriv(s_x(k - 2))))
         if k == 1:
             sk = _neg(ar, ar.coeff(R, "c", 1))
             var = tables.variations()

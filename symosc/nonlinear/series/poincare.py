@@ -33,7 +33,7 @@ from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
-from ._fourier import ExactArith, FloatArith, from_number, make_arith
+from ._fourier import FloatArith, _fmpz_poly, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
 from ._series import EpsSeries, SeriesResult, to_sympy_number
 
@@ -295,7 +295,7 @@ class LimitCycleSeries(SeriesResult, SymPyPrintable):
 
 
 #: largest series order accepted by limit_cycle in exact arithmetic (see the error message for the cost)
-_MAX_ORDER = 120
+_MAX_ORDER = 200
 
 
 @validated
@@ -380,10 +380,10 @@ def limit_cycle(
         raise ParameterError(f"unknown arithmetic {arithmetic!r}; choose one of {_ARITHMETICS}")
     if arithmetic == "exact" and order > _MAX_ORDER:
         raise ParameterError(
-            f"order {order} is beyond the supported range (<= {_MAX_ORDER} in exact arithmetic): the cost grows "
-            "about as order**3 (van der Pol: order 48 takes ~0.2 s, order 100 ~5 s, order 120 ~15 s); for the "
-            "radius of convergence order 40 is ample, evaluate_pade continues the series beyond it, and "
-            "arithmetic='mpmath' or 'float' is much cheaper"
+            f"order {order} is beyond the supported range (<= {_MAX_ORDER} in exact arithmetic): the numbers grow "
+            "like order**2 bits and the cost about as order**4.5 (van der Pol: order 100 takes a few seconds, "
+            "order 150 about half a minute, order 200 a few minutes); for the radius of convergence order 40 is "
+            "ample, evaluate_pade continues the series beyond it, and arithmetic='mpmath' or 'float' is much cheaper"
         )
     f = sp.sympify(f)
     terms = _polynomial_terms(f, (x, v), eps, "f")
@@ -423,7 +423,8 @@ def limit_cycle(
     stable = bool(sp.N(dH, 30) > 0)
 
     # scale x = A0*y: y'' + y = eps g(y, w, eps), g = f(A0 y, A0 w)/A0
-    ar = make_arith(arithmetic, dps, order)
+    ar = relaxed_exact_arith() if arithmetic == "exact" else None
+    ar = ar or make_arith(arithmetic, dps, order)
     coeffs: dict[tuple, Any] = {}
     dcoeffs: dict[tuple, Any] = {}
     for (p, q, j), c in terms.items():
@@ -444,6 +445,15 @@ def limit_cycle(
     return _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw)
 
 
+def relaxed_exact_arith() -> Any:
+    """The exact arithmetic with relaxed block products (python-flint installed), else None."""
+    if not _fmpz_poly():
+        return None
+    from ._laurent import LaurentArith
+
+    return LaurentArith()
+
+
 def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _RawSeries) -> LimitCycleSeries:
     ar = raw.arith
     prec_digits = dps or mpmath.mp.dps
@@ -453,9 +463,10 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
 
     w = tuple(num(c) for c in raw.w[: order + 1])
     # period 2 pi / omega
+    exact = ar.name == "exact"
     inv = [ar.scalar(1)]
     for k in range(1, order + 1):
-        acc = 0 if not isinstance(ar, ExactArith) else Fraction(0)
+        acc = 0 if not exact else Fraction(0)
         if isinstance(ar, FloatArith):
             acc = 0.0
         for i in range(1, k + 1):
@@ -465,10 +476,10 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
     harmonics = []
     amp = []
     for xk in raw.x[: order + 1]:
-        if isinstance(ar, ExactArith):  # integer numerators; the Rationals are built when first read
-            den = int(xk.den)
-            harmonics.append((den, tuple(xk.cos.tolist()), tuple(xk.sin.tolist())))
-            amp.append(sp.Rational(int(sum(xk.cos.tolist())), den))
+        if exact:  # integer numerators; the Rationals are built when first read
+            den, cos, sin = ar.exact_harmonics(xk)
+            harmonics.append((den, tuple(cos), tuple(sin)))
+            amp.append(sp.Rational(sum(cos), den))
             continue
         cs, ss = ar.values(xk)
         cs = [to_sympy_number(c, prec_digits) for c in cs]
@@ -493,7 +504,7 @@ def _package(f, x, v, eps, order, arithmetic, dps, A0, H, roots, stable, raw: _R
         amplitude=EpsSeries(tuple(amp), eps, order, A0s, name="amplitude"),
         floquet_exponent=EpsSeries(lam, eps, order + 1, name="floquet_exponent"),
         stable=stable,
-        _harmonics=_ExactHarmonics(tuple(harmonics)) if isinstance(ar, ExactArith) else tuple(harmonics),
+        _harmonics=_ExactHarmonics(tuple(harmonics)) if exact else tuple(harmonics),
     )
 
 
