@@ -475,7 +475,7 @@ class MathieuCoefficients(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Plot |coefficient| against the Fourier index on a log scale; returns the Axes.
+        """Plot ``|coefficient|`` against the Fourier index on a log scale; returns the Axes.
 
         Parameters
         ----------

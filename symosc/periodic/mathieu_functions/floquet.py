@@ -91,7 +91,7 @@ class MathieuExponent(SymPyPrintable):
     zone : int or numpy.ndarray
         n: the integer part of nu (the number of characteristic values below a, halved).
     stable : bool or numpy.ndarray
-        Whether every solution is bounded (|cos pi nu| < 1).
+        Whether every solution is bounded (``|cos(pi nu)| < 1``).
     error_estimate : float or numpy.ndarray
         Estimated absolute error of nu (large only where nu is inherently ill-conditioned: at the edges of the
         zones, d nu / d a is unbounded).
@@ -331,7 +331,7 @@ class FundamentalSolutions(SymPyPrintable):
     method : str
         ``"floquet"`` (from the Floquet solution) or ``"ode"`` (integration, near integer nu).
     error_estimate : float
-        Estimated absolute error (relative to max(1, |w|)).
+        Estimated absolute error (relative to ``max(1, |w|)``).
     """
 
     a: float
@@ -442,7 +442,7 @@ def mathieu_fundamental(a: float, q: float, x: Any, *, tol: float = 1e-10) -> Fu
     x : float or array_like
         Arguments in radians.
     tol : float
-        Target error (relative to max(1, |w|)); the Floquet route is used when its conditioning allows it, the
+        Target error (relative to ``max(1, |w|)``); the Floquet route is used when its conditioning allows it, the
         integration otherwise.
 
     Returns

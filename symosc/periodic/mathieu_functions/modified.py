@@ -127,7 +127,7 @@ class ModifiedMathieuValues(SymPyPrintable):
     derivative_error_estimate: Any
 
     def relative_error_estimate(self) -> Any:
-        """error_estimate / |value| (large near zeros of the function)."""
+        """``error_estimate / |value|`` (large near zeros of the function)."""
         with np.errstate(divide="ignore"):
             return np.asarray(self.error_estimate) / np.abs(self.values)
 
@@ -174,7 +174,7 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
     z : float or array_like
         Real radial argument.
     tol : float
-        Largest accepted error estimate, relative to max(|value|, 1e-3) (a ConvergenceError above it).
+        Largest accepted error estimate, relative to ``max(|value|, 1e-3)`` (a ConvergenceError above it).
 
     Returns
     -------
