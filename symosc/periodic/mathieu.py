@@ -208,8 +208,9 @@ def mathieu_characteristic(
         ``"a"`` for a_n (even solutions ce_n), ``"b"`` for b_n (odd solutions se_n, n >= 1).
     n : int or array_like of int
         Index, n >= 0 (n >= 1 for b); an array of indices broadcasts against q (as in ``scipy.special``).
-    q : float or array_like
-        Any finite real q (negative q by the DLMF 28.2(vii) symmetries).
+    q : float, mpmath.mpf, str or array_like
+        Any finite real q (negative q by the DLMF 28.2(vii) symmetries); for ``method="mp"`` an ``mpf`` or a decimal
+        string keeps every digit.
     method : {"auto", "hill", "mp", "series"}
         See the module docstring.
     dps : int, optional
