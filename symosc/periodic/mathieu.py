@@ -54,7 +54,7 @@ import numpy as np
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
-from . import _hill, _mathieu_auto
+from . import _hill, _mathieu_auto, _mathieu_seed
 from .mathieu_series import _check_n, mathieu_series_value
 
 __all__ = ["MathieuValues", "mathieu_a", "mathieu_b", "mathieu_characteristic", "mathieu_kernel"]
@@ -161,38 +161,24 @@ class _Solver:
             return r.value, r.error_estimate
         return _hill.refined_value(fam, k, qf, self.tol or _DEFAULT_TOL)
 
-    def accuracy(self, value) -> float:
-        if self.method == "mp":
-            return 10.0 ** (-self.dps) * max(1.0, abs(float(value)))
-        return 1e-13 * max(1.0, abs(float(value)))
 
+def _value_at(kind: str, n: int, q: float, qm, solver: _Solver) -> tuple[Any, float]:
+    """kind_n(q) for one q >= 0: solve, then enforce the ordering against the nearly degenerate neighbours.
 
-def _gap_logs(kind: str, n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Log estimates of the gaps to the lower and upper neighbour of kind_n in the chain a_0 < b_1 < a_1 < ..."""
-    if kind == "a":
-        return _hill.log_gap_estimates(n, q)
-    return _hill.log_gap_estimates(n - 1, q)[1], _hill.log_gap_estimates(n, q)[0]
-
-
-def _value_at(kind: str, n: int, q: float, qm, gaps: tuple[float, float], solver: _Solver) -> tuple[Any, float]:
-    """kind_n(q) for one q >= 0: solve, then enforce the ordering against neighbours closer than the rounding error.
-
-    Where the (estimated) gap to a neighbour is below 1e6 times the accuracy, the neighbour is computed too and the
-    value clamped into [lower neighbour, upper neighbour].  The clamped values of both members of a pair come from the
-    same two raw numbers, so the ordering holds whichever of the two functions is called.
+    Inside the clamp regions of :func:`symosc.periodic._mathieu_seed.neighbours` (relative gap below 1e-12, where
+    two values computed independently could come out of order) the neighbour is computed too and the value clamped
+    into [lower neighbour, upper neighbour].  The clamped values of both members of a pair come from the same two raw
+    numbers, so the ordering holds whichever of the two functions is called.
     """
     value, err = solver.raw(kind, n, q, qm)
     if solver.method == "series":
         return value, err
-    if kind == "a":
-        below, above = (("b", n) if n >= 1 else None), ("b", n + 1)
-    else:
-        below, above = ("a", n - 1), ("a", n)
-    threshold = math.log(1e6 * solver.accuracy(value))
-    if below is not None and gaps[0] < threshold:
-        value = max(value, solver.raw(*below, q, qm)[0])
-    if gaps[1] < threshold:
-        value = min(value, solver.raw(*above, q, qm)[0])
+    lower, upper = _mathieu_seed.neighbours(kind, n)
+    point = np.array([q])
+    if lower is not None and lower.covers(point)[0]:
+        value = max(value, solver.raw(lower.kind, lower.n, q, qm)[0])
+    if upper is not None and upper.covers(point)[0]:
+        value = min(value, solver.raw(upper.kind, upper.n, q, qm)[0])
     return value, err
 
 
@@ -307,6 +293,10 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
     other = "b" if kind == "a" else "a"
     qabs = np.abs(flat_f)
     if method == "auto":
+        if not swap.any():
+            values, errors = _mathieu_auto.auto_array(kind, n, qabs, tol)
+            _check_tol(kind, n, values, errors, tol)
+            return values, errors
         values = np.empty(flat_f.shape)
         errors = np.empty(flat_f.shape)
         for which, sel in ((kind, ~swap), (other, swap)):
@@ -315,8 +305,6 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
                 values[idx], errors[idx] = _mathieu_auto.auto_array(which, n, qabs[idx], tol)
         _check_tol(kind, n, values, errors, tol)
         return values, errors
-    gaps_same = _gap_logs(kind, n, qabs) if not swap.all() else None
-    gaps_other = _gap_logs(other, n, qabs) if swap.any() and not (other == "b" and n == 0) else None
     values = np.empty(flat_f.shape, dtype=object if use_mp else float)
     errors = np.empty(flat_f.shape, dtype=float)
     for i, (x, xo) in enumerate(zip(flat_f, flat_o, strict=True)):
@@ -325,8 +313,7 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
             with mpmath.workdps(dps + 10):
                 qm = abs(mpmath.mpf(xo) if isinstance(xo, str | mpmath.mpf) else mpmath.mpf(float(x)))
         solver = _Solver(method, dps, tol)
-        k_eff, g = (other, gaps_other) if swap[i] else (kind, gaps_same)
-        values[i], errors[i] = _value_at(k_eff, n, float(qabs[i]), qm, (g[0][i], g[1][i]), solver)
+        values[i], errors[i] = _value_at(other if swap[i] else kind, n, float(qabs[i]), qm, solver)
     return values, errors
 
 
