@@ -31,7 +31,9 @@ def auto_scalar(kind: str, n: int, q: float, tol) -> tuple[float, float]:
     lib = _hill_c.kernel()
     if lib is not None:
         err = ctypes.c_double()
-        value = lib.symosc_mathieu_auto1(_mathieu_seed.plan(kind, n).ctypes.data, q, tol or DEFAULT_TOL, err)
+        plan = _mathieu_seed.plan(kind, n)
+        _hill_c.FAST.register(int(kind == "b"), n, plan)
+        value = lib.symosc_mathieu_auto1(plan.ctypes.data, q, tol or DEFAULT_TOL, ctypes.byref(err))
         if value == value:
             return value, err.value
     values, errors = general_array(kind, n, np.array([q]), tol)

@@ -13,9 +13,9 @@ Clamp regions.  The chain a_0 <= b_1 <= a_1 <= b_2 <= ... has nearly degenerate 
 exponentially small at large q, DLMF 28.8.2; a_n - b_n is O(q^n) at small q, DLMF 28.6): where the gap is below the
 rounding error the two values are computed independently and clamped into order.  The regions where the gap is
 below ``THRESHOLD (n^2 + 2q + 1)`` -- more than 50 times a bound on the rounding error of two values -- are measured
-once per pair from certified values (the relative gap is monotone there): ``h >= h_c(n)`` for (a_n, b_{n+1}) and ``h <= h_s(n)`` for
-(b_n, a_n), each widened by 1 % on the safe side.  Measuring them replaces asymptotic gap formulas, which are off by
-orders of magnitude where h is comparable to n.
+once per pair from certified values (the relative gap is monotone there): ``h >= h_c(n)`` for (a_n, b_{n+1}) and
+``h <= h_s(n)`` for (b_n, a_n), each widened by 1 % on the safe side.  Measuring them replaces asymptotic gap
+formulas, which are off by orders of magnitude where h is comparable to n.
 """
 
 from __future__ import annotations
@@ -114,6 +114,15 @@ def _crude(kind: str, n: int, h: np.ndarray) -> np.ndarray:
         return np.where(h > 0.5 * s, asymptotic(s, np.maximum(h, 1e-3)), small)
 
 
+def _node_values(kind: str, n: int, q: np.ndarray, start: np.ndarray) -> np.ndarray:
+    """kind_n at the nodes: the C kernel from ``start``, or (NumPy fallback) LAPACK's bisection per point, which needs
+    no start (a seed table needs ~1e-13 relative accuracy, not certification)."""
+    if _hill_c.kernel() is not None:
+        return refine(kind, n, q, start, 1e-13)[0]
+    fam, k = _hill.family_index(kind, n)
+    return np.array([_hill.solve_hill(fam, k, float(x)).value if x else float((2 * k + fam.offset) ** 2) for x in q])
+
+
 @functools.cache
 def table(kind: str, n: int) -> np.ndarray:
     """The seed table of kind_n (layout of the C kernel: [P, h_max, s, P + 1 breakpoints, P (DEG + 1) coefficients])."""
@@ -131,7 +140,7 @@ def table(kind: str, n: int) -> np.ndarray:
             plo, phi, pc = parent
             start = _clenshaw(pc, (2.0 * h - (plo + phi)) / (phi - plo)) - 2.0 * (h * h)
         q = h * h
-        values = refine(kind, n, q, start, 1e-13)[0]
+        values = _node_values(kind, n, q, start)
         c = _DCT @ (values + 2.0 * q)
         scale = max(1.0, float(np.min(np.abs(values))))
         if 2.0 * (abs(c[-1]) + abs(c[-2])) <= _TARGET * scale or hi - lo < 1e-3:

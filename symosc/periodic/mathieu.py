@@ -54,13 +54,14 @@ import numpy as np
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
-from . import _hill, _mathieu_auto, _mathieu_seed
+from . import _hill, _hill_c, _mathieu_auto, _mathieu_seed
 from .mathieu_series import _check_n, mathieu_series_value
 
 __all__ = ["MathieuValues", "mathieu_a", "mathieu_b", "mathieu_characteristic", "mathieu_kernel"]
 
 _METHODS = ("auto", "hill", "mp", "series")
 _DEFAULT_TOL = 1e-13
+_FAST = _hill_c.FAST
 _DEFAULT_DPS = 30
 
 
@@ -382,6 +383,10 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     >>> round(mathieu_a(1, -1.0), 12) == round(mathieu_b(1, 1.0), 12)
     True
     """
+    if type(q) is float and type(n) is int and method == "auto" and dps is None and tol is None and _FAST.value:
+        value = _FAST.value(0, n, q)  # the compiled scalar path (nan: not known yet, or the general path is needed)
+        if value == value:
+            return value
     fast = _scalar_fast_path("a", n, q, method, dps, tol)
     if fast is not None:
         return fast[0]
@@ -418,6 +423,10 @@ def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     >>> mpmath.nstr(mathieu_b(1, 0.5, method="mp", dps=25), 22)
     '0.4706543549338391115705'
     """
+    if type(q) is float and type(n) is int and method == "auto" and dps is None and tol is None and _FAST.value:
+        value = _FAST.value(1, n, q)
+        if value == value:
+            return value
     fast = _scalar_fast_path("b", n, q, method, dps, tol)
     if fast is not None:
         return fast[0]
