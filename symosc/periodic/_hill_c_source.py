@@ -521,15 +521,18 @@ EXTENSION = r"""
 #include "{python_h}"
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 typedef double (*kernel_t)(const double *, double, double, double *);
 static kernel_t kernel = 0;
 #define NMAX 4096
 static const double *plans[2][NMAX];
 
+/* set_kernel(address of symosc_mathieu_auto1): also forgets every registered plan */
 static PyObject *set_kernel(PyObject *self, PyObject *arg) {
     kernel = (kernel_t)PyLong_AsVoidPtr(arg);
     if (PyErr_Occurred()) return NULL;
+    memset(plans, 0, sizeof(plans));
     Py_RETURN_NONE;
 }
 
