@@ -17,6 +17,7 @@ import os
 
 import numpy as np
 
+from ._hill_c_fourier import FOURIER_SOURCE
 from ._hill_c_source import EXTENSION, SOURCE
 
 _PTR = ctypes.POINTER(ctypes.c_double)
@@ -46,7 +47,7 @@ def kernel():
         from ..numeric._build import CompilerError, load
 
         try:
-            lib = load(SOURCE)
+            lib = load(SOURCE + FOURIER_SOURCE)
         except CompilerError:
             lib = None
     if lib is not None:
@@ -64,6 +65,17 @@ def kernel():
         ] * 3
         lib.symosc_mathieu_auto1.restype = ctypes.c_double
         lib.symosc_mathieu_auto1.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double, ctypes.c_void_p]
+        lib.symosc_mathieu_coefficients.restype = ctypes.c_int
+        lib.symosc_mathieu_coefficients.argtypes = (
+            [ctypes.c_int] * 4 + [ctypes.c_long] + [ctypes.c_void_p] * 3 + [ctypes.c_double] + [ctypes.c_int] * 2
+            + [ctypes.c_void_p] * 8
+        )  # fmt: skip
+        lib.symosc_mathieu_sum_eps.restype = ctypes.c_double
+        lib.symosc_mathieu_sum_eps.argtypes = []
+        lib.symosc_mathieu_fourier_sum.restype = None
+        lib.symosc_mathieu_fourier_sum.argtypes = (
+            [ctypes.c_int] * 3 + [ctypes.c_long] + [ctypes.c_void_p] * 3 + [ctypes.c_int] + [ctypes.c_void_p] * 2
+        )
         _fast_path(lib)
     _state["lib"] = lib
     return lib
