@@ -70,6 +70,8 @@ def kernel():
             [ctypes.c_int] * 4 + [ctypes.c_long] + [ctypes.c_void_p] * 3 + [ctypes.c_double] + [ctypes.c_int] * 2
             + [ctypes.c_void_p] * 8
         )  # fmt: skip
+        lib.symosc_mathieu_hill_sc.restype = None
+        lib.symosc_mathieu_hill_sc.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 8
         lib.symosc_mathieu_sum_eps.restype = ctypes.c_double
         lib.symosc_mathieu_sum_eps.argtypes = []
         lib.symosc_mathieu_fourier_sum.restype = None

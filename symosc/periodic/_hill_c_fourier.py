@@ -283,4 +283,128 @@ void symosc_mathieu_fourier_sum(int offset, int sine, int deriv, long npts, cons
 
 /* the unit roundoff of the sums above (long double, where it is wider than double) */
 double symosc_mathieu_sum_eps(void) { return LDBL_EPSILON; }
+/* ---- Hill determinants of the characteristic exponent (DLMF 28.2(iv); Whittaker & Watson 1927, 19.42) ----
+   sin^2(pi nu / 2) = -(pi^2 / 4) t_0 prod_{j>=1} t_j / (2j)^2 (family ae) prod_{j>=0} t_j / (2j + 2)^2 (be),
+   cos^2(pi nu / 2) = prod_{j>=0} t_j / (2j + 1)^2 (ao) prod_{j>=0} t_j / (2j + 1)^2 (bo), t_j the LDL^T pivots of
+   T - a I of each family.  The pivots are run exactly up to N (where c_j = q^2 / ((m_j^2 - a)(m_{j-1}^2 - a)) <=
+   1e-6 and a / m_j^2 <= 1/16), the product kept as a long double mantissa and a binary exponent; beyond N
+   log(t_j / m_j^2) = log(1 - a / m_j^2) + log(1 - c_j / p_{j-1}) with p the normalised pivots: the first summed as
+   -sum_p (a/4)^p / p zeta(2p, N + off/2) (Hurwitz zeta by Euler-Maclaurin), the second as -(c + c c_- + c^2 / 2)
+   (neglected: O(c^3)) by Euler-Maclaurin with a Gauss-Legendre integral in u = N / x. */
+#define GL_N 20
+static const double GL_X[GL_N] = {
+    -0.993128599185095, -0.9639719272779138, -0.912234428251326, -0.8391169718222188, -0.7463319064601508,
+    -0.636053680726515, -0.5108670019508271, -0.37370608871541955, -0.22778585114164507, -0.07652652113349734,
+    0.07652652113349734, 0.22778585114164507, 0.37370608871541955, 0.5108670019508271, 0.636053680726515,
+    0.7463319064601508, 0.8391169718222188, 0.912234428251326, 0.9639719272779138, 0.993128599185095};
+static const double GL_W[GL_N] = {
+    0.017614007139150893, 0.040601429800386446, 0.06267204833410879, 0.08327674157670471, 0.1019301198172407,
+    0.1181945319615186, 0.1316886384491769, 0.1420961093183824, 0.14917298647260424, 0.15275338713072628,
+    0.15275338713072628, 0.14917298647260424, 0.1420961093183824, 0.1316886384491769, 0.1181945319615186,
+    0.1019301198172407, 0.08327674157670471, 0.06267204833410879, 0.040601429800386446, 0.017614007139150893};
+
+/* Hurwitz zeta(s, x), s >= 2, x >= 10, by Euler-Maclaurin (B_2k / (2k)! up to k = 8); xs = x^-s */
+static long double hurwitz(int s, long double x, long double xs) {
+    static const long double B[8] = {1.0L / 12, -1.0L / 720, 1.0L / 30240, -1.0L / 1209600, 1.0L / 47900160,
+                                     -691.0L / 1307674368000.0L, 1.0L / 74724249600.0L,
+                                     -3617.0L / 10670622842880000.0L};
+    long double sum = x * xs / (s - 1) + 0.5L * xs;
+    long double term = xs / x, poch = s;  /* poch = s (s+1) ... (s + 2k - 2) */
+    for (int k = 0; k < 8; k++) {
+        long double add = B[k] * poch * term;
+        sum += add;
+        if (fabsl(add) < 1e-21L * sum) break;
+        poch *= (long double)(s + 2 * k + 1) * (s + 2 * k + 2);
+        term /= x * x;
+    }
+    return sum;
+}
+
+static long double c_tail(double a, double q2, int off, long double x) {
+    long double m1 = 2.0L * x + off, m0 = m1 - 2.0L;
+    return q2 / ((m1 * m1 - a) * (m0 * m0 - a));
+}
+
+static int hill_rows(double a, double q) { return (int)ceil(16.0 * sqrt(q) + 4.0 * sqrt(fabs(a))) + 100; }
+
+/* log of prod_{j >= n} t_j / m_j^2 of one family (m_j = 2j + offset): log(1 - a / m_j^2) by the zeta series, the
+   log of the normalised pivots by Euler-Maclaurin */
+static long double hill_tail(int offset, double a, double q, int n) {
+    long double al = a, x0 = n + 0.5L * offset, sum = 0.0L, zp = 1.0L, a4 = al / 4.0L, xs = 1.0L;
+    long double ix2 = 1.0L / (x0 * x0);
+    for (int p = 1; p < 60; p++) {
+        zp *= a4;
+        xs *= ix2;
+        long double add = zp / p * hurwitz(2 * p, x0, xs);
+        sum -= add;
+        if (fabsl(add) < 1e-21L * (fabsl(sum) + 1e-300L)) break;
+    }
+    /* the normalised pivots' logs are of the size of c <= 1e-6: double precision is enough for them */
+    double q2 = q * q, integral = 0.0;
+    for (int i = 0; i < GL_N; i++) {
+        double u = 0.5 * (GL_X[i] + 1.0), x = n / u;  /* u in (0, 1) */
+        double c = (double)c_tail(a, q2, offset, x), cm = (double)c_tail(a, q2, offset, x - 1.0);
+        integral += 0.5 * GL_W[i] * (c + c * cm + 0.5 * c * c) * n / (u * u);
+    }
+    double cn = (double)c_tail(a, q2, offset, n), mn1 = 2.0 * n + offset, mn0 = mn1 - 2.0;
+    double dcn = -cn * (4.0 * mn1 / (mn1 * mn1 - a) + 4.0 * mn0 / (mn0 * mn0 - a));
+    /* sum_{j >= n} g(j) = integral + g(n) / 2 - g'(n) / 12 + g3(n) / 720, g3 (third derivative) ~ -120 g / n^3 */
+    return sum - (integral + 0.5 * cn - dcn / 12.0 - cn / (6.0 * (double)n * n * n));
+}
+
+/* prod_{j>=0} t_j / m_j^2 (t_0 itself for m_0 = 0) of the four families (ae, be, ao, bo), as mantissa 2^exponent
+   exp(tail); neg = the negative pivots.  The four chains of divisions run in one loop (the processor overlaps
+   them). */
+static void hill_products(double a, double q, long double *mant, int *ex, long double *tail, int *neg) {
+    static const int off[4] = {0, 2, 1, 1}, sgn[4] = {0, 0, 1, -1};
+    int n = hill_rows(a, q);
+    long double ql = q, al = a, bq = ql * ql, b0[4] = {2.0L * bq, bq, bq, bq}, t[4], m[4] = {1, 1, 1, 1};
+    int e[4] = {0, 0, 0, 0}, count[4] = {0, 0, 0, 0};
+    long double tiny = -LDBL_EPSILON * (fabsl(al) + 4.0L * ql + 1.0L);
+    for (int f = 0; f < 4; f++) t[f] = (long double)(off[f] * off[f]) + sgn[f] * ql - al;
+    for (int j = 0; j < n; j++) {
+        for (int f = 0; f < 4; f++) {
+            long double mj = 2.0L * j + off[f], tf = t[f];
+            if (j) tf = (mj * mj - al) - (j == 1 ? b0[f] : bq) / tf;
+            if (tf == 0.0L) tf = tiny;
+            count[f] += tf < 0.0L;
+            m[f] *= mj > 0.0L ? tf / (mj * mj) : tf;
+            t[f] = tf;
+            if (!(fabsl(m[f]) < 0x1p64L && fabsl(m[f]) > 0x1p-64L)) {
+                int de;
+                m[f] = frexpl(m[f], &de);
+                e[f] += de;
+            }
+        }
+    }
+    for (int f = 0; f < 4; f++) {
+        mant[f] = m[f];
+        ex[f] = e[f];
+        neg[f] = count[f];
+        tail[f] = hill_tail(off[f], a, q, n);
+    }
+}
+
+/* S = sin^2(pi nu / 2), C = cos^2(pi nu / 2) (as double, and the logs of |S|, |C|), the number of characteristic
+   values below a, and an error estimate (rounding, and |S + C - 1|), for q >= 0 */
+void symosc_mathieu_hill_sc(long npts, const double *a, const double *q, double *S, double *C, double *logS,
+                            double *logC, int *count, double *err) {
+    const long double pi = 3.14159265358979323846264338327950288L, ln2 = 0.69314718055994530941723212145817657L;
+    for (long i = 0; i < npts; i++) {
+        long double mant[4], tail[4];
+        int ex[4], neg[4], cnt = 0, n = hill_rows(a[i], q[i]);
+        hill_products(a[i], q[i], mant, ex, tail, neg);
+        for (int f = 0; f < 4; f++) cnt += neg[f];
+        long double ms = -pi * pi / 4.0L * mant[0] * mant[1], mc = mant[2] * mant[3];
+        long double ls = logl(fabsl(ms)) + (ex[0] + ex[1]) * ln2 + tail[0] + tail[1];
+        long double lc = logl(fabsl(mc)) + (ex[2] + ex[3]) * ln2 + tail[2] + tail[3];
+        long double sv = (ms < 0 ? -1.0L : 1.0L) * expl(ls), cv = (mc < 0 ? -1.0L : 1.0L) * expl(lc);
+        S[i] = (double)sv;
+        C[i] = (double)cv;
+        logS[i] = (double)ls;
+        logC[i] = (double)lc;
+        count[i] = cnt;
+        err[i] = (double)(16.0L * n * LDBL_EPSILON * (fabsl(sv) + fabsl(cv)) + fabsl(sv + cv - 1.0L)) + 1e-17;
+    }
+}
 """
