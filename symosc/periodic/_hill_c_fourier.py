@@ -183,8 +183,9 @@ static int eigvec_point(int offset, int q_sign, int sqrt2, int k, int n, double 
    not symmetrised; zero beyond rows[i]), bound (2-norm error of the symmetric unit vector), err0 / err1 (bounds for
    the function and its derivative valid for every x, the rounding of symosc_mathieu_fourier_sum included), status
    (1 ok, 0 failure, 3 the last rows above tol / 1000 at max_rows).  gap_est: a first guess of the distance to the
-   neighbouring eigenvalues of the family; deriv: the accuracy is needed for derivatives too; s0, s1: sum |A_j|,
-   sum (2j + offset) |A_j|. */
+   neighbouring eigenvalues of the family; deriv: bit 0, the accuracy is needed for derivatives too; bit 1, keep the
+   negligible last rows (the Bessel-product series of the modified functions of the second kind multiply them by
+   large Bessel functions); s0, s1: sum |A_j|, sum (2j + offset) |A_j|. */
 int symosc_mathieu_coefficients(int offset, int q_sign, int sqrt2, int k, long npts, const double *q, const double *lam,
                                 const double *gap_est, double tol, int deriv, int max_rows, double *coef, int *rows,
                                 double *bound, double *err0, double *err1, double *s0, double *s1,
@@ -225,7 +226,7 @@ int symosc_mathieu_coefficients(int offset, int q_sign, int sqrt2, int k, long n
         int r = rows[i];
         while (r > 1) {
             double idx = (double)(2 * (r - 1) + offset), a = fabs(z[r - 1]) * (idx > 1.0 ? idx : 1.0);
-            if (a > 1e-3 * tail_tol) break;
+            if (a > 1e-3 * tail_tol || (deriv & 2)) break;
             tail += a;
             r--;
         }

@@ -215,7 +215,7 @@ def test_bad_input():
         monodromy(sp.Matrix([[1, 2]]), 1.0)
     with pytest.raises(ModelError, match="not periodic"):
         monodromy(lambda tt: np.array([[0.0, 1.0], [-np.cos(tt), 0.0]]), 1.0)
-    with pytest.raises(ParameterError, match="got the string 'A'; expected: sympy.Matrix or callable"):
+    with pytest.raises(ParameterError, match=r"got the string 'A'; expected: sympy\.Matrix or callable"):
         monodromy("A", 1.0)
     k = sp.Symbol("k")
     with pytest.raises(ParameterError, match="missing values for: k"):

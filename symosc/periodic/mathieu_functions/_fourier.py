@@ -69,14 +69,17 @@ def gap_estimates(kind: str, n: int, q: np.ndarray) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------------------------- eigenvectors
-def coefficients(kind: str, n: int, q: np.ndarray, lam: np.ndarray, tol: float, derivative: bool = False) -> dict:
+def coefficients(
+    kind: str, n: int, q: np.ndarray, lam: np.ndarray, tol: float, derivative: bool = False, keep_tail: bool = False
+) -> dict:
     """Fourier coefficients at the points q >= 0 (1-d) for the certified values lam, with sound error bounds.
 
     Returns ``coef`` (points x rows, zero beyond ``rows``; A_0 not symmetrised), ``rows``, ``index`` (Fourier indices
     of the columns), ``bound`` (2-norm error of the symmetric unit eigenvector, truncation included: Davis-Kahan with
     the residual and a Sturm-certified gap), ``err0``/``err1`` (bounds for the function and its x-derivative at
     every x, the rounding of the sums included).  ``derivative``: the vector is made accurate enough for the
-    derivative's bound too (an extended-precision step more where needed).  Raises ConvergenceError where the last
+    derivative's bound too (an extended-precision step more where needed); ``keep_tail``: the negligible last rows
+    are kept (for the Bessel-product series of the modified functions).  Raises ConvergenceError where the last
     rows stay above ``tol / 1000`` or no gap is certified.
     """
     from .._hill_c import kernel
@@ -93,7 +96,8 @@ def coefficients(kind: str, n: int, q: np.ndarray, lam: np.ndarray, tol: float, 
         bound, err0, err1, s0, s1 = (np.empty(q.size) for _ in range(5))
         status = np.empty(q.size, dtype=np.uint8)
         if lib.symosc_mathieu_coefficients(fam.offset, fam.q_sign, int(fam.sqrt2), k, q.size, q.ctypes.data,
-                                           lam.ctypes.data, gaps.ctypes.data, tol, int(derivative), budget,
+                                           lam.ctypes.data, gaps.ctypes.data, tol, int(derivative) + 2 * keep_tail,
+                                           budget,
                                            coef.ctypes.data, rows.ctypes.data, bound.ctypes.data, err0.ctypes.data,
                                            err1.ctypes.data, s0.ctypes.data, s1.ctypes.data,
                                            status.ctypes.data):  # fmt: skip

@@ -64,7 +64,9 @@ def _check_tol(tol: Any) -> float:
 
 
 # ----------------------------------------------------------------------------------------------- coefficients
-def _coefficient_table(kind: str, n: int, q: np.ndarray, tol: float, derivative: bool = False) -> dict:
+def _coefficient_table(
+    kind: str, n: int, q: np.ndarray, tol: float, derivative: bool = False, keep_tail: bool = False
+) -> dict:
     """Coefficients for the distinct points q (1-d), in the sign convention of the requested function.
 
     Returns ``matrix`` (points x size, C order), ``coef`` (its transpose, size x points), ``rows``, ``index``
@@ -84,7 +86,7 @@ def _coefficient_table(kind: str, n: int, q: np.ndarray, tol: float, derivative:
         qa = np.abs(q[sel])
         res = mathieu_characteristic(eff, n, qa)
         lam = np.asarray(res.values, dtype=float).reshape(-1)
-        co = _fourier.coefficients(eff, n, qa, lam, tol, derivative)
+        co = _fourier.coefficients(eff, n, qa, lam, tol, derivative, keep_tail)
         if negative:
             co["coef"] = co["coef"] * _fourier.signs_negative_q(eff, n, co["coef"].shape[1])[None, :]
         co["lam"], co["lam_err"] = lam, np.asarray(res.error_estimate, dtype=float).reshape(-1)
