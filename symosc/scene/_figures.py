@@ -6,6 +6,8 @@ from typing import Any
 
 import numpy as np
 
+from ._questions_mathieu import draw as mathieu_functions  # noqa: F401 - the drawer of the mathieu_functions question
+
 
 def modified_ince_strutt(ax: Any, *, ratios: list, point: Any = None, q_max: float = 1.0) -> Any:
     """The modified Ince–Strutt diagram (Gribkov & Khokhlov 2015, Fig. 3), with the excitation point marked."""

@@ -11,6 +11,7 @@ from typing import Any
 
 from .._printing import SymPyPrintable
 from . import _questions as mq
+from . import _questions_mathieu as fq
 from . import _questions_other as oq
 from ._errors import SceneError, closest
 from ._log import DerivationLog
@@ -155,6 +156,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
             {"orders": (_int, 3), "q_max": (lambda c, v, k: _floats(c, v, k)[0], 8.0)},
             oq.ince_strutt,
         ),
+        fq.SPEC,
         QuestionSpec(
             "limit_cycle",
             "Poincaré series of a limit cycle with its validation",
@@ -210,6 +212,7 @@ _REQUIRED = {
     "floquet": ("frequencies", "amplitudes"),
     "sweep": ("parameter", "values"),
     "mathieu_values": ("n", "q"),
+    "mathieu_functions": ("n", "q"),
     "limit_cycle": ("order",),
     "lindstedt": ("order",),
     "resonance_curve": ("frequency_range",),
