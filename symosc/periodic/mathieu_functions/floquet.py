@@ -516,8 +516,11 @@ def mathieu_fundamental(a: float, q: float, x: Any, *, tol: float = 1e-10) -> Fu
             w2p = ((dp + dm) / (2 * fp0)).real
             result = (w1, w1p, w2, w2p, "floquet", float(err))
     if result is None:
-        y1 = _ode(af, qf, xs, max(tol * 1e-2, 1e-13))
-        y2 = _ode(af, qf, xs, max(tol, 1e-11))
+        # two local tolerances a decade apart, well below tol (the global error over many periods exceeds the
+        # local one): the difference estimates the error of the looser solution, a bound for the returned one
+        rtol = max(tol * 1e-3, 2.5e-14)
+        y1 = _ode(af, qf, xs, rtol)
+        y2 = _ode(af, qf, xs, 10.0 * rtol)
         err = float(np.max(np.abs(y1 - y2) / np.maximum(1.0, np.abs(y1)))) if xs.size else 0.0
         if err > tol:
             raise ConvergenceError(f"fundamental solutions: integration error estimate {err:.3g} above tol={tol:g}",
