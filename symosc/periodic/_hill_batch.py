@@ -1,8 +1,8 @@
 """Vectorised refinement and verification of Mathieu characteristic values: the NumPy kernel (private).
 
 This is the fallback when no C compiler is available; :mod:`symosc.periodic._hill_c` runs the same algorithm in C
-(plus bisection for seeds on a wrong branch).  A seed value ``x`` (SciPy's ``mathieu_a/b`` or, for b_n nearly
-degenerate with a neighbour, that neighbour's value; never trusted) is turned into a verified float64 value by
+(plus bisection for seeds on a wrong branch).  A seed value ``x`` (the initial approximation of
+:mod:`symosc.periodic._mathieu_seed`; never trusted) is turned into a verified float64 value by
 steps (one for a seed accurate to rounding, at most ``MAX_STEPS``) of Rayleigh-quotient iteration on the Hill
 matrix of :mod:`symosc.periodic._hill`, computed from the *twisted* factorisation of ``T - x I`` (Parlett &
 Dhillon 1997, "Fernando's solution to Wilkinson's problem"):

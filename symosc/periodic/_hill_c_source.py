@@ -243,7 +243,7 @@ static int sturm_count(int offset, double d0, double e0, int n, double q, double
     return count;
 }
 
-/* The seed refined, or (when it is rejected: SciPy's value on a wrong branch) a start found by bisection on the
+/* The seed refined, or (when it is rejected: a start on a wrong branch) a start found by bisection on the
    Sturm count, refined the same way. */
 static int refine_point(int offset, int q_sign, int sqrt2, int k, double q, double x, double tol, double *work,
                         const struct first_step *first, double *out_value, double *out_err) {

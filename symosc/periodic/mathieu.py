@@ -15,16 +15,17 @@ b_{2m+1}(-q) = a_{2m+1}(q), b_{2m}(-q) = b_{2m}(q).
 Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_series` for the algorithms):
 
 ``"auto"`` (default)
-    vectorised over q: SciPy's ``mathieu_a/b`` value is used as a seed only, then verified and refined by
-    Rayleigh-quotient steps on the twisted factorisation of the Hill matrix (the negative pivots count the index of
-    the eigenvalue found, so a seed on a wrong branch -- SciPy's at large q -- is detected and replaced by a start
-    found by bisection on the same count).  b_n next to a nearly degenerate a_{n-1} or a_n is refined from that
-    value.  This per-point kernel is C, compiled once and cached on disk (the C backend's build cache); without a C
-    compiler (or with the environment variable ``SYMOSC_MATHIEU_KERNEL=numpy``) the same checks run in NumPy and
-    failing points go to the LAPACK/mpmath solvers -- :func:`mathieu_kernel` says which kernel runs.  A point whose
-    index, truncation or rounding estimate still fails is recomputed by the float64 tridiagonal eigenpair (LAPACK)
-    refined by the Rayleigh quotient in extended precision, and falls back to ``"mp"`` when the estimate misses the
-    target.  Scalar and vectorised calls give the same bits (with either kernel).
+    vectorised over q: an own initial approximation (piecewise Chebyshev series in sqrt(q) generated on first use
+    from certified values, the asymptotic expansion DLMF 28.8.1 beyond; no SciPy value is used), then verified and
+    refined by Rayleigh-quotient steps on the twisted factorisation of the Hill matrix (the negative pivots count the
+    index of the eigenvalue found, so a start on a wrong branch is detected and replaced by a start found by
+    bisection on the same count).  This per-point kernel is C, compiled once and cached on disk (the C backend's
+    build cache; scalar calls through a small CPython extension around it); without a C compiler (or with the
+    environment variable ``SYMOSC_MATHIEU_KERNEL=numpy``) the same checks run in NumPy and failing points go to the
+    LAPACK/mpmath solvers -- :func:`mathieu_kernel` says which kernel runs.  A point whose index, truncation or
+    rounding estimate still fails is recomputed by the float64 tridiagonal eigenpair (LAPACK) refined by the
+    Rayleigh quotient in extended precision, and falls back to ``"mp"`` when the estimate misses the target.  Scalar
+    and vectorised calls give the same bits (with either kernel).
     Measured: relative error <= 1e-13 (absolute where |value| < 1) against 50-digit values for n <= 100,
     ``|q| <= 1e4`` (``benchmarks/mathieu_vs_scipy.py``).
 ``"hill"``
@@ -38,8 +39,10 @@ Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_seri
     ``ConvergenceError`` when ``|q|`` is too close to (or beyond) the radius of convergence.
 
 Near-degenerate neighbours (a_n, b_{n+1} at large q, b_n, a_n at small q for large n) differ by less than the
-rounding error; there both neighbours are computed and the returned values are clamped so that the ordering holds
-exactly (non-strictly) in floating point (methods "auto", "hill", "mp"; "series" values are returned as summed).
+rounding error; where the gap is below 1e-12 (n^2 + 2q + 1) (regions measured once per pair, see
+:mod:`symosc.periodic._mathieu_seed`) both neighbours are computed and the returned values are clamped so that the
+ordering holds exactly (non-strictly) in floating point (methods "auto", "hill", "mp"; "series" values are returned
+as summed).
 """
 
 from __future__ import annotations

@@ -23,8 +23,8 @@ zeros), and relative to ``|w|`` elsewhere.
 
 Where the series loses digits, ``ConvergenceError`` is raised rather than a wrong value returned.  With the default
 ``tol = 1e-12`` this happens only for the second kind (and kinds 3, 4) at small z for moderate-to-large orders:
-measured on n <= 50, q <= 1e4, z in [0, 1], only for n >= 10, q between about n^2 / 2 and 4 n^2, z below 0.75
-(below 0.4 in most cases); the first kind is never refused there.
+measured on n <= 50, q <= 1e4, z in [0, 1], only for n >= 10, q from about 100 to 4 n^2, z below 0.75 (below 0.4
+in most cases); the first kind is never refused there.
 """
 
 from __future__ import annotations
@@ -203,7 +203,7 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
     ParameterError
         Bad arguments (q <= 0 included).
     ConvergenceError
-        An error estimate above ``tol`` (second kind at small z for n >= 10, q ~ n^2, see the module notes).
+        An error estimate above ``tol`` (second kind at small z for n >= 10, see the module notes).
 
     See Also
     --------
