@@ -7,6 +7,7 @@ q in {0, 1, 10, 100, 1000, 5000, 1e4}, 16 x over a period.  SciPy takes x in deg
 An error of order one for SciPy means a wrong function (wrong branch or lost normalisation).
 
     python benchmarks/mathieu_functions_vs_scipy.py
+    python benchmarks/mathieu_functions_vs_scipy.py --plot   # also write docs/img/mathieu_functions.png
 """
 
 from __future__ import annotations
@@ -89,6 +90,34 @@ def speed() -> None:
     print()
 
 
+def figure(path: str = "docs/img/mathieu_functions.png", q: float = 2.0) -> None:
+    """The first ce_n and se_n at q (solid) and at q = 0 (dotted: cos nx, sin nx; ce_0 = 1/sqrt(2)) over a period."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from symosc.periodic import mathieu_ce, mathieu_se
+
+    x = np.linspace(0.0, 2 * np.pi, 401)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.6), sharey=True)
+    for ax, fun, name, orders in ((axes[0], mathieu_ce, "ce", range(4)), (axes[1], mathieu_se, "se", range(1, 5))):
+        for i, n in enumerate(orders):
+            ax.plot(x, fun(n, q, x), color=f"C{i}", label=f"{name}$_{n}$")
+            ax.plot(x, fun(n, 0.0, x), color=f"C{i}", ls=":", lw=1)
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.set_xticks(np.arange(5) * np.pi / 2, ["0", "π/2", "π", "3π/2", "2π"])
+        ax.set_xlabel("x (rad)")
+        ax.set_title(f"{name}$_n$(x, q): q = {q:g} (solid), q = 0 (dotted)")
+        ax.legend(fontsize="small", ncol=2, loc="lower left")
+    axes[0].set_ylabel("normalised as DLMF 28.2.30")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}")
+
+
 if __name__ == "__main__":
+    if "--plot" in sys.argv[1:]:
+        figure()
     speed()
     accuracy()

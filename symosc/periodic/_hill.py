@@ -254,34 +254,6 @@ def solve_mp(fam: _Family, k: int, q, dps: int, max_tries: int = 5) -> Solution:
     )
 
 
-def log_gap_estimates(n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Logarithms of rough estimates of the gaps a_n - b_n and b_{n+1} - a_n for q >= 0.
-
-    Used only to decide where a computed value could fall on the wrong side of its neighbour (the true gap is below
-    the rounding error), so factors of ten do not matter.  Small-q gap a_n - b_n ~ q^n / (2^(2n-3) ((n-1)!)^2)
-    (DLMF 28.6); large-q gap b_{n+1} - a_n ~ 2^(4n+5) sqrt(2/pi) h^(n+3/2) e^(-4h) / n!, h = sqrt(q) (DLMF 28.8.2).
-    Returns (log_gap_below_a, log_gap_above_a): the gaps between a_n and b_n, and between a_n and b_{n+1}.
-    """
-    with np.errstate(divide="ignore"):
-        lq = np.log(np.maximum(q, 1e-300))
-    if n >= 1:
-        below = n * lq - (2 * n - 3) * math.log(2) - 2 * math.lgamma(n)
-    else:
-        below = np.full_like(q, np.inf)
-    h = np.sqrt(q)
-    h_peak = (n + 1.5) / 4
-    with np.errstate(divide="ignore"):
-        large = (
-            (4 * n + 5) * math.log(2)
-            + 0.5 * math.log(2 / math.pi)
-            + (n + 1.5) * np.log(np.maximum(h, 1e-300))
-            - 4 * h
-            - math.lgamma(n + 1)
-        )
-    above = np.where(h >= h_peak, np.minimum(large, math.log(2 * n + 1)), math.log(2 * n + 1))
-    return below, above
-
-
 def refined_value(fam: str, k: int, qf: float, tol: float) -> tuple[float, float]:
     """``(value, error estimate)`` of the characteristic value ``k`` of family ``fam`` at ``q = qf``: the float64
     eigenpair refined by the Rayleigh quotient in extended precision (:func:`solve_refined`), and the mpmath solver

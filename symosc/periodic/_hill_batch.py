@@ -1,8 +1,8 @@
 """Vectorised refinement and verification of Mathieu characteristic values: the NumPy kernel (private).
 
 This is the fallback when no C compiler is available; :mod:`symosc.periodic._hill_c` runs the same algorithm in C
-(plus bisection for seeds on a wrong branch).  A seed value ``x`` (SciPy's ``mathieu_a/b`` or, for b_n nearly
-degenerate with a neighbour, that neighbour's value; never trusted) is turned into a verified float64 value by
+(plus bisection for seeds on a wrong branch).  A seed value ``x`` (the initial approximation of
+:mod:`symosc.periodic._mathieu_seed`; never trusted) is turned into a verified float64 value by
 steps (one for a seed accurate to rounding, at most ``MAX_STEPS``) of Rayleigh-quotient iteration on the Hill
 matrix of :mod:`symosc.periodic._hill`, computed from the *twisted* factorisation of ``T - x I`` (Parlett &
 Dhillon 1997, "Fernando's solution to Wilkinson's problem"):
@@ -263,41 +263,3 @@ def _step_batch(offset: int, q_sign: int, sqrt2: bool, q: np.ndarray, x: np.ndar
         w = q * z[n - 1]
         trunc = (w * w) / norm2
     return value, scale, rho2, trunc, index, ~zero
-
-
-def _log_gaps_a(m: int, lq: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Log gap estimates of a_m to b_m (below) and b_{m+1} (above); see ``_hill.log_gap_estimates``."""
-    below = m * lq + (-(2 * m - 3) * math.log(2.0) - 2 * math.lgamma(m)) if m >= 1 else np.full_like(lq, np.inf)
-    cap = math.log(2.0 * m + 1.0)
-    large = (
-        ((4 * m + 5) * math.log(2.0) + 0.5 * math.log(2.0 / math.pi) - math.lgamma(m + 1.0))
-        + (m + 1.5) * (0.5 * lq)
-        - 4 * h
-    )
-    above = np.where((h >= (m + 1.5) / 4) & (large < cap), large, cap)
-    return below, above
-
-
-def gaps_array(is_b: bool, n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(log gap below, log gap above, seed rule) of kind_n at the points q >= 0 (1-d float array).
-
-    The seed rule of b_n is -1 (seed from a_{n-1}), +1 (from a_n) or 0 (its own), chosen where the gap estimate is
-    below 1e-6 (n^2 + 2q + 1).  Scalar calls use a one-element array (the same NumPy loops, the same bits).
-    """
-    with np.errstate(all="ignore"):
-        lq = np.log(np.maximum(q, 1e-300))
-        h = np.sqrt(q)
-        if not is_b:
-            lo, hi = _log_gaps_a(n, lq, h)
-            return lo, hi, np.zeros(q.shape, dtype=np.int8)
-        a0 = _log_gaps_a(n - 1, lq, h)[1]
-        b1 = _log_gaps_a(n, lq, h)[0]
-        thr = np.log(1e-6 * (float(n) * n + 2.0 * q + 1.0))
-    rule = np.where((a0 < thr) & (a0 <= b1), -1, np.where(b1 < thr, 1, 0)).astype(np.int8)
-    return a0, b1, rule
-
-
-def gaps_scalar(is_b: bool, n: int, q: float) -> tuple[float, float, int]:
-    """:func:`gaps_array` at one point."""
-    lo, hi, rule = gaps_array(is_b, n, np.array([q]))
-    return float(lo[0]), float(hi[0]), int(rule[0])

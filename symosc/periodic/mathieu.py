@@ -15,16 +15,17 @@ b_{2m+1}(-q) = a_{2m+1}(q), b_{2m}(-q) = b_{2m}(q).
 Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_series` for the algorithms):
 
 ``"auto"`` (default)
-    vectorised over q: SciPy's ``mathieu_a/b`` value is used as a seed only, then verified and refined by
-    Rayleigh-quotient steps on the twisted factorisation of the Hill matrix (the negative pivots count the index of
-    the eigenvalue found, so a seed on a wrong branch -- SciPy's at large q -- is detected and replaced by a start
-    found by bisection on the same count).  b_n next to a nearly degenerate a_{n-1} or a_n is refined from that
-    value.  This per-point kernel is C, compiled once and cached on disk (the C backend's build cache); without a C
-    compiler (or with the environment variable ``SYMOSC_MATHIEU_KERNEL=numpy``) the same checks run in NumPy and
-    failing points go to the LAPACK/mpmath solvers -- :func:`mathieu_kernel` says which kernel runs.  A point whose
-    index, truncation or rounding estimate still fails is recomputed by the float64 tridiagonal eigenpair (LAPACK)
-    refined by the Rayleigh quotient in extended precision, and falls back to ``"mp"`` when the estimate misses the
-    target.  Scalar and vectorised calls give the same bits (with either kernel).
+    vectorised over q: an own initial approximation (piecewise Chebyshev series in sqrt(q) generated on first use
+    from certified values, the asymptotic expansion DLMF 28.8.1 beyond; no SciPy value is used), then verified and
+    refined by Rayleigh-quotient steps on the twisted factorisation of the Hill matrix (the negative pivots count the
+    index of the eigenvalue found, so a start on a wrong branch is detected and replaced by a start found by
+    bisection on the same count).  This per-point kernel is C, compiled once and cached on disk (the C backend's
+    build cache; scalar calls through a small CPython extension around it); without a C compiler (or with the
+    environment variable ``SYMOSC_MATHIEU_KERNEL=numpy``) the same checks run in NumPy and failing points go to the
+    LAPACK/mpmath solvers -- :func:`mathieu_kernel` says which kernel runs.  A point whose index, truncation or
+    rounding estimate still fails is recomputed by the float64 tridiagonal eigenpair (LAPACK) refined by the
+    Rayleigh quotient in extended precision, and falls back to ``"mp"`` when the estimate misses the target.  Scalar
+    and vectorised calls give the same bits (with either kernel).
     Measured: relative error <= 1e-13 (absolute where |value| < 1) against 50-digit values for n <= 100,
     ``|q| <= 1e4`` (``benchmarks/mathieu_vs_scipy.py``).
 ``"hill"``
@@ -38,8 +39,10 @@ Methods (see :mod:`symosc.periodic._hill` and :mod:`symosc.periodic.mathieu_seri
     ``ConvergenceError`` when ``|q|`` is too close to (or beyond) the radius of convergence.
 
 Near-degenerate neighbours (a_n, b_{n+1} at large q, b_n, a_n at small q for large n) differ by less than the
-rounding error; there both neighbours are computed and the returned values are clamped so that the ordering holds
-exactly (non-strictly) in floating point (methods "auto", "hill", "mp"; "series" values are returned as summed).
+rounding error; where the gap is below 1e-12 (n^2 + 2q + 1) (regions measured once per pair, see
+:mod:`symosc.periodic._mathieu_seed`) both neighbours are computed and the returned values are clamped so that the
+ordering holds exactly (non-strictly) in floating point (methods "auto", "hill", "mp"; "series" values are returned
+as summed).
 """
 
 from __future__ import annotations
@@ -54,13 +57,14 @@ import numpy as np
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ConvergenceError, ParameterError
-from . import _hill, _mathieu_auto
+from . import _hill, _hill_c, _mathieu_auto, _mathieu_seed
 from .mathieu_series import _check_n, mathieu_series_value
 
 __all__ = ["MathieuValues", "mathieu_a", "mathieu_b", "mathieu_characteristic", "mathieu_kernel"]
 
 _METHODS = ("auto", "hill", "mp", "series")
 _DEFAULT_TOL = 1e-13
+_FAST = _hill_c.FAST
 _DEFAULT_DPS = 30
 
 
@@ -161,38 +165,24 @@ class _Solver:
             return r.value, r.error_estimate
         return _hill.refined_value(fam, k, qf, self.tol or _DEFAULT_TOL)
 
-    def accuracy(self, value) -> float:
-        if self.method == "mp":
-            return 10.0 ** (-self.dps) * max(1.0, abs(float(value)))
-        return 1e-13 * max(1.0, abs(float(value)))
 
+def _value_at(kind: str, n: int, q: float, qm, solver: _Solver) -> tuple[Any, float]:
+    """kind_n(q) for one q >= 0: solve, then enforce the ordering against the nearly degenerate neighbours.
 
-def _gap_logs(kind: str, n: int, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Log estimates of the gaps to the lower and upper neighbour of kind_n in the chain a_0 < b_1 < a_1 < ..."""
-    if kind == "a":
-        return _hill.log_gap_estimates(n, q)
-    return _hill.log_gap_estimates(n - 1, q)[1], _hill.log_gap_estimates(n, q)[0]
-
-
-def _value_at(kind: str, n: int, q: float, qm, gaps: tuple[float, float], solver: _Solver) -> tuple[Any, float]:
-    """kind_n(q) for one q >= 0: solve, then enforce the ordering against neighbours closer than the rounding error.
-
-    Where the (estimated) gap to a neighbour is below 1e6 times the accuracy, the neighbour is computed too and the
-    value clamped into [lower neighbour, upper neighbour].  The clamped values of both members of a pair come from the
-    same two raw numbers, so the ordering holds whichever of the two functions is called.
+    Inside the clamp regions of :func:`symosc.periodic._mathieu_seed.neighbours` (relative gap below 1e-12, where
+    two values computed independently could come out of order) the neighbour is computed too and the value clamped
+    into [lower neighbour, upper neighbour].  The clamped values of both members of a pair come from the same two raw
+    numbers, so the ordering holds whichever of the two functions is called.
     """
     value, err = solver.raw(kind, n, q, qm)
     if solver.method == "series":
         return value, err
-    if kind == "a":
-        below, above = (("b", n) if n >= 1 else None), ("b", n + 1)
-    else:
-        below, above = ("a", n - 1), ("a", n)
-    threshold = math.log(1e6 * solver.accuracy(value))
-    if below is not None and gaps[0] < threshold:
-        value = max(value, solver.raw(*below, q, qm)[0])
-    if gaps[1] < threshold:
-        value = min(value, solver.raw(*above, q, qm)[0])
+    lower, upper = _mathieu_seed.neighbours(kind, n)
+    point = np.array([q])
+    if lower is not None and lower.covers(point)[0]:
+        value = max(value, solver.raw(lower.kind, lower.n, q, qm)[0])
+    if upper is not None and upper.covers(point)[0]:
+        value = min(value, solver.raw(upper.kind, upper.n, q, qm)[0])
     return value, err
 
 
@@ -208,8 +198,9 @@ def mathieu_characteristic(
         ``"a"`` for a_n (even solutions ce_n), ``"b"`` for b_n (odd solutions se_n, n >= 1).
     n : int or array_like of int
         Index, n >= 0 (n >= 1 for b); an array of indices broadcasts against q (as in ``scipy.special``).
-    q : float or array_like
-        Any finite real q (negative q by the DLMF 28.2(vii) symmetries).
+    q : float, mpmath.mpf, str or array_like
+        Any finite real q (negative q by the DLMF 28.2(vii) symmetries); for ``method="mp"`` an ``mpf`` or a decimal
+        string keeps every digit.
     method : {"auto", "hill", "mp", "series"}
         See the module docstring.
     dps : int, optional
@@ -306,6 +297,10 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
     other = "b" if kind == "a" else "a"
     qabs = np.abs(flat_f)
     if method == "auto":
+        if not swap.any():
+            values, errors = _mathieu_auto.auto_array(kind, n, qabs, tol)
+            _check_tol(kind, n, values, errors, tol)
+            return values, errors
         values = np.empty(flat_f.shape)
         errors = np.empty(flat_f.shape)
         for which, sel in ((kind, ~swap), (other, swap)):
@@ -314,8 +309,6 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
                 values[idx], errors[idx] = _mathieu_auto.auto_array(which, n, qabs[idx], tol)
         _check_tol(kind, n, values, errors, tol)
         return values, errors
-    gaps_same = _gap_logs(kind, n, qabs) if not swap.all() else None
-    gaps_other = _gap_logs(other, n, qabs) if swap.any() and not (other == "b" and n == 0) else None
     values = np.empty(flat_f.shape, dtype=object if use_mp else float)
     errors = np.empty(flat_f.shape, dtype=float)
     for i, (x, xo) in enumerate(zip(flat_f, flat_o, strict=True)):
@@ -324,8 +317,7 @@ def _evaluate(kind: str, n: int, flat_f: np.ndarray, flat_o: np.ndarray, method:
             with mpmath.workdps(dps + 10):
                 qm = abs(mpmath.mpf(xo) if isinstance(xo, str | mpmath.mpf) else mpmath.mpf(float(x)))
         solver = _Solver(method, dps, tol)
-        k_eff, g = (other, gaps_other) if swap[i] else (kind, gaps_same)
-        values[i], errors[i] = _value_at(k_eff, n, float(qabs[i]), qm, (g[0][i], g[1][i]), solver)
+        values[i], errors[i] = _value_at(other if swap[i] else kind, n, float(qabs[i]), qm, solver)
     return values, errors
 
 
@@ -394,6 +386,10 @@ def mathieu_a(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     >>> round(mathieu_a(1, -1.0), 12) == round(mathieu_b(1, 1.0), 12)
     True
     """
+    if type(q) is float and type(n) is int and method == "auto" and dps is None and tol is None and _FAST.value:
+        value = _FAST.value(0, n, q)  # the compiled scalar path (nan: not known yet, or the general path is needed)
+        if value == value:
+            return value
     fast = _scalar_fast_path("a", n, q, method, dps, tol)
     if fast is not None:
         return fast[0]
@@ -430,6 +426,10 @@ def mathieu_b(n, q, *, method: str = "auto", dps: int | None = None, tol: float 
     >>> mpmath.nstr(mathieu_b(1, 0.5, method="mp", dps=25), 22)
     '0.4706543549338391115705'
     """
+    if type(q) is float and type(n) is int and method == "auto" and dps is None and tol is None and _FAST.value:
+        value = _FAST.value(1, n, q)
+        if value == value:
+            return value
     fast = _scalar_fast_path("b", n, q, method, dps, tol)
     if fast is not None:
         return fast[0]

@@ -254,8 +254,9 @@ def mathieu_series_value(
         Which characteristic value: ``"a"`` (``a_n``, even solutions) or ``"b"`` (``b_n``, odd solutions).
     n : int
         Index of the characteristic value, an integer >= 0 for ``"a"`` and >= 1 for ``"b"``.
-    q : float
-        Point (any real; the series is a polynomial in q, valid for ``|q|`` below the radius of convergence).
+    q : float, mpmath.mpf or str
+        Point (any real; the series is a polynomial in q, valid for ``|q|`` below the radius of convergence); with
+        ``dps``, an ``mpf`` or a decimal string keeps every digit.
     order : int, optional
         Fixed order; by default the smallest of 8, 16, 32, ... up to ``max_order`` whose error estimate is below
         ``tol * max(1, |value|)``.

@@ -6,6 +6,7 @@ from typing import Any
 
 import numpy as np
 
+from ._questions.mathieu import draw as mathieu_functions  # noqa: F401 - the drawer of the mathieu_functions question
 from ._questions.time_response import animation, time_series  # noqa: F401 - drawers of time_response figures
 
 

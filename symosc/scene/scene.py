@@ -16,6 +16,7 @@ from ._errors import SceneError, closest
 from ._log import DerivationLog
 from ._models import build_model
 from ._parse import Ctx
+from ._questions import mathieu as fq
 from ._questions import mechanical as mq
 from ._questions import other as oq
 from ._questions import time_response as tr
@@ -159,6 +160,7 @@ QUESTIONS: dict[str, QuestionSpec] = {
             {"orders": (_int, 3), "q_max": (lambda c, v, k: _floats(c, v, k)[0], 8.0)},
             oq.ince_strutt,
         ),
+        fq.SPEC,
         QuestionSpec(
             "limit_cycle",
             "Poincaré series of a limit cycle with its validation",
@@ -222,6 +224,7 @@ _REQUIRED = {
     "floquet": ("frequencies", "amplitudes"),
     "sweep": ("parameter", "values"),
     "mathieu_values": ("n", "q"),
+    "mathieu_functions": ("n", "q"),
     "limit_cycle": ("order",),
     "lindstedt": ("order",),
     "resonance_curve": ("frequency_range",),

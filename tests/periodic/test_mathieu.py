@@ -252,7 +252,7 @@ def test_tol_too_strict_for_auto_raises():
     [
         (lambda: mathieu_a(2.5, 1.0), "non-negative integer"),
         (lambda: mathieu_a(-1, 1.0), "non-negative integer"),
-        (lambda: mathieu_a("2", 1.0), "non-negative integer"),
+        (lambda: mathieu_a("2", 1.0), "non-negative integer|got the string"),
         (lambda: mathieu_a(True, 1.0), "non-negative integer"),
         (lambda: mathieu_b(0, 1.0), "b_0 does not exist"),
         (lambda: mathieu_a(1, float("nan")), "finite"),

@@ -52,20 +52,195 @@ def fourier_indices(kind: str, n: int, size: int) -> np.ndarray:
     return 2 * np.arange(size) + fam.offset
 
 
-def first_size(kind: str, n: int, q: np.ndarray) -> np.ndarray:
-    """Matrix size per point: the eigenvalue index plus a margin that grows like sqrt(q) (checked afterwards)."""
+def row_budget(kind: str, n: int, q: np.ndarray) -> int:
+    """Rows allowed per point: twice a first size that grows like sqrt(q) (the kernel starts smaller and doubles)."""
     _fam, k = family_index(kind, n)
-    r = np.ceil(1.5 * np.sqrt(np.abs(q))).astype(int)
-    return 8 * ((k + 20 + r + 7) // 8)
+    r = int(np.ceil(1.5 * np.sqrt(np.max(np.abs(q))))) if q.size else 0
+    return 2 * 8 * ((k + 24 + r + 7) // 8)
+
+
+def gap_estimates(kind: str, n: int, q: np.ndarray) -> np.ndarray:
+    """A first guess of half the distance from kind_n to its neighbours in the same Hill family (certified, and
+    reduced where needed, by Sturm counts): spacing 4n - 4 (4n + 4 without a lower neighbour) at q = 0,
+    8 sqrt(q) - 2(n + 2) at large q (DLMF 28.8.1)."""
+    _fam, k = family_index(kind, n)
+    low = 4.0 * n - 4.0 if k > 0 else 4.0 * n + 4.0
+    return 0.5 * np.maximum(max(low, 4.0), 8.0 * np.sqrt(np.abs(q)) - 2.0 * (n + 2))
 
 
 # --------------------------------------------------------------------------------------------- eigenvectors
-def eigenvectors(kind: str, n: int, q: np.ndarray, lam: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
-    """Unit eigenvectors (size x points) of the symmetric Hill matrices at q >= 0 for the values lam, and |gamma_m|.
+def coefficients(
+    kind: str, n: int, q: np.ndarray, lam: np.ndarray, tol: float, derivative: bool = False, keep_tail: bool = False
+) -> dict:
+    """Fourier coefficients at the points q >= 0 (1-d) for the certified values lam, with sound error bounds.
 
-    The sign of the first component is made positive.  Vectorised over the points (all of one matrix size).
-    The componentwise relative rounding error of the result is left in ``eigenvectors.last_rel``.
+    Returns ``coef`` (points x rows, zero beyond ``rows``; A_0 not symmetrised), ``rows``, ``index`` (Fourier indices
+    of the columns), ``bound`` (2-norm error of the symmetric unit eigenvector, truncation included: Davis-Kahan with
+    the residual and a Sturm-certified gap), ``err0``/``err1`` (bounds for the function and its x-derivative at
+    every x, the rounding of the sums included).  ``derivative``: the vector is made accurate enough for the
+    derivative's bound too (an extended-precision step more where needed); ``keep_tail``: the negligible last rows
+    are kept (for the Bessel-product series of the modified functions).  Raises ConvergenceError where the last
+    rows stay above ``tol / 1000`` or no gap is certified.
     """
+    from .._hill_c import kernel
+
+    fam, k = family_index(kind, n)
+    budget = row_budget(kind, n, q)
+    gaps = gap_estimates(kind, n, q)
+    lib = kernel()
+    q = np.ascontiguousarray(q, dtype=float)
+    lam = np.ascontiguousarray(lam, dtype=float)
+    if lib is not None:
+        coef = np.empty((q.size, budget))
+        rows = np.empty(q.size, dtype=np.intc)
+        bound, err0, err1, s0, s1 = (np.empty(q.size) for _ in range(5))
+        status = np.empty(q.size, dtype=np.uint8)
+        if lib.symosc_mathieu_coefficients(fam.offset, fam.q_sign, int(fam.sqrt2), k, q.size, q.ctypes.data,
+                                           lam.ctypes.data, gaps.ctypes.data, tol, int(derivative) + 2 * keep_tail,
+                                           budget,
+                                           coef.ctypes.data, rows.ctypes.data, bound.ctypes.data, err0.ctypes.data,
+                                           err1.ctypes.data, s0.ctypes.data, s1.ctypes.data,
+                                           status.ctypes.data):  # fmt: skip
+            raise MemoryError("the Mathieu kernel could not allocate its work array")
+        used = int(rows.max()) if q.size else 1
+        co = {"coef": coef[:, :used], "rows": rows, "bound": bound, "err0": err0, "err1": err1, "s0": s0, "s1": s1}
+    else:
+        coef, rows, bound, tail, status = _coefficients_numpy(kind, n, q, lam, gaps, 1e-3 * tol, budget)
+        used = int(rows.max()) if q.size else 1
+        co = {"coef": coef[:, :used], "rows": rows, "bound": bound, "tail": tail}
+    co["index"] = 2 * np.arange(used) + fam.offset
+    if np.any(status != 1):
+        bad = int(np.sum(status != 1))
+        raise ConvergenceError(
+            f"Fourier coefficients of the Mathieu function did not converge at {bad} point(s) (the last of {budget} "
+            "rows above tol / 1000, or no certified gap); q is too large for this truncation",
+            achieved=math.inf,
+        )
+    if lib is None:
+        co["err0"], co["err1"] = error_bounds(kind, n, co)
+        co["s0"] = np.sum(np.abs(co["coef"]), axis=1)
+        co["s1"] = np.sum(np.abs(co["coef"]) * co["index"][None, :], axis=1)
+    return co
+
+
+def _sturm_counts(fam, q: np.ndarray, x: np.ndarray, size: int) -> np.ndarray:
+    """Number of eigenvalues below x of the size x size matrices (vectorised over points)."""
+    e0 = _SQRT2 * q if fam.sqrt2 else q
+    b0, bq = e0 * e0, q * q
+    with np.errstate(all="ignore"):
+        t = float(fam.offset**2) + fam.q_sign * q - x
+        t = np.where(t == 0.0, -_EPS * (np.abs(x) + 1.0), t)
+        count = (t < 0.0).astype(int)
+        for j in range(1, size):
+            t = ((2.0 * j + fam.offset) ** 2 - x) - (b0 if j == 1 else bq) / t
+            t = np.where(t == 0.0, -_EPS * (np.abs(x) + 1.0), t)
+            count += t < 0.0
+    return count
+
+
+def _residual_numpy(fam, q, mu, z, size):
+    """2-norm of (T - mu I) z per point (columns of z, long double; the truncated row included) with a bound on the
+    rounding of that evaluation, and z . (T - mu I) z."""
+    ld = np.longdouble
+    idx = (2.0 * np.arange(size) + fam.offset)[:, None]
+    e = np.full((size, q.size), 1.0, dtype=ld) * q.astype(ld)
+    e[0] = (np.sqrt(ld(2)) if fam.sqrt2 else ld(1)) * q.astype(ld)
+    d = np.broadcast_to(idx**2, (size, q.size)).astype(ld)
+    d[0] = ld(fam.offset**2) + fam.q_sign * q.astype(ld)
+    zl = z.astype(ld)
+    r = (d - mu) * zl
+    r[:-1] += e[:-1] * zl[1:]
+    r[1:] += e[:-1] * zl[:-1]
+    zd = np.abs(zl.astype(float))
+    sj = np.abs((d - mu).astype(float)) * zd
+    sj[:-1] += np.abs(e[:-1].astype(float)) * zd[1:]
+    sj[1:] += np.abs(e[:-1].astype(float)) * zd[:-1]
+    extra = q.astype(ld) * zl[-1]
+    eps_ld = float(np.finfo(ld).eps)
+    rnorm = np.sqrt(np.asarray(np.sum(r * r, axis=0) + extra * extra, dtype=float)) * (1 + 4 * _EPS)
+    return rnorm + 8 * eps_ld * np.sqrt(np.sum(sj * sj, axis=0)), np.sum(zl * r, axis=0)
+
+
+def _vector_ld(fam, q, mu, m, size):
+    """The twisted vector at the shifts mu (long double) with twists m, in long double, unit, first component > 0."""
+    ld = np.longdouble
+    ql = q.astype(ld)
+    el0 = (np.sqrt(ld(2)) if fam.sqrt2 else ld(1)) * ql
+    diag = (2.0 * np.arange(size) + fam.offset) ** 2
+    d = [ld(fam.offset**2) + fam.q_sign * ql] + [ld(v) + 0 * ql for v in diag[1:]]
+    z = np.ones((size, q.size), dtype=ld)
+    rho = np.ones((size, q.size), dtype=ld)
+    with np.errstate(all="ignore"):
+        t = d[0] - mu
+        for j in range(size - 1):  # rho_j = z_j / z_{j+1} above the twist
+            ej = el0 if j == 0 else ql
+            rho[j] = -ej / t
+            t = (d[j + 1] - mu) + ej * rho[j]
+        u = d[size - 1] - mu
+        below = np.ones((size, q.size), dtype=ld)
+        for j in range(size - 1, 0, -1):  # z_j / z_{j-1} below the twist
+            ej = el0 if j == 1 else ql
+            below[j] = -ej / u
+            u = (d[j - 1] - mu) + ej * below[j]
+        rows = np.arange(size)[:, None]
+        for j in range(size - 2, -1, -1):
+            z[j] = np.where(j < m, rho[j] * z[j + 1], z[j])
+        for j in range(1, size):
+            z[j] = np.where(j > m, below[j] * z[j - 1], z[j])
+        z = np.where(rows == m, ld(1), z)
+        norm = np.sqrt(np.sum(z * z, axis=0))
+        z = z / np.where(z[0] < 0, -norm, norm)
+    return z
+
+
+def _coefficients_numpy(kind, n, q, lam, gaps, tail_tol, budget):
+    """The NumPy fallback of the C kernel (the same method: the twisted vector at lam, its Rayleigh quotient lam1 in
+    long double and the vector again at lam1 in long double, its residual over a Sturm-certified gap), vectorised
+    over the points at one matrix size, doubled while the tail is too large."""
+    fam, k = family_index(kind, n)
+    coef = np.zeros((q.size, budget))
+    rows = np.zeros(q.size, dtype=int)
+    bound, tail = np.full(q.size, np.inf), np.full(q.size, np.inf)
+    status = np.zeros(q.size, dtype=np.uint8)
+    todo = np.arange(q.size)
+    size = min(budget, 8 * ((k + 12 + int(np.ceil(np.sqrt(np.max(q, initial=0.0)))) + 7) // 8))
+    while todo.size:
+        qt, lt = q[todo], lam[todo]
+        z = eigenvectors(kind, n, qt, lt, size)[0]
+        g = gaps[todo].copy()
+        ok = np.zeros(qt.size, dtype=bool)
+        for _ in range(8):
+            now = ~ok & (_sturm_counts(fam, qt, lt - g, size) == k) & (_sturm_counts(fam, qt, lt + g, size) == k + 1)
+            ok |= now
+            g = np.where(ok, g, 0.25 * g)
+        _r, dot = _residual_numpy(fam, qt, lt.astype(np.longdouble), z, size)
+        lam1 = lt.astype(np.longdouble) + dot / np.sum(z.astype(np.longdouble) ** 2, axis=0)
+        g1 = g - np.abs((lam1 - lt.astype(np.longdouble)).astype(float))
+        zl = _vector_ld(fam, qt, lam1, np.argmax(np.abs(z), axis=0), size)
+        rnorm, _dot = _residual_numpy(fam, qt, lam1, zl, size)
+        z = zl.astype(float)
+        ok &= (g1 > 0) & np.all(np.isfinite(z), axis=0)
+        b = np.where(ok, _SQRT2 * rnorm / np.where(ok, g1, 1.0) * (1 + 8 * _EPS) + 0.5 * _EPS, np.inf)
+        idx = (2.0 * np.arange(size) + fam.offset)[:, None]
+        tl = np.max(np.abs(z[-4:]) * np.maximum(1.0, idx[-4:]), axis=0)
+        done = ok & (tl <= tail_tol)
+        last = size >= budget
+        fin = done | last | ~ok
+        sel = todo[fin]
+        zf = z[:, fin].T.copy()
+        if fam.sqrt2:
+            zf[:, 0] /= _SQRT2
+        coef[sel, :size] = zf
+        rows[sel], bound[sel], tail[sel] = size, b[fin], tl[fin]
+        status[sel] = np.where(done[fin], 1, np.where(ok[fin], 3, 0))
+        todo = todo[~fin]
+        size = min(2 * size, budget)
+    return coef, rows, bound, tail, status
+
+
+def eigenvectors(kind: str, n: int, q: np.ndarray, lam: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Unit eigenvectors (size x points) of the symmetric Hill matrices at q >= 0 for the values lam, and |gamma_m|,
+    by the twisted factorisation (the NumPy fallback of the C kernel); first component made positive."""
     fam, _k = family_index(kind, n)
     npts = q.size
     diag = ((2.0 * np.arange(size) + fam.offset) ** 2)[:, None]
@@ -101,87 +276,33 @@ def eigenvectors(kind: str, n: int, q: np.ndarray, lam: np.ndarray, size: int) -
         down = np.ones((size, npts))
         down[1:] = np.where(rows[1:] > m, -e[:-1] / np.where(u[1:] == 0.0, tiny, u[1:]), 1.0)
         z = np.cumprod(up[::-1], axis=0)[::-1] * np.cumprod(down, axis=0)
-        # componentwise relative rounding error of z: each ratio carries eps (1 + condition of its pivot), the
-        # pivot condition being (|d_j| + |lambda| + |b / previous pivot|) / |pivot|; accumulated along the path
-        absd = np.broadcast_to(diag, (size, npts)) + np.abs(lam)
-        cond_t = np.ones((size, npts))
-        cond_t[1:] = (absd[1:] + np.abs(b[:-1] / np.where(t[:-1] == 0.0, tiny, t[:-1]))) / np.abs(
-            np.where(t[1:] == 0.0, tiny, t[1:])
-        )
-        cond_u = np.ones((size, npts))
-        cond_u[:-1] = (absd[:-1] + np.abs(b[:-1] / np.where(u[1:] == 0.0, tiny, u[1:]))) / np.abs(
-            np.where(u[:-1] == 0.0, tiny, u[:-1])
-        )
-        # a tiny pivot (a node of the coefficient sequence) has a huge condition, but the product of its ratio with
-        # the next one, t_j t_{j+1} = t_j (d_{j+1} - lambda) - b_j, is well conditioned: cap the single-ratio value
-        cond_t = np.minimum(cond_t, 1e3)
-        cond_u = np.minimum(cond_u, 1e3)
-        c_up = np.where(rows < m, 3.0 + cond_t, 0.0)
-        c_down = np.where(rows > m, 3.0 + cond_u, 0.0)
-        # rounding errors of the ratios are independent: root-sum-square along the path (a linear sum overstates
-        # the measured errors by two orders of magnitude at q = 1e4)
-        rel = np.sqrt(np.cumsum((c_up * c_up)[::-1], axis=0)[::-1] + np.cumsum(c_down * c_down, axis=0)) * _EPS
         norm = np.sqrt(np.sum(z * z, axis=0))
         z /= np.where(z[0] < 0, -norm, norm)
-    eigenvectors.last_rel = rel  # type: ignore[attr-defined]
     return z, gm / norm
 
 
-def coefficients(kind: str, n: int, q: np.ndarray, lam: np.ndarray, tol: float) -> dict:
-    """Fourier coefficients at q >= 0 (1-d arrays q, lam): matrix (size x points), Fourier indices, bounds.
-
-    The size is increased until the tail (|z_j| of the last rows, times the Fourier index for derivatives) is below
-    ``tol * 1e-3``; raises ConvergenceError when no size up to 16 times the first one reaches it.
-    """
-    sizes = first_size(kind, n, q)
-    size = int(sizes.max()) if q.size else 8
-    for _ in range(5):
-        z, resid = eigenvectors(kind, n, q, lam, size)
-        rel = eigenvectors.last_rel  # type: ignore[attr-defined]
-        k_last = fourier_indices(kind, n, size)[-4:]
-        tail = np.max(np.abs(z[-4:]) * np.maximum(1, k_last)[:, None], axis=0) if q.size else np.zeros(0)
-        if not np.any(tail > 1e-3 * tol):
-            break
-        size *= 2
-    else:
-        raise ConvergenceError(
-            f"Fourier coefficients of the Mathieu function did not converge (tail {float(tail.max()):.3g} at size "
-            f"{size}); q is too large for this truncation",
-            achieved=float(tail.max()),
-        )
+def error_bounds(kind: str, n: int, co: dict) -> tuple[np.ndarray, np.ndarray]:
+    """(bound for the function, bound for its x-derivative) per point for the NumPy fallback (the C kernel returns
+    its own), valid for every x: the 2-norm error of the coefficients times the 2-norm of the basis functions'
+    maxima over the rows kept, the neglected coefficients beyond them, and the rounding of the double sums
+    (``rows + 6`` units per term)."""
     fam, _k = family_index(kind, n)
-    z = z.copy()
+    coef, rows, bound, tail = co["coef"], co["rows"], co["bound"], co["tail"]
+    idx = co["index"].astype(float)
+    keep = np.arange(coef.shape[1])[None, :] < rows[:, None]
+    w0 = np.where(keep, 1.0, 0.0)
     if fam.sqrt2:
-        z[0] /= _SQRT2  # symmetric component sqrt(2) A_0 -> A_0
-    idx = fourier_indices(kind, n, size)
-    return {"coef": z, "index": idx, "resid": resid, "tail": tail, "rel": rel}
-
-
-def error_bounds(kind: str, n: int, q: np.ndarray, lam: np.ndarray, lam_err: np.ndarray, co: dict):
-    """(bound for the function, bound for the derivative) per point, from the coefficient errors.
-
-    Eigenvector perturbation: ``|dz| <= (|dlambda| + rho + c eps ||T||) / gap`` (Davis-Kahan), with ``gap`` a lower
-    estimate of the distance to the neighbouring eigenvalues of the same family; rounding of the sums
-    ``~ N eps sum |A_j|`` (resp. ``sum j |A_j|``); plus the truncated tail.
-    """
-    coef, idx = co["coef"], co["index"]
-    size = coef.shape[0]
-    h = np.sqrt(np.abs(q))
-    # spacing to the neighbours of the same family: 4(n + 1) at q = 0, 8h - 2(n + 2) at large q (DLMF 28.8.1)
-    gap = np.maximum(4.0 * (n + 1.0), 8.0 * h - 2.0 * (n + 2.0))
-    dz = (lam_err + co["resid"]) / gap  # 2-norm of the eigenvector change (Davis-Kahan)
+        w0[:, 0] = 0.5  # A_0 = z_0 / sqrt(2): the basis function of z_0 is 1 / sqrt(2)
+    w1 = np.where(keep, idx * idx, 0.0)
+    kmax = 2.0 * rows + fam.offset
     absc = np.abs(coef)
-    ik = idx[:, None].astype(float)
-    s0 = np.sum(absc, axis=0)
-    s1 = np.sum(absc * ik, axis=0)
-    # componentwise rounding (relative, accumulated along the factorisation) and the normalisation
-    comp = np.sum(absc * co["rel"], axis=0) + 2 * _EPS * s0
-    comp1 = np.sum(absc * co["rel"] * ik, axis=0) + 2 * _EPS * s1
-    sums = 2 * math.log2(size + 1) * _EPS
-    # the change of the eigenvector changes the function by at most |dz| times its sup-norm scale sum |A_j|
-    err0 = comp + dz * np.maximum(1.0, s0) + sums * s0 + co["tail"]
-    err1 = comp1 + dz * np.maximum(1.0, s1) + sums * s1 + co["tail"] * idx[-1]
-    return err0, err1
+    units = _EPS * (rows[:, None] + 6.0)
+    rnd0 = np.sum(absc * units, axis=1)
+    rnd1 = np.sum(absc * idx * units, axis=1)
+    beyond = 2.0 * (tail + bound)
+    err0 = bound * np.sqrt(np.sum(w0, axis=1)) + beyond + rnd0
+    err1 = bound * np.sqrt(np.sum(w1, axis=1)) + beyond * kmax + rnd1
+    return err0 * (1 + 1e-6), err1 * (1 + 1e-6)
 
 
 def signs_negative_q(kind: str, n: int, size: int) -> np.ndarray:

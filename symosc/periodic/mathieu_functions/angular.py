@@ -64,18 +64,19 @@ def _check_tol(tol: Any) -> float:
 
 
 # ----------------------------------------------------------------------------------------------- coefficients
-def _coefficient_table(kind: str, n: int, q: np.ndarray, tol: float) -> dict:
+def _coefficient_table(
+    kind: str, n: int, q: np.ndarray, tol: float, derivative: bool = False, keep_tail: bool = False
+) -> dict:
     """Coefficients for the distinct points q (1-d), in the sign convention of the requested function.
 
-    Returns ``coef`` (size x points, padded with zeros), ``index`` (Fourier indices), ``lam``, ``lam_err``,
-    ``err0``/``err1`` (error bounds for the function and its derivative).
+    Returns ``matrix`` (points x size, C order), ``coef`` (its transpose, size x points), ``rows``, ``index``
+    (Fourier indices), ``lam``, ``lam_err``, ``err0``/``err1`` (error bounds for the function and its derivative,
+    valid for every x), ``s0``/``s1`` (sum |A_k|, sum k |A_k|).
     """
     from ..mathieu import mathieu_characteristic
 
     ab = "a" if kind == "ce" else "b"
     npts = q.size
-    out_lam = np.empty(npts)
-    out_lerr = np.empty(npts)
     parts = []
     for negative in (False, True):
         sel = np.nonzero((q < 0) == negative)[0]
@@ -85,29 +86,28 @@ def _coefficient_table(kind: str, n: int, q: np.ndarray, tol: float) -> dict:
         qa = np.abs(q[sel])
         res = mathieu_characteristic(eff, n, qa)
         lam = np.asarray(res.values, dtype=float).reshape(-1)
-        lerr = np.asarray(res.error_estimate, dtype=float).reshape(-1)
-        out_lam[sel], out_lerr[sel] = lam, lerr
-        co = _fourier.coefficients(eff, n, qa, lam, tol)
-        err0, err1 = _fourier.error_bounds(eff, n, qa, lam, lerr, co)
-        coef = co["coef"]
+        co = _fourier.coefficients(eff, n, qa, lam, tol, derivative, keep_tail)
         if negative:
-            coef = coef * _fourier.signs_negative_q(eff, n, coef.shape[0])[:, None]
-        parts.append((sel, coef, co["index"], err0, err1))
-    size = max(p[1].shape[0] for p in parts) if parts else 8
-    index = _fourier.fourier_indices("a" if kind == "ce" else "b", n, size)
-    table = np.zeros((size, npts))
-    err0 = np.empty(npts)
-    err1 = np.empty(npts)
-    for sel, coef, _idx, e0, e1 in parts:
-        table[: coef.shape[0], sel] = coef
-        err0[sel], err1[sel] = e0, e1
+            co["coef"] = co["coef"] * _fourier.signs_negative_q(eff, n, co["coef"].shape[1])[None, :]
+        co["lam"], co["lam_err"] = lam, np.asarray(res.error_estimate, dtype=float).reshape(-1)
+        parts.append((sel, co))
+    if len(parts) == 1 and parts[0][0].size == npts:  # one sign of q: no copies
+        co = parts[0][1]
+        matrix = np.ascontiguousarray(co["coef"])
+        out = {key: co[key] for key in ("rows", "lam", "lam_err", "err0", "err1", "s0", "s1")}
+    else:
+        size = max((p[1]["coef"].shape[1] for p in parts), default=1)
+        matrix = np.zeros((npts, size))
+        out = {key: np.empty(npts) for key in ("lam", "lam_err", "err0", "err1", "s0", "s1")}
+        out["rows"] = np.zeros(npts, dtype=np.intc)
+        for sel, co in parts:
+            matrix[sel, : co["coef"].shape[1]] = co["coef"]
+            for key in out:
+                out[key][sel] = co[key]
     # the Fourier indices of the |q| family equal those of the requested kind (odd n: both odd; even n: as kind)
-    s0 = np.sum(np.abs(table), axis=0)
-    s1 = np.sum(np.abs(table) * index[:, None], axis=0)
-    return {
-        "coef": table, "index": index, "lam": out_lam, "lam_err": out_lerr, "err0": err0, "err1": err1,
-        "s0": s0, "s1": s1,
-    }  # fmt: skip
+    out["rows"] = np.ascontiguousarray(out["rows"], dtype=np.intc)
+    out.update(matrix=matrix, coef=matrix.T, index=_fourier.fourier_indices(ab, n, matrix.shape[1]))
+    return out
 
 
 def _split(x: np.ndarray) -> np.ndarray:
@@ -116,24 +116,14 @@ def _split(x: np.ndarray) -> np.ndarray:
     return c - (c - x)
 
 
-def _evaluate(kind: str, n: int, q: np.ndarray, x: np.ndarray, tol: float, derivative: bool):
-    """Values (or derivatives), error bounds, terms: q and x broadcast to one shape."""
-    qb, xb = np.broadcast_arrays(q, x)
-    shape = qb.shape
-    qf, xf = qb.reshape(-1), xb.reshape(-1)
-    uq, inv = np.unique(qf, return_inverse=True)
-    tab = _coefficient_table(kind, n, uq, tol)
-    coef, idx = tab["coef"], tab["index"].astype(float)
-    # trim trailing rows that are zero for every point
-    nz = np.nonzero(np.any(coef != 0.0, axis=1))[0]
-    rows = int(nz[-1]) + 1 if nz.size else 1
-    coef, idx = coef[:rows], idx[:rows]
-    out = np.empty(qf.shape)
+def _sum_numpy(kind: str, coef: np.ndarray, idx: np.ndarray, inv: np.ndarray, xf: np.ndarray, derivative: bool):
+    """The Fourier sums in NumPy (fallback without a C compiler)."""
+    out = np.empty(xf.shape)
     # k x split as k x_hi (exact: x_hi has 26 significant bits, k < 2^26) + k x_lo, so that the rounding of the
     # argument does not enter: trig(k x) = trig(A) + (k x_lo) trig'(A) + ...
     x_hi = _split(xf)
     x_lo = xf - x_hi
-    for start in range(0, qf.size, _BLOCK):
+    for start in range(0, xf.size, _BLOCK):
         sl = slice(start, start + _BLOCK)
         c = coef[:, inv[sl]]
         big = np.multiply.outer(idx, x_hi[sl])
@@ -148,8 +138,33 @@ def _evaluate(kind: str, n: int, q: np.ndarray, x: np.ndarray, tol: float, deriv
             out[sl] = -np.sum((c * idx[:, None]) * sin_k, axis=0)
         else:
             out[sl] = np.sum((c * idx[:, None]) * cos_k, axis=0)
+    return out
+
+
+def _evaluate(kind: str, n: int, q: np.ndarray, x: np.ndarray, tol: float, derivative: bool):
+    """Values (or derivatives), error bounds, terms, the coefficient table and the index of each point's q in it:
+    q and x broadcast to one shape."""
+    from .._hill_c import kernel
+
+    qb, xb = np.broadcast_arrays(q, x)
+    shape = qb.shape
+    qf, xf = qb.reshape(-1), np.ascontiguousarray(xb.reshape(-1), dtype=float)
+    uq, inv = np.unique(qf, return_inverse=True)
+    tab = _coefficient_table(kind, n, uq, tol, derivative)
+    rows = int(tab["rows"].max()) if uq.size else 1
+    lib = kernel()
+    if lib is not None:
+        out = np.empty(qf.shape)
+        col = np.ascontiguousarray(inv, dtype=np.int_)
+        matrix = tab["matrix"]
+        fam_offset = int(tab["index"][0]) if tab["index"].size else 0
+        lib.symosc_mathieu_fourier_sum(fam_offset, int(kind == "se"), int(derivative), qf.size, col.ctypes.data,
+                                       xf.ctypes.data, matrix.ctypes.data, matrix.shape[1], tab["rows"].ctypes.data,
+                                       out.ctypes.data)  # fmt: skip
+    else:
+        out = _sum_numpy(kind, tab["coef"][:rows], tab["index"][:rows].astype(float), inv, xf, derivative)
     err = (tab["err1"] if derivative else tab["err0"])[inv]
-    return out.reshape(shape), err.reshape(shape), rows, tab
+    return out.reshape(shape), err.reshape(shape), rows, tab, inv
 
 
 @dataclass(frozen=True)
@@ -233,13 +248,13 @@ def _values(kind: str, n: int, q: Any, x: Any, tol: float, derivative: bool) -> 
         np.broadcast_shapes(qa.shape, xa.shape)
     except ValueError:
         raise ParameterError(f"q (shape {qa.shape}) and x (shape {xa.shape}) cannot be broadcast together") from None
-    vals, err, rows, tab = _evaluate(kind, n, qa, xa, tol, derivative)
+    vals, err, rows, tab, inv = _evaluate(kind, n, qa, xa, tol, derivative)
     # tol is absolute for functions of size ~1: relative to the sup-norm scale sum |A_k| (sum k |A_k| for d/dx)
     scale = np.maximum(1.0, tab["s1" if derivative else "s0"])
     worst = float(np.max(tab["err1" if derivative else "err0"] / scale)) if scale.size else 0.0
     if worst > tol:
         raise ConvergenceError(f"{kind}_{n}: error estimate {worst:.3g} above tol={tol:g}", achieved=worst)
-    lam = tab["lam"][np.unique(np.broadcast_arrays(qa, xa)[0].reshape(-1), return_inverse=True)[1]]
+    lam = tab["lam"][inv]
     scalar = vals.ndim == 0
     cv = float(lam[0]) if scalar else lam.reshape(vals.shape)
     return MathieuFunctionValues(
@@ -475,7 +490,7 @@ class MathieuCoefficients(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Plot |coefficient| against the Fourier index on a log scale; returns the Axes.
+        """Plot ``|coefficient|`` against the Fourier index on a log scale; returns the Axes.
 
         Parameters
         ----------

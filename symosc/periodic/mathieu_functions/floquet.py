@@ -52,28 +52,61 @@ _EPS = float(np.finfo(float).eps)
 
 
 # ---------------------------------------------------------------------------------------------------- exponent
-def _exponent(a: float, q: float) -> tuple[complex, float, float, int, bool]:
-    """(nu, cos(pi nu), error estimate of nu, zone n, stable) at one point."""
-    s_val, c_val, count, err = _fourier.hill_determinants(a, q)
+def _hill_sc(a: np.ndarray, q: np.ndarray):
+    """(S, C, log|S|, log|C|, count, err) at the points (1-d float arrays, q >= 0): the C kernel, or the Python
+    evaluation of :func:`._fourier.hill_determinants` point by point without a compiler."""
+    from .._hill_c import kernel
+
+    lib = kernel()
+    a = np.ascontiguousarray(a, dtype=float)
+    q = np.ascontiguousarray(q, dtype=float)
+    if lib is not None:
+        out = [np.empty(a.size) for _ in range(5)]
+        count = np.empty(a.size, dtype=np.intc)
+        lib.symosc_mathieu_hill_sc(a.size, a.ctypes.data, q.ctypes.data, *[o.ctypes.data for o in out[:4]],
+                                   count.ctypes.data, out[4].ctypes.data)  # fmt: skip
+        s, c, ls, lc, err = out
+        return s, c, ls, lc, count.astype(int), err
+    rows = [_fourier.hill_determinants(float(x), float(y)) for x, y in zip(a, q, strict=True)]
+    s, c, count, err = (np.array(v) for v in zip(*rows, strict=True)) if rows else (np.zeros(0),) * 4
+    with np.errstate(divide="ignore"):
+        return s, c, np.log(np.abs(s)), np.log(np.abs(c)), count.astype(int), err
+
+
+def _exponents(a: np.ndarray, q: np.ndarray):
+    """(nu, cos(pi nu), error estimate of nu, zone n, stable) at the points (1-d arrays, q >= 0), vectorised."""
+    s_val, c_val, log_s, log_c, count, err = _hill_sc(a, q)
     k = count // 2
     stable = count % 2 == 1
-    if stable:
-        # 0 <= S, C <= 1 up to rounding; nu0 in [0, 1] with sin^2(pi nu0 / 2) = S
-        if s_val <= 0.5:
-            nu0 = 2.0 / math.pi * math.asin(math.sqrt(min(max(s_val, 0.0), 1.0)))
-        else:
-            nu0 = 2.0 / math.pi * math.acos(math.sqrt(min(max(c_val, 0.0), 1.0)))
-        frac = nu0 if k % 2 == 0 else 1.0 - nu0
-        nu: complex = complex(k + frac, 0.0)
-        small = min(abs(s_val), abs(c_val))
-        dnu = err / (math.pi * math.sqrt(max(small, err) * max(1.0 - small, err)))
-    else:
-        neg = -s_val if k % 2 == 0 else -c_val  # = sinh^2(pi mu / 2)
-        mu = 2.0 / math.pi * math.asinh(math.sqrt(max(neg, 0.0)))
-        nu = complex(k, mu)
-        dnu = err / (math.pi * math.sqrt(max(neg, err) * (1.0 + max(neg, 0.0))))
-    cos_pi_nu = 1.0 - 2.0 * s_val if s_val <= 0.5 else 2.0 * c_val - 1.0
-    return nu, cos_pi_nu, dnu, k, stable
+    with np.errstate(all="ignore"):
+        # stable: 0 <= S, C <= 1 up to rounding; nu0 in [0, 1] with sin^2(pi nu0 / 2) = S (the smaller one used)
+        nu0 = np.where(
+            s_val <= 0.5,
+            2.0 / np.pi * np.arcsin(np.sqrt(np.clip(s_val, 0.0, 1.0))),
+            2.0 / np.pi * np.arccos(np.sqrt(np.clip(c_val, 0.0, 1.0))),
+        )
+        frac = np.where(k % 2 == 0, nu0, 1.0 - nu0)
+        small = np.minimum(np.abs(s_val), np.abs(c_val))
+        dnu_s = err / (np.pi * np.sqrt(np.maximum(small, err) * np.maximum(1.0 - small, err)))
+        # unstable: -S (k even) or -C (k odd) = sinh^2(pi mu / 2); from the logarithm where it overflows
+        neg = np.where(k % 2 == 0, -s_val, -c_val)
+        log_neg = np.where(k % 2 == 0, log_s, log_c)
+        mu = np.where(
+            np.isfinite(neg),
+            2.0 / np.pi * np.arcsinh(np.sqrt(np.maximum(neg, 0.0))),
+            2.0 / np.pi * (0.5 * log_neg + np.log(2.0)),
+        )
+        dnu_u = err / (np.pi * np.sqrt(np.maximum(neg, err) * (1.0 + np.maximum(neg, 0.0))))
+        nu = np.where(stable, k + frac, k + 1j * mu)
+        dnu = np.where(stable, dnu_s, np.where(np.isfinite(neg), dnu_u, 2.0 / np.pi * 1e-15 * np.abs(log_neg)))
+        cos_pi_nu = np.where(s_val <= 0.5, 1.0 - 2.0 * s_val, 2.0 * c_val - 1.0)
+    return nu.astype(complex), cos_pi_nu, dnu, k, stable
+
+
+def _exponent(a: float, q: float) -> tuple[complex, float, float, int, bool]:
+    """(nu, cos(pi nu), error estimate of nu, zone n, stable) at one point."""
+    nu, cpn, dnu, k, stable = _exponents(np.array([a]), np.array([q]))
+    return complex(nu[0]), float(cpn[0]), float(dnu[0]), int(k[0]), bool(stable[0])
 
 
 @dataclass(frozen=True)
@@ -91,7 +124,7 @@ class MathieuExponent(SymPyPrintable):
     zone : int or numpy.ndarray
         n: the integer part of nu (the number of characteristic values below a, halved).
     stable : bool or numpy.ndarray
-        Whether every solution is bounded (|cos pi nu| < 1).
+        Whether every solution is bounded (``|cos(pi nu)| < 1``).
     error_estimate : float or numpy.ndarray
         Estimated absolute error of nu (large only where nu is inherently ill-conditioned: at the edges of the
         zones, d nu / d a is unbounded).
@@ -154,14 +187,7 @@ def mathieu_floquet_exponent(a: Any, q: Any) -> MathieuExponent:
     (0.776983424487, True)
     """
     ab, qb = _broadcast_aq(a, q)
-    flat_a, flat_q = ab.reshape(-1), qb.reshape(-1)
-    nu = np.empty(flat_a.shape, dtype=complex)
-    cpn = np.empty(flat_a.shape)
-    err = np.empty(flat_a.shape)
-    zone = np.empty(flat_a.shape, dtype=int)
-    stable = np.empty(flat_a.shape, dtype=bool)
-    for i, (av, qv) in enumerate(zip(flat_a, flat_q, strict=True)):
-        nu[i], cpn[i], err[i], zone[i], stable[i] = _exponent(float(av), abs(float(qv)))
+    nu, cpn, err, zone, stable = _exponents(ab.reshape(-1), np.abs(qb.reshape(-1)))
     if ab.ndim == 0:
         return MathieuExponent(float(ab), float(qb), complex(nu[0]), float(cpn[0]), int(zone[0]), bool(stable[0]),
                                float(err[0]))  # fmt: skip
@@ -331,7 +357,7 @@ class FundamentalSolutions(SymPyPrintable):
     method : str
         ``"floquet"`` (from the Floquet solution) or ``"ode"`` (integration, near integer nu).
     error_estimate : float
-        Estimated absolute error (relative to max(1, |w|)).
+        Estimated absolute error (relative to ``max(1, |w|)``).
     """
 
     a: float
@@ -442,7 +468,7 @@ def mathieu_fundamental(a: float, q: float, x: Any, *, tol: float = 1e-10) -> Fu
     x : float or array_like
         Arguments in radians.
     tol : float
-        Target error (relative to max(1, |w|)); the Floquet route is used when its conditioning allows it, the
+        Target error (relative to ``max(1, |w|)``); the Floquet route is used when its conditioning allows it, the
         integration otherwise.
 
     Returns
@@ -490,8 +516,11 @@ def mathieu_fundamental(a: float, q: float, x: Any, *, tol: float = 1e-10) -> Fu
             w2p = ((dp + dm) / (2 * fp0)).real
             result = (w1, w1p, w2, w2p, "floquet", float(err))
     if result is None:
-        y1 = _ode(af, qf, xs, max(tol * 1e-2, 1e-13))
-        y2 = _ode(af, qf, xs, max(tol, 1e-11))
+        # two local tolerances a decade apart, well below tol (the global error over many periods exceeds the
+        # local one): the difference estimates the error of the looser solution, a bound for the returned one
+        rtol = max(tol * 1e-3, 2.5e-14)
+        y1 = _ode(af, qf, xs, rtol)
+        y2 = _ode(af, qf, xs, 10.0 * rtol)
         err = float(np.max(np.abs(y1 - y2) / np.maximum(1.0, np.abs(y1)))) if xs.size else 0.0
         if err > tol:
             raise ConvergenceError(f"fundamental solutions: integration error estimate {err:.3g} above tol={tol:g}",

@@ -14,10 +14,17 @@ Mc_{2m}, Mc_{2m+1}, Ms_{2m+1}, Ms_{2m+2}):
 
 (minus between the two products for Ms; eps_0 = 2 for Mc_{2m} and s = 0, else 1).  These converge for every z and
 are well conditioned where the terms do not cancel; the shift s is the index of the largest coefficient (no division
-by a small one).  The error estimate is the rounding of the sum relative to the sum of |terms| (Bessel values to a
-few ulp) plus the coefficient error plus the last terms of the sum: it grows where the function is small compared
-to its terms (near zeros) and for the second kind at small z and large q, where the Bessel factors Y_{l+s}(h e^z)
-grow faster than the coefficients decay -- there the estimate says so (check ``relative_error_estimate()``).
+by a small one); every coefficient the eigenvector kernel computes is kept (the second kind multiplies tiny ones by
+large Bessel functions).  The error estimate is the rounding of the sum relative to the sum of |terms| (Bessel
+values to a few ulp) plus the coefficient error plus the last terms of the sum.  It is compared with ``tol`` relative
+to the local amplitude ``sqrt(|w|^2 + |w'|^2 / omega^2)``, ``omega^2 = 2q cosh 2z - a``, where the function
+oscillates (WKB: errors are measured against the size of the oscillation, not against a value near one of its
+zeros), and relative to ``|w|`` elsewhere.
+
+Where the series loses digits, ``ConvergenceError`` is raised rather than a wrong value returned.  With the default
+``tol = 1e-12`` this happens only for the second kind (and kinds 3, 4) at small z for moderate-to-large orders:
+measured on n <= 50, q <= 1e4, z in [0, 1], only for n >= 10, q from about 100 to 4 n^2, z below 0.75 (below 0.4
+in most cases); the first kind is never refused there.
 """
 
 from __future__ import annotations
@@ -96,6 +103,16 @@ def _series(func: str, j: int, n: int, q: float, z: np.ndarray, coef: np.ndarray
     return val, der, rel * mag + tail, rel * dmag + dtail
 
 
+def _amplitude(vals, ders, q, z, lam) -> np.ndarray:
+    """The local amplitude of a solution of w'' = (a - 2q cosh 2z) w: where it oscillates (2q cosh 2z > a, local
+    frequency omega), sqrt(|w|^2 + |w'|^2 / omega^2) (WKB; constant along z to leading order, so errors are measured
+    against the size of the oscillation, not against a value near one of its zeros); else |w|."""
+    omega2 = 2.0 * q * np.cosh(2.0 * z) - lam
+    with np.errstate(divide="ignore", invalid="ignore"):
+        osc = np.sqrt(np.abs(vals) ** 2 + np.abs(ders) ** 2 / np.where(omega2 > 0, omega2, np.inf))
+    return np.maximum(np.where(omega2 > 0, osc, np.abs(vals)), 1e-300)
+
+
 @dataclass(frozen=True)
 class ModifiedMathieuValues(SymPyPrintable):
     """Values of a modified Mathieu function Mc_n^(j) or Ms_n^(j) and its z-derivative, with error estimates.
@@ -127,7 +144,7 @@ class ModifiedMathieuValues(SymPyPrintable):
     derivative_error_estimate: Any
 
     def relative_error_estimate(self) -> Any:
-        """error_estimate / |value| (large near zeros of the function)."""
+        """``error_estimate / |value|`` (large near zeros of the function)."""
         with np.errstate(divide="ignore"):
             return np.asarray(self.error_estimate) / np.abs(self.values)
 
@@ -158,7 +175,7 @@ class ModifiedMathieuValues(SymPyPrintable):
 
 
 @validated
-def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float = 1e-8) -> ModifiedMathieuValues:
+def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float = 1e-12) -> ModifiedMathieuValues:
     """Modified Mathieu function Mc_n^(j)(z, h) or Ms_n^(j)(z, h), h = sqrt(q), with its z-derivative.
 
     Parameters
@@ -174,7 +191,8 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
     z : float or array_like
         Real radial argument.
     tol : float
-        Largest accepted error estimate, relative to max(|value|, 1e-3) (a ConvergenceError above it).
+        Largest accepted error estimate (default 1e-12), relative to the local amplitude where the function
+        oscillates and to ``|value|`` elsewhere (a ConvergenceError above it; see the module notes for the region).
 
     Returns
     -------
@@ -185,7 +203,7 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
     ParameterError
         Bad arguments (q <= 0 included).
     ConvergenceError
-        An error estimate above ``tol`` (second kind at small z and large q, see the module notes).
+        An error estimate above ``tol`` (second kind at small z for n >= 10, see the module notes).
 
     See Also
     --------
@@ -218,7 +236,7 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
     err = np.empty(qf.shape)
     derr = np.empty(qf.shape)
     uq, inv = np.unique(qf, return_inverse=True)
-    tab = _coefficient_table("ce" if func == "Mc" else "se", n, uq, 1e-13)
+    tab = _coefficient_table("ce" if func == "Mc" else "se", n, uq, 1e-13, keep_tail=True)
     for i, qv in enumerate(uq):
         sel = np.nonzero(inv == i)[0]
         v, d, e, de = _series(func, kind, n, float(qv), zf[sel], tab["coef"][:, i], float(tab["lam_err"][i]),
@@ -228,11 +246,11 @@ def mathieu_modified(func: str, kind: int, n: int, q: Any, z: Any, *, tol: float
         err[sel], derr[sel] = e, de
     if not np.all(np.isfinite(vals)):
         raise ConvergenceError(f"{func}_{n}^({kind}): a Bessel function overflowed (z or q too large)")
-    worst = float(np.max(err / np.maximum(np.abs(vals), 1e-3))) if err.size else 0.0
+    worst = float(np.max(err / _amplitude(vals, ders, qf, zf, tab["lam"][inv]))) if err.size else 0.0
     if worst > tol:
         raise ConvergenceError(
-            f"{func}_{n}^({kind}): error estimate {worst:.3g} (relative) above tol={tol:g}; the Bessel-product "
-            "series loses accuracy here (second kind at small z and large q)",
+            f"{func}_{n}^({kind}): error estimate {worst:.3g} (relative to the local amplitude) above tol={tol:g}; "
+            "the Bessel-product series loses accuracy here (see the module notes for the region)",
             achieved=worst,
         )
     shape = qb.shape
