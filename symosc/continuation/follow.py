@@ -126,7 +126,7 @@ def continue_periodic(
     stability = check_bool("stability", stability)
     kinds = _kinds(detect, stability)
     opt = _arc.Options(min(step, max_step), min_step, max_step, max_points, stability=stability)
-    prob = problem.with_values({problem.model.params[k]: lo})
+    prob = problem._with_values({problem.model.params[k]: lo})
     p = prob.values.copy()
     u0, prob = _start(prob, start, p)
     raw = _arc.run(
@@ -157,7 +157,7 @@ def _kinds(detect: Any, stability: bool) -> tuple[str, ...]:
 
 def _start(prob: Any, start: Any, p: np.ndarray) -> tuple[np.ndarray, Any]:
     """Converged unknowns at the start point (growing the truncation when adaptive)."""
-    return prob.converge(start)
+    return prob._converge(start)
 
 
 def _branch(raw: _arc.Raw, problem: Any, k: int, p: np.ndarray, name: str | None = None) -> Branch:
@@ -272,14 +272,14 @@ def switch_branch(
     p = problem.values.copy()
     for name, val in branch.values.items():
         p[problem.model.param_index(name)] = val
-    prob = problem.at_size(bifurcation.size)
+    prob = problem._at_size(bifurcation.size)
     X = bifurcation.state.copy()
     t_old = bifurcation.tangent.copy()
     if bifurcation.kind == "period_doubling":
-        prob, embed = prob.doubled()
+        prob, embed = prob._doubled()
         X = np.append(embed(X[:-1]), X[-1])
         t_old = np.append(embed(t_old[:-1], tangent=True), t_old[-1])
-    prob.begin_step(X[:-1])
+    prob._begin_step(X[:-1])
     w = kernel_direction(prob, X, p, k, t_old) * direction
     length = abs(hi - lo)
     step = length / 200 if step is None else check_positive("step", step)

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validate import check_choice, check_positive, validated
+from .._validate import check_choice, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = ["orbit_multipliers"]
@@ -120,7 +120,7 @@ def orbit_multipliers(
     check_choice("method", method, ("monodromy", "hill"))
     check_choice("along", along, ("integrated", "series"))
     rtol = check_positive("rtol", rtol)
-    p = problem.with_values(solution.values).values
+    p = problem._with_values(solution.values).values
     if method == "monodromy":
         if along == "series":
             if solution.coefficients is None:
@@ -132,12 +132,12 @@ def orbit_multipliers(
         return rho[np.lexsort((-rho.imag, -np.abs(rho)))]
     if problem.method != "harmonic balance" or solution.coefficients is None:
         raise ParameterError("method='hill' needs a harmonic-balance problem and solution")
-    H = solution.size if harmonics is None else int(harmonics)
-    prob = problem.at_size(H)
+    H = solution.size if harmonics is None else check_int("harmonics", harmonics, minimum=1, maximum=800)
+    prob = problem._at_size(H)
     if not problem.autonomous:
         ratio = solution.values[problem.model.forcing_frequency.name] / solution.frequency
         m = round(ratio)
         if m != prob.period_multiple:
-            prob = prob.with_harmonics(H, period_multiple=m)
-    u = prob.pack(solution.coefficients, solution.frequency if problem.autonomous else None)
-    return prob.hill_multipliers(u, p)
+            prob = prob._with_harmonics(H, period_multiple=m)
+    u = prob._pack(solution.coefficients, solution.frequency if problem.autonomous else None)
+    return prob._hill_multipliers(u, p)

@@ -66,7 +66,7 @@ def test_exact_convolution_equals_fine_quadrature(duffing_hb):
     H = duffing_hb.harmonics
     c = rng.normal(size=(1, 2 * H + 1)) / np.arange(1, 2 * H + 2)
     p = duffing_hb.values.copy()
-    G, J, _ = duffing_hb.evaluate(c.ravel(), p)
+    G, J, _ = duffing_hb._evaluate(c.ravel(), p)
     assert duffing_hb.exact and duffing_hb.samples == 4 * H + 2
     N = 4096
     tau = 2 * np.pi * np.arange(N) / N
@@ -87,8 +87,8 @@ def test_exact_convolution_equals_fine_quadrature(duffing_hb):
     # the Jacobian is the exact derivative of the residual (central differences agree to their own error)
     h = 1e-6
     col = (
-        duffing_hb.evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
-        - duffing_hb.evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]
+        duffing_hb._evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
+        - duffing_hb._evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]
     ) / (2 * h)
     np.testing.assert_allclose(J[:, 3], col, atol=1e-7)
 
