@@ -60,6 +60,8 @@ def test_fold_agrees_with_shooting(duffing):
     (f2,) = brs.of_kind("fold")
     assert f2.parameter == pytest.approx(fold.parameter, abs=1e-8)
     assert f2.amplitude == pytest.approx(fold.amplitude, abs=1e-6)
+    # the state at t = 0 reported with the fold: Fourier series (harmonic balance) against the period map's fixed point
+    np.testing.assert_allclose(f2.initial_state, fold.initial_state, atol=1e-8)
 
 
 def test_weakly_nonlinear_folds_approach_averaging():
