@@ -101,8 +101,8 @@ class PeriodicSolution(SymPyPrintable):
 
         Parameters
         ----------
-        samples : int
-            Number of intervals of the uniform time grid.
+        samples : int, optional
+            Number of intervals of the uniform time grid: an integer >= 4 (default 256).
 
         Returns
         -------
@@ -286,7 +286,7 @@ class Branch(SymPyPrintable):
         Parameters
         ----------
         kind : {"fold", "period_doubling", "neimark_sacker", "branch_point"}
-            The kind.
+            The kind of bifurcation: one of these names.
         """
         check_choice("kind", kind, KINDS)
         return [b for b in self.bifurcations if b.kind == kind]
@@ -297,7 +297,8 @@ class Branch(SymPyPrintable):
         Parameters
         ----------
         index : int
-            Point index (negative counts from the end).
+            Index of the point: an integer from ``-len(branch)`` to ``len(branch) - 1`` (negative counts from the
+            end).
         """
         k = check_int("index", index, minimum=-len(self), maximum=len(self) - 1)
         vals = dict(self.values)
@@ -329,8 +330,8 @@ class Branch(SymPyPrintable):
 
         Parameters
         ----------
-        y : {"amplitude", "frequency", "period"}
-            What to draw against the parameter.
+        y : {"amplitude", "frequency", "period"}, optional
+            What to draw against the parameter: one of these names (default "amplitude").
         ax : matplotlib Axes, optional
             Axes to draw on; a new figure when omitted.
 

@@ -165,20 +165,21 @@ def continue_fold(
     Parameters
     ----------
     problem : HarmonicBalance or Shooting
-        The formulation that computed ``branch`` (dense Jacobians).
+        The formulation that computed ``branch``: a harmonic-balance or shooting problem (dense Jacobians;
+        collocation is refused).
     branch : Branch
-        The branch in the first parameter.
+        The branch in the first parameter: a Branch from :func:`continue_periodic`.
     fold : Bifurcation
-        A fold of ``branch``.
+        The fold to follow: a ``"fold"`` Bifurcation of ``branch``.
     parameter : Symbol or str
-        The second parameter.
+        The second parameter: a parameter of the model (Symbol or name) other than the branch's.
     span : (float, float)
-        Range of the second parameter; the curve starts at the problem's value of it and stops when it leaves the
-        range (or turns back out of it after a cusp).
+        Range of the second parameter: two numbers around the problem's value of it, where the curve starts; it
+        stops when the parameter leaves the range (or turns back out of it after a cusp).
     step, max_step : float, optional
-        First and largest arclength steps (defaults 1/200 and 1/50 of the span's length).
-    max_points : int
-        Largest number of points.
+        First and largest arclength steps: positive numbers (defaults 1/200 and 1/50 of the span's length).
+    max_points : int, optional
+        Largest number of points: an integer >= 2 (default 1000).
 
     Returns
     -------

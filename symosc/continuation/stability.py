@@ -71,21 +71,24 @@ def orbit_multipliers(
     Parameters
     ----------
     problem : HarmonicBalance, Shooting or Collocation
-        The formulation of the model (its compiled equations are used).
+        The formulation of the model: a problem from :func:`harmonic_balance`, :func:`shooting` or
+        :func:`collocation` (its compiled equations are used).
     solution : PeriodicSolution
-        The solution (from ``problem.solve`` or ``Branch.solution``).
-    method : {"monodromy", "hill"}
-        ``"monodromy"``: integrate the variational equations over one period (compiled Jacobian).  ``"hill"``:
-        eigenvalues of Hill's matrix (harmonic-balance solutions only).
-    along : {"integrated", "series"}
-        Monodromy only: along the orbit integrated from the solution's initial state together with the variational
-        equations (the exact orbit's multipliers), or along the solution's own Fourier series
-        (:func:`symosc.periodic.monodromy` of ``A(t)``: the same linear periodic system as Hill's method, so that
-        the two stability computations can be compared independently of the truncation of the orbit).
-    rtol : float
-        Relative tolerance of the integration (monodromy).
+        The solution: a PeriodicSolution of that model (from ``problem.solve`` or ``Branch.solution``).
+    method : {"monodromy", "hill"}, optional
+        How the multipliers are computed: "monodromy" (default) or "hill".  ``"monodromy"``: integrate the
+        variational equations over one period (compiled Jacobian).  ``"hill"``: eigenvalues of Hill's matrix
+        (harmonic-balance solutions only).
+    along : {"integrated", "series"}, optional
+        The orbit of the monodromy computation: "integrated" (default) or "series".  Along the orbit integrated
+        from the solution's initial state together with the variational equations (the exact orbit's
+        multipliers), or along the solution's own Fourier series (:func:`symosc.periodic.monodromy` of ``A(t)``:
+        the same linear periodic system as Hill's method, so that the two stability computations can be compared
+        independently of the truncation of the orbit).  Ignored by Hill's method.
+    rtol : float, optional
+        Relative tolerance of the integration (monodromy): a positive number (default 1e-12).
     harmonics : int, optional
-        Truncation of Hill's matrix (default: the solution's harmonics).
+        Truncation of Hill's matrix: an integer from 1 to 800 (default: the solution's harmonics).
 
     Returns
     -------
