@@ -186,9 +186,8 @@ class HarmonicBalance(Formulation, SymPyPrintable):
     # ------------------------------------------------------------------ residual and Jacobian
     def _pieces(self, c: np.ndarray, omega: float, p: np.ndarray, samples: int):
         n = self.model.n
-        tau, E, D, P = _fourier.basis(self.harmonics, samples)
-        B1 = E @ D
-        B2 = B1 @ D
+        tau, E, _, P = _fourier.basis(self.harmonics, samples)
+        B1, B2 = _fourier.derivative_bases(self.harmonics, samples)
         z, zd, zdd = E @ c.T, B1 @ c.T, B2 @ c.T
         out = np.asarray(self._raw(tau, *z.T, *zd.T, *zdd.T, omega, *p))
         N = samples
@@ -391,6 +390,11 @@ class HarmonicBalance(Formulation, SymPyPrintable):
                 f"0.1 to 20 ({last}); give a guess"
             )
         prob = self
+        given = getattr(guess, "coefficients", guess)
+        H = (given.shape[1] - 1) // 2 if isinstance(given, np.ndarray) and given.ndim == 2 else 0
+        if self.adaptive and H > self.harmonics:
+            # start at the guess's truncation: cutting its harmonics can leave Newton's method far from the solution
+            prob = self._with_harmonics(min(H, _MAX_HARMONICS))
         u0 = prob._initial(guess, frequency)
         while True:
             prob._begin_step(u0)
