@@ -235,11 +235,13 @@ def run(
             edge = hi if Xn[-1] > hi else lo
             frac = (edge - X[-1]) / (Xn[-1] - X[-1]) if Xn[-1] != X[-1] else 0.0
             try:
+                if tests:  # the whole step: a fold inside it may be what turns the branch out of the span
+                    found = len(out.bifurcations)
+                    tests.check(prob, X, t, Xn, tn, lsn, point_data(prob, Xn, p, k, opt), ds, state, out, p, k, opt)
+                    out.bifurcations[found:] = [b for b in out.bifurcations[found:] if lo <= b.parameter <= hi]
                 Xe, _ = correct_at_parameter(prob, X + frac * (Xn - X), p, k, edge, opt)
-                te, lse = tangent(prob, Xe, p, k, weights(prob, Xe) * t)
+                te, _ = tangent(prob, Xe, p, k, weights(prob, Xe) * t)
                 de = point_data(prob, Xe, p, k, opt)
-                if tests:
-                    tests.check(prob, X, t, Xe, te, lse, de, ds, state, out, p, k, opt)
                 _append(out, Xe, te, de, prob)
             except ConvergenceError:
                 pass
