@@ -130,12 +130,14 @@ class Collocation(Formulation, SymPyPrintable):
         adaptive: bool = True,
         period_multiple: int = 1,
     ) -> None:
-        self.values, self.period_multiple = checked_arguments(model, values, period_multiple)
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
+        self.values = values
         self.mesh = _checked_mesh(mesh)
         self.degree = check_int("degree", degree, minimum=1, maximum=10)
         self.tol = check_positive("tol", tol)
         self.adaptive = check_bool("adaptive", adaptive)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         self._w = None if model.autonomous else model.param_index(model.forcing_frequency)
         self._ref: np.ndarray | None = None

@@ -84,11 +84,13 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         tol: float,
         period_multiple: int = 1,
     ) -> None:
-        self.values, self.period_multiple = checked_arguments(model, values, period_multiple)
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
+        self.values = values
         self.harmonics = check_int("harmonics", harmonics, minimum=1, maximum=2 * _MAX_HARMONICS)
         self.adaptive = check_bool("adaptive", adaptive)
         self.tol = check_positive("tol", tol)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         fn, degree = model.hb_function(self.period_multiple)
         self._raw = fn.raw

@@ -65,11 +65,13 @@ class Shooting(Formulation, SymPyPrintable):
     def __init__(
         self, model: PeriodicModel, values: np.ndarray, rtol: float, integrator: str, period_multiple: int = 1
     ) -> None:
-        self.values, self.period_multiple = checked_arguments(model, values, period_multiple)
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
+        self.values = values
         self.rtol = check_positive("rtol", rtol)
         self.tol = self.rtol
         self.integrator = check_choice("integrator", integrator, INTEGRATORS)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         self._w = None if model.autonomous else model.param_index(model.forcing_frequency)
         self._ref: np.ndarray | None = None
