@@ -48,6 +48,18 @@ def basis(harmonics: int, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndar
     return tau, E, D, P
 
 
+@lru_cache(maxsize=64)
+def derivative_bases(harmonics: int, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """``E D`` and ``E D D`` (N, m): the first and second tau-derivatives of the basis at the samples (computed once:
+    a product of this size per call is slow when a multithreaded BLAS competes for busy cores)."""
+    _, E, D, _ = basis(harmonics, samples)
+    B1 = E @ D
+    B2 = B1 @ D
+    for a in (B1, B2):
+        a.setflags(write=False)
+    return B1, B2
+
+
 def evaluate(coefficients: np.ndarray, tau: np.ndarray) -> np.ndarray:
     """Values of the series with coefficient rows ``coefficients`` (n, 2H+1) at the phases ``tau``: (len(tau), n)."""
     c = np.atleast_2d(coefficients)

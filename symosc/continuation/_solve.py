@@ -18,7 +18,7 @@ def _sorted_multipliers(rho: np.ndarray) -> np.ndarray:
 def newton(prob: Formulation, u0: np.ndarray, p: np.ndarray, *, max_iterations: int = 50, tol: float = 1e-11):
     """Damped Newton's method for ``G(u, p) = 0`` at fixed p."""
     u = np.array(u0, dtype=float)
-    G, J, _ = prob.evaluate(u, p)
+    G, J, _ = prob._evaluate(u, p)
     norm = np.linalg.norm(G)
     for _ in range(max_iterations):
         try:
@@ -28,7 +28,7 @@ def newton(prob: Formulation, u0: np.ndarray, p: np.ndarray, *, max_iterations: 
         lam = 1.0
         while True:
             trial = u - lam * du
-            G2, J2, _ = prob.evaluate(trial, p)
+            G2, J2, _ = prob._evaluate(trial, p)
             n2 = np.linalg.norm(G2)
             if np.isfinite(n2) and (n2 < norm or n2 < 1e-13 * (1 + np.linalg.norm(trial)) or lam < 1e-3):
                 break

@@ -123,7 +123,7 @@ def evaluate_full(prob: Formulation, X: np.ndarray, p: np.ndarray, k: int):
     """G, G_u, G_lambda at ``X = (u, lambda)``."""
     q = p.copy()
     q[k] = X[-1]
-    G, J, Gp = prob.evaluate(X[:-1], q)
+    G, J, Gp = prob._evaluate(X[:-1], q)
     return G, J, Gp[:, k]
 
 
@@ -141,7 +141,7 @@ def tangent(
 
 def weights(prob: Formulation, X: np.ndarray) -> np.ndarray:
     """Weights of the arclength inner product (the formulation's for u, 1 for the parameter)."""
-    return np.append(prob.weights(X[:-1]), 1.0)
+    return np.append(prob._weights(X[:-1]), 1.0)
 
 
 def correct(
@@ -204,7 +204,7 @@ def run(
     lo, hi = bounds
     X = np.append(u0, lam0)
     out = Raw(formulation=prob)
-    prob.begin_step(X[:-1])
+    prob._begin_step(X[:-1])
     if t0 is None:
         row = np.zeros(len(X))
         row[-1] = direction
@@ -216,7 +216,7 @@ def run(
     state = tests.initial(prob, X, t, ls, data) if tests else None
     ds = opt.step
     while len(out.X) < opt.max_points:
-        prob.begin_step(X[:-1])
+        prob._begin_step(X[:-1])
         try:
             jac: list = []
             Wt = weights(prob, X) * t
@@ -235,23 +235,25 @@ def run(
             edge = hi if Xn[-1] > hi else lo
             frac = (edge - X[-1]) / (Xn[-1] - X[-1]) if Xn[-1] != X[-1] else 0.0
             try:
+                if tests:  # the whole step: a fold inside it may be what turns the branch out of the span
+                    found = len(out.bifurcations)
+                    tests.check(prob, X, t, Xn, tn, lsn, point_data(prob, Xn, p, k, opt), ds, state, out, p, k, opt)
+                    out.bifurcations[found:] = [b for b in out.bifurcations[found:] if lo <= b.parameter <= hi]
                 Xe, _ = correct_at_parameter(prob, X + frac * (Xn - X), p, k, edge, opt)
-                te, lse = tangent(prob, Xe, p, k, weights(prob, Xe) * t)
+                te, _ = tangent(prob, Xe, p, k, weights(prob, Xe) * t)
                 de = point_data(prob, Xe, p, k, opt)
-                if tests:
-                    tests.check(prob, X, t, Xe, te, lse, de, ds, state, out, p, k, opt)
                 _append(out, Xe, te, de, prob)
             except ConvergenceError:
                 pass
             out.stopped = f"reached {_name(prob, k)} = {edge:g}"
             return out
         dn = point_data(prob, Xn, p, k, opt)
-        refined = prob.adapt(Xn[:-1], _with(p, k, Xn[-1]), dn)
+        refined = prob._adapt(Xn[:-1], _with(p, k, Xn[-1]), dn)
         if refined is not None:  # more harmonics / mesh: move the last accepted point and redo the step
             new, transfer = refined
             X = np.append(transfer(X[:-1]), X[-1])
             prob = new
-            prob.begin_step(X[:-1])
+            prob._begin_step(X[:-1])
             t = np.append(transfer(t[:-1]), t[-1])
             Wt = weights(prob, X) * t
             X, _ = correct(prob, X, p, k, Wt, X, 0.0, opt)
@@ -283,7 +285,7 @@ def _name(prob: Formulation, k: int) -> str:
 
 
 def point_data(prob: Formulation, X: np.ndarray, p: np.ndarray, k: int, opt: Options) -> PointData:
-    return prob.point(X[:-1], _with(p, k, X[-1]), stability=opt.stability)
+    return prob._point(X[:-1], _with(p, k, X[-1]), stability=opt.stability)
 
 
 def _append(out: Raw, X: np.ndarray, t: np.ndarray, data: PointData, prob: Formulation) -> None:

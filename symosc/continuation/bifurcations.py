@@ -162,6 +162,7 @@ def locate(kind, prob, X0, t0, s1, f0, f1, p, k, opt, *, index: int) -> Bifurcat
         state=X.copy(),
         tangent=t.copy(),
         size=int(data.size),
+        initial_state=np.asarray(data.initial_state, dtype=float).copy(),
     )
 
 

@@ -101,8 +101,8 @@ class PeriodicSolution(SymPyPrintable):
 
         Parameters
         ----------
-        samples : int
-            Number of intervals of the uniform time grid.
+        samples : int, optional
+            Number of intervals of the uniform time grid: an integer >= 4 (default 256).
 
         Returns
         -------
@@ -123,7 +123,17 @@ class PeriodicSolution(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Phase portrait ``(q_1, q_1')`` of the solution (Fourier series), or its initial state."""
+        """Phase portrait ``(q_1, q_1')`` of the solution (Fourier series), or its initial state.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         ax = new_axes(ax)
         if self.coefficients is not None:
             _, y = self.orbit(512)
@@ -164,7 +174,14 @@ class Bifurcation(SymPyPrintable):
     index : int
         Index of the branch point just before the bifurcation.
     state : ndarray
-        The unknowns of the formulation at the bifurcation (for branch switching).
+        The formulation's unknowns and the parameter, ``(u, lambda)``, at the bifurcation (for branch switching).
+    tangent : ndarray
+        The unit tangent of the branch there, in the same layout as ``state`` (for branch switching).
+    size : int
+        Harmonics (harmonic balance), mesh intervals (collocation) or integration steps (shooting) at the point.
+    initial_state : ndarray
+        ``(q, q')`` at ``t = 0`` of the solution at the bifurcation (forced problems: the forcing phase of
+        ``t = 0``), for a simulation started there.
     """
 
     kind: str
@@ -178,6 +195,7 @@ class Bifurcation(SymPyPrintable):
     state: np.ndarray = field(default=None, repr=False, compare=False)
     tangent: np.ndarray = field(default=None, repr=False, compare=False)
     size: int = 0
+    initial_state: np.ndarray = field(default=None, repr=False, compare=False)
 
     def __repr__(self) -> str:
         return (
@@ -218,6 +236,7 @@ class Branch(SymPyPrintable):
     values : dict
         The fixed parameter values.
     coordinates : tuple of str
+        The coordinate names.
     states : tuple of ndarray
         The formulation's unknowns at each point (Fourier coefficients and frequency, initial state, ...).
     initial_states : ndarray, shape (points, 2n)
@@ -226,6 +245,8 @@ class Branch(SymPyPrintable):
         Why the continuation ended.
     tolerance : float
         Requested residual.
+    autonomous : bool
+        Whether the oscillations are self-excited (then one multiplier is the trivial 1, left out of the stability).
     """
 
     method: str
@@ -265,7 +286,7 @@ class Branch(SymPyPrintable):
         Parameters
         ----------
         kind : {"fold", "period_doubling", "neimark_sacker", "branch_point"}
-            The kind.
+            The kind of bifurcation: one of these names.
         """
         check_choice("kind", kind, KINDS)
         return [b for b in self.bifurcations if b.kind == kind]
@@ -276,7 +297,8 @@ class Branch(SymPyPrintable):
         Parameters
         ----------
         index : int
-            Point index (negative counts from the end).
+            Index of the point: an integer from ``-len(branch)`` to ``len(branch) - 1`` (negative counts from the
+            end).
         """
         k = check_int("index", index, minimum=-len(self), maximum=len(self) - 1)
         vals = dict(self.values)
@@ -308,10 +330,10 @@ class Branch(SymPyPrintable):
 
         Parameters
         ----------
-        y : {"amplitude", "frequency", "period"}
-            What to draw against the parameter.
+        y : {"amplitude", "frequency", "period"}, optional
+            What to draw against the parameter: one of these names (default "amplitude").
         ax : matplotlib Axes, optional
-            Draw here (default: a new figure).
+            Axes to draw on; a new figure when omitted.
 
         Returns
         -------

@@ -22,10 +22,10 @@ import numpy as np
 import sympy as sp
 
 from .._printing import SymPyPrintable
-from .._validate import check_bool, check_int, check_positive, validated
+from .._validate import check_bool, check_finite_array, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from ._model import PeriodicModel, build_model
-from ._problem import Formulation, PointData
+from ._problem import Formulation, PointData, checked_arguments
 
 __all__ = ["Collocation", "collocation"]
 
@@ -51,6 +51,17 @@ def gauss_tableau(m: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return c, a, b
 
 
+def _checked_mesh(mesh: Any) -> np.ndarray:
+    """The mesh as a float array after checking it increases strictly from 0 to 1 (1 to 4000 intervals)."""
+    mesh = check_finite_array("mesh", mesh, ndim=1)
+    if not 2 <= len(mesh) <= _MAX_INTERVALS + 1 or mesh[0] != 0.0 or mesh[-1] != 1.0 or np.any(np.diff(mesh) <= 0):
+        raise ParameterError(
+            f"mesh must increase strictly from 0 to 1 with 1 to {_MAX_INTERVALS} intervals, got {len(mesh)} points "
+            f"from {mesh[0] if len(mesh) else 'nothing'} to {mesh[-1] if len(mesh) else 'nothing'}"
+        )
+    return mesh
+
+
 def _lagrange(c: np.ndarray, theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``ell_l(theta)`` and ``int_0^theta ell_l`` for the nodes c: arrays (len(theta), m)."""
     m = len(c)
@@ -69,14 +80,42 @@ def _lagrange(c: np.ndarray, theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]
 class Collocation(Formulation, SymPyPrintable):
     """A collocation problem for periodic solutions; build it with :func:`collocation`.
 
+    Solve one point with :meth:`solve`, change parameter values with :meth:`with_values`, or follow a branch with
+    :func:`~symosc.continuation.continue_periodic`.
+
+    Parameters
+    ----------
+    model : PeriodicModel
+        The equations ``M(q, t) q'' = F(q, q', t)`` with their parameters, exactly as :func:`collocation` builds
+        them from the user's model (not constructed by hand).
+    values : ndarray of float, shape (number of parameters,)
+        Values of the model's parameters in the order of :attr:`parameters`: finite numbers, nan for a value not
+        given yet (the continuation parameter).
+    mesh : ndarray of float
+        Mesh points ``0 = s_0 < ... < s_N = 1`` of the normalized period: strictly increasing from 0 to 1, with 1 to
+        4000 intervals.
+    degree : int
+        Collocation (Gauss) points per interval, the polynomial degree m: an integer from 1 to 10.
+    tol : float
+        Requested relative defect ``max |y' - T f(y)| / max |T f|`` between the collocation points: a positive
+        number.
+    adaptive : bool, optional
+        Whether the mesh is refined and redistributed while the defect exceeds ``tol``: True (default) or False.
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (1 for an autonomous problem; default 1).
+
     Attributes
     ----------
-    mesh : ndarray
-        Mesh points ``0 = s_0 < ... < s_N = 1`` of the normalized period.
-    degree : int
-        Collocation points per interval (polynomial degree m).
-    tol : float
-        Requested relative defect; the mesh is refined above it.
+    parameters : tuple of Symbol
+        Every parameter of the model (the forcing frequency included), in the order of ``values``.
+    equations : str
+        The equations of motion as text.
+    autonomous : bool
+        Whether the oscillations are self-excited (the period is an unknown).
+    N : int
+        Number of mesh intervals.
+
+    The arguments are kept as attributes of the same names.
     """
 
     method = "collocation"
@@ -91,13 +130,14 @@ class Collocation(Formulation, SymPyPrintable):
         adaptive: bool = True,
         period_multiple: int = 1,
     ) -> None:
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
-        self.values = np.asarray(values, dtype=float)
-        self.mesh = np.asarray(mesh, dtype=float)
-        self.degree = int(degree)
-        self.tol = float(tol)
-        self.adaptive = bool(adaptive)
-        self.period_multiple = int(period_multiple)
+        self.values = values
+        self.mesh = _checked_mesh(mesh)
+        self.degree = check_int("degree", degree, minimum=1, maximum=10)
+        self.tol = check_positive("tol", tol)
+        self.adaptive = check_bool("adaptive", adaptive)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         self._w = None if model.autonomous else model.param_index(model.forcing_frequency)
         self._ref: np.ndarray | None = None
@@ -108,32 +148,22 @@ class Collocation(Formulation, SymPyPrintable):
         kind = "autonomous" if self.autonomous else f"forced by {self.model.forcing_frequency}"
         return f"Collocation({self.model.describe}; {kind}; {self.N} intervals x {self.degree} Gauss points)"
 
-    @property
-    def parameters(self) -> tuple[sp.Symbol, ...]:
-        return self.model.params
-
-    def with_values(self, values: Mapping[Any, Any]) -> Collocation:
-        p = self.values.copy()
-        for k, v in values.items():
-            p[self.model.param_index(k)] = float(v)
+    # ------------------------------------------------------------------ the driver's protocol (private)
+    def _with_vector(self, p: np.ndarray) -> Collocation:
         return Collocation(self.model, p, self.mesh, self.degree, self.tol, self.adaptive, self.period_multiple)
 
-    @property
-    def size(self) -> int:
-        return self.N * self.d * (1 + self.degree) + (1 if self.autonomous else 0)
-
-    def weights(self, u: np.ndarray) -> np.ndarray:
+    def _weights(self, u: np.ndarray) -> np.ndarray:
         """Arclength weights: the mesh and stage values count as samples of a function (mean square)."""
         w = np.full(len(u), 1.0 / (self.N * (1 + self.degree)))
         if self.autonomous:
             w[-1] = 1.0
         return w
 
-    def period_of(self, u: np.ndarray, p: np.ndarray) -> float:
+    def _period_of(self, u: np.ndarray, p: np.ndarray) -> float:
         return float(u[-1]) if self.autonomous else 2 * np.pi * self.period_multiple / float(p[self._w])
 
-    def frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
-        return 2 * np.pi / self.period_of(u, p)
+    def _frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
+        return 2 * np.pi / self._period_of(u, p)
 
     def _split(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         N, m, d = self.N, self.degree, self.d
@@ -146,12 +176,12 @@ class Collocation(Formulation, SymPyPrintable):
         Y, K = self._split(u)
         h = np.diff(self.mesh)
         Z = Y[:, None, :] + h[:, None, None] * np.einsum("jl,ild->ijd", a, K)
-        T = self.period_of(u, p)
+        T = self._period_of(u, p)
         s = self.mesh[:-1, None] + c[None, :] * h[:, None]
         return Y, K, Z, T, s * T, h
 
     # ------------------------------------------------------------------ residual and Jacobian
-    def evaluate(self, u: np.ndarray, p: np.ndarray):
+    def _evaluate(self, u: np.ndarray, p: np.ndarray):
         import scipy.sparse as sps
 
         N, m, d = self.N, self.degree, self.d
@@ -228,11 +258,11 @@ class Collocation(Formulation, SymPyPrintable):
         vals = np.concatenate([ones, -ones, kvals.ravel()])
         return np.concatenate([row_sy, row_sk, rc]), np.concatenate([col_sy, col_sk, cc]), vals
 
-    def begin_step(self, u: np.ndarray) -> None:
+    def _begin_step(self, u: np.ndarray) -> None:
         self._ref = np.array(u, dtype=float)
 
     # ------------------------------------------------------------------ the polynomial
-    def values_at(self, u: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _values_at(self, u: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``y(s)`` and ``dy/ds`` of the collocation polynomial at normalized times s in [0, 1)."""
         c, _, _ = gauss_tableau(self.degree)
         Y, K = self._split(u)
@@ -245,19 +275,19 @@ class Collocation(Formulation, SymPyPrintable):
         dy = np.einsum("kl,kld->kd", L, K[i])
         return y, dy
 
-    def defect(self, u: np.ndarray, p: np.ndarray) -> float:
+    def _defect(self, u: np.ndarray, p: np.ndarray) -> float:
         """Relative defect ``max |y' - T f(y)| / max |T f|`` between the collocation points."""
         c, _, _ = gauss_tableau(self.degree)
         theta = np.concatenate([[0.0], (c[:-1] + c[1:]) / 2, [1.0 - 1e-12]])
         h = np.diff(self.mesh)
         s = (self.mesh[:-1, None] + theta[None, :] * h[:, None]).ravel()
-        y, dy = self.values_at(u, s)
-        T = self.period_of(u, p)
+        y, dy = self._values_at(u, s)
+        T = self._period_of(u, p)
         fv = self.model.first_order(p).all(s * T, y)[0]
         scale = max(np.abs(T * fv).max(), 1e-300)
         return float(np.abs(dy - T * fv).max() / scale)
 
-    def monodromy(self, u: np.ndarray, p: np.ndarray) -> np.ndarray:
+    def _monodromy(self, u: np.ndarray, p: np.ndarray) -> np.ndarray:
         """Product of the intervals' transfer matrices of the linearized collocation equations."""
         N, m, d = self.N, self.degree, self.d
         _, a, b = gauss_tableau(m)
@@ -273,30 +303,30 @@ class Collocation(Formulation, SymPyPrintable):
             M = S[i] @ M
         return M
 
-    def point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
+    def _point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
         n = self.model.n
         h = np.diff(self.mesh)
         theta = np.linspace(0.0, 1.0, 9)[:-1]
         s = (self.mesh[:-1, None] + theta[None, :] * h[:, None]).ravel()
-        y, _ = self.values_at(u, s)
+        y, _ = self._values_at(u, s)
         amps = np.empty(n)
         for i in range(n):
             j = int(np.argmax(np.abs(y[:, i])))
             fine = s[j] + np.linspace(-1, 1, 129) * (h.max() / 4)
-            yf = np.abs(self.values_at(u, fine)[0][:, i])
+            yf = np.abs(self._values_at(u, fine)[0][:, i])
             k = int(np.clip(np.argmax(yf), 1, len(fine) - 2))
             a_, b_, c_ = yf[k - 1], yf[k], yf[k + 1]
             den = a_ - 2 * b_ + c_
             amps[i] = max(b_ - (a_ - c_) ** 2 / (8 * den) if den < 0 else b_, np.abs(y[:, i]).max())
         rho = np.array([])
         if stability:
-            rho = np.linalg.eigvals(self.monodromy(u, p))
+            rho = np.linalg.eigvals(self._monodromy(u, p))
             rho = rho[np.lexsort((-rho.imag, -np.abs(rho)))]
         Y, _ = self._split(u)
-        return PointData(amps, self.frequency_of(u, p), self.defect(u, p), rho, None, Y[0].copy(), self.N)
+        return PointData(amps, self._frequency_of(u, p), self._defect(u, p), rho, None, Y[0].copy(), self.N)
 
     # ------------------------------------------------------------------ mesh refinement
-    def refined_mesh(self, u: np.ndarray, intervals: int) -> np.ndarray:
+    def _refined_mesh(self, u: np.ndarray, intervals: int) -> np.ndarray:
         """``intervals`` mesh intervals equidistributing ``|y^(m)|^(1/m)`` of the current solution."""
         m = self.degree
         c, _, _ = gauss_tableau(m)
@@ -315,7 +345,7 @@ class Collocation(Formulation, SymPyPrintable):
         new[0], new[-1] = 0.0, 1.0
         return new
 
-    def remeshed(self, u: np.ndarray, mesh: np.ndarray) -> tuple[Collocation, Any]:
+    def _remeshed(self, u: np.ndarray, mesh: np.ndarray) -> tuple[Collocation, Any]:
         new = Collocation(self.model, self.values, mesh, self.degree, self.tol, self.adaptive, self.period_multiple)
         c, _, _ = gauss_tableau(self.degree)
         hn = np.diff(mesh)
@@ -323,14 +353,14 @@ class Collocation(Formulation, SymPyPrintable):
         s_stage = (mesh[:-1, None] + c[None, :] * hn[:, None]).ravel()
 
         def transfer(v: np.ndarray) -> np.ndarray:
-            Yn, _ = self.values_at(v, s_mesh)
-            _, Kn = self.values_at(v, s_stage)
+            Yn, _ = self._values_at(v, s_mesh)
+            _, Kn = self._values_at(v, s_stage)
             out = np.concatenate([Yn.ravel(), Kn.ravel()])
             return np.append(out, v[-1]) if self.autonomous else out
 
         return new, transfer
 
-    def adapt(self, u: np.ndarray, p: np.ndarray, data: PointData):
+    def _adapt(self, u: np.ndarray, p: np.ndarray, data: PointData):
         if not self.adaptive or data.residual <= self.tol:
             return None
         if self.N >= _MAX_INTERVALS:
@@ -338,7 +368,7 @@ class Collocation(Formulation, SymPyPrintable):
                 f"collocation: defect {data.residual:.2e} > tol={self.tol:g} with {self.N} intervals",
                 achieved=data.residual,
             )
-        return self.remeshed(u, self.refined_mesh(u, min(_MAX_INTERVALS, int(np.ceil(1.5 * self.N)))))
+        return self._remeshed(u, self._refined_mesh(u, min(_MAX_INTERVALS, int(np.ceil(1.5 * self.N)))))
 
     # ------------------------------------------------------------------ one point
     def _initial(self, guess: Any, frequency: float | None) -> np.ndarray:
@@ -356,39 +386,47 @@ class Collocation(Formulation, SymPyPrintable):
         return np.append(u, T) if self.autonomous else u
 
     def solve(self, guess: Any, *, values: Mapping[Any, Any] | None = None, max_iterations: int = 30):
-        """Newton's method from a :class:`PeriodicSolution` (refining the mesh while the defect exceeds tol).
+        """Solve for one periodic solution by Newton's method, refining the mesh while the defect exceeds ``tol``.
 
         Parameters
         ----------
         guess : PeriodicSolution
-            Starting orbit (harmonic balance or shooting).
-        values : mapping, optional
-            Parameter values that replace the problem's.
-        max_iterations : int
-            Newton iterations per mesh.
+            Starting orbit: a solution of harmonic balance or shooting (or collocation), at or near the values.
+        values : mapping of Symbol or str to float, optional
+            Parameter values that replace the problem's for this solve: finite numbers keyed by parameter Symbol or
+            name (see :meth:`with_values`).
+        max_iterations : int, optional
+            Newton iterations per mesh: an integer >= 1 (default 30).
 
         Returns
         -------
         PeriodicSolution
+
+        Raises
+        ------
+        ParameterError
+            ``guess`` is not a PeriodicSolution.
+        ConvergenceError
+            Newton's method does not converge, or the defect stays above ``tol`` with 4000 intervals.
         """
         from ._solve import solution_from
 
         check_int("max_iterations", max_iterations, minimum=1)
-        prob = self.with_values(values) if values else self
-        u, prob = prob.converge(guess, max_iterations=max_iterations)
-        return solution_from(prob, u, prob.values, prob.point(u, prob.values))
+        prob = self.with_values(values) if values is not None else self
+        u, prob = prob._converge(guess, max_iterations=max_iterations)
+        return solution_from(prob, u, prob.values, prob._point(u, prob.values))
 
-    def converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
+    def _converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
         """Converged unknowns at the problem's values and the (possibly refined) problem."""
         from ._solve import newton
 
         prob = self
         u = prob._initial(guess, frequency)
         while True:
-            prob.begin_step(u)
+            prob._begin_step(u)
             u = newton(prob, u, prob.values, max_iterations=max_iterations, tol=1e-11)
-            data = prob.point(u, prob.values, stability=False)
-            refined = prob.adapt(u, prob.values, data)
+            data = prob._point(u, prob.values, stability=False)
+            refined = prob._adapt(u, prob.values, data)
             if refined is None:
                 return u, prob
             prob, transfer = refined
@@ -409,7 +447,7 @@ def _sample_solution(prob: Any, sol: Any, tt: np.ndarray) -> tuple[np.ndarray, n
         return np.hstack([q, q1]), np.hstack([q1, q2])
     from scipy.integrate import solve_ivp
 
-    p = prob.with_values(sol.values).values
+    p = prob._with_values(sol.values).values
     f = prob.model.first_order(p)
     res = solve_ivp(
         f.rhs, (0.0, sol.period), sol.initial_state, method="DOP853", rtol=1e-11, atol=1e-13, dense_output=True
@@ -442,27 +480,30 @@ def collocation(
     acceleration : Expr, sequence of Expr, LagrangianSystem or FirstOrderSystem
         The equations, as for :func:`harmonic_balance` (a Lagrangian system needs at most 3 coordinates here).
     x, v : Symbol or sequence of Symbol
-        Coordinates and velocities used in ``acceleration``.
+        Coordinates and velocities used in ``acceleration``: SymPy Symbols, one of each per coordinate (not needed
+        for a system).
     t : Symbol, optional
-        Time (default :data:`symosc.t`).
+        The time symbol: a SymPy Symbol (default :data:`symosc.t`).
     forcing_frequency : Symbol, optional
-        Forcing frequency symbol of a forced problem.
-    autonomous : bool
-        Self-excited oscillations (the period is an unknown).
-    values : mapping, optional
-        Parameter values.
-    intervals : int
-        Mesh intervals N of the initial (uniform) mesh.
-    degree : int
-        Gauss points per interval m (error ``O(h^(2m))`` at the mesh points).
-    tol : float
+        The angular-frequency symbol of the forcing (``w`` in ``F*cos(w*t)``): a Symbol of the equations; required
+        unless ``autonomous``.
+    autonomous : bool, optional
+        Whether the oscillations are self-excited (the period is an unknown): True or False (default False).
+    values : mapping of Symbol or str to float, optional
+        Values of the model's parameters: finite numbers keyed by Symbol or name; the continuation parameter may be
+        left out.
+    intervals : int, optional
+        Mesh intervals N of the initial (uniform) mesh: an integer from 4 to 4000 (default 40).
+    degree : int, optional
+        Gauss points per interval, m: an integer from 1 to 10 (default 4; error ``O(h^(2m))`` at the mesh points).
+    tol : float, optional
         Requested relative defect ``max |y' - T f(y)| / max |T f|`` of the collocation polynomial between the
-        collocation points (an ``O(h^m)`` quantity; the mesh values and the period are accurate to about
-        ``O(h^(2m))``, far below it).
-    adaptive : bool
-        Refine and redistribute the mesh when the defect exceeds ``tol``.
-    period_multiple : int
-        Period of the response in forcing periods.
+        collocation points: a positive number (default 1e-6; an ``O(h^m)`` quantity, while the mesh values and the
+        period are accurate to about ``O(h^(2m))``, far below it).
+    adaptive : bool, optional
+        Whether the mesh is refined and redistributed when the defect exceeds ``tol``: True (default) or False.
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (1 for an autonomous problem; default 1).
 
     Returns
     -------

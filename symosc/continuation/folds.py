@@ -46,9 +46,9 @@ class _FoldSystem(Formulation):
         q[self.k] = U[-1]
         return q
 
-    def evaluate(self, U: np.ndarray, p: np.ndarray):
+    def _evaluate(self, U: np.ndarray, p: np.ndarray):
         u, q = U[:-1], self._q(U, p)
-        G, J, Gp = self.base.evaluate(u, q)
+        G, J, Gp = self.base._evaluate(u, q)
         n = len(u)
         A = np.zeros((n + 1, n + 1))
         A[:n, :n] = J
@@ -60,8 +60,8 @@ class _FoldSystem(Formulation):
         wg = np.linalg.solve(A.T, rhs)
         v, g, w = vg[:n], vg[n], wg[:n]
         h = 1e-6 * (1 + np.linalg.norm(u)) / max(np.linalg.norm(v), 1e-300)
-        _, Jp, Gpp = self.base.evaluate(u + h * v, q)
-        _, Jm, Gpm = self.base.evaluate(u - h * v, q)
+        _, Jp, Gpp = self.base._evaluate(u + h * v, q)
+        _, Jm, Gpm = self.base._evaluate(u - h * v, q)
         gu = -(w @ (Jp - Jm)) / (2 * h)
         gp = -(w @ (Gpp - Gpm)) / (2 * h)
         Phi = np.append(G, g)
@@ -72,14 +72,14 @@ class _FoldSystem(Formulation):
         JU[n, n] = gp[self.k]
         return Phi, JU, np.vstack([Gp, gp])
 
-    def weights(self, U: np.ndarray) -> np.ndarray:
-        return np.append(self.base.weights(U[:-1]), 1.0)
+    def _weights(self, U: np.ndarray) -> np.ndarray:
+        return np.append(self.base._weights(U[:-1]), 1.0)
 
-    def begin_step(self, U: np.ndarray) -> None:
-        self.base.begin_step(U[:-1])
+    def _begin_step(self, U: np.ndarray) -> None:
+        self.base._begin_step(U[:-1])
 
-    def point(self, U: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
-        d = self.base.point(U[:-1], self._q(U, p), stability=False)
+    def _point(self, U: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
+        d = self.base._point(U[:-1], self._q(U, p), stability=False)
         d.coefficients = np.array([U[-1]])  # the fold's first parameter, carried to the result
         return d
 
@@ -126,7 +126,17 @@ class FoldCurve(SymPyPrintable):
 
     @plot_method
     def plot(self, *, ax: Any = None) -> Any:
-        """Draw the fold curve in the (first parameter, second parameter) plane, cusps marked."""
+        """Draw the fold curve in the (first parameter, second parameter) plane, cusps marked.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; a new figure when omitted.
+
+        Returns
+        -------
+        matplotlib Axes
+        """
         ax = new_axes(ax)
         ax.plot(self.fold_parameter, self.parameter, "-")
         for a, b in self.cusps:
@@ -155,20 +165,21 @@ def continue_fold(
     Parameters
     ----------
     problem : HarmonicBalance or Shooting
-        The formulation that computed ``branch`` (dense Jacobians).
+        The formulation that computed ``branch``: a harmonic-balance or shooting problem (dense Jacobians;
+        collocation is refused).
     branch : Branch
-        The branch in the first parameter.
+        The branch in the first parameter: a Branch from :func:`continue_periodic`.
     fold : Bifurcation
-        A fold of ``branch``.
+        The fold to follow: a ``"fold"`` Bifurcation of ``branch``.
     parameter : Symbol or str
-        The second parameter.
+        The second parameter: a parameter of the model (Symbol or name) other than the branch's.
     span : (float, float)
-        Range of the second parameter; the curve starts at the problem's value of it and stops when it leaves the
-        range (or turns back out of it after a cusp).
+        Range of the second parameter: two numbers around the problem's value of it, where the curve starts; it
+        stops when the parameter leaves the range (or turns back out of it after a cusp).
     step, max_step : float, optional
-        First and largest arclength steps (defaults 1/200 and 1/50 of the span's length).
-    max_points : int
-        Largest number of points.
+        First and largest arclength steps: positive numbers (defaults 1/200 and 1/50 of the span's length).
+    max_points : int, optional
+        Largest number of points: an integer >= 2 (default 1000).
 
     Returns
     -------
@@ -207,12 +218,12 @@ def continue_fold(
     mu0 = float(p[k2])
     if not lo <= mu0 <= hi:
         raise ParameterError(f"span must contain the current value {parameter}={mu0:g}")
-    base = problem.at_size(fold.size)
+    base = problem._at_size(fold.size)
     u, lam = fold.state[:-1], fold.state[-1]
     q = p.copy()
     q[k] = lam
-    base.begin_step(u)
-    _, J, _ = base.evaluate(u, q)
+    base._begin_step(u)
+    _, J, _ = base._evaluate(u, q)
     U_, _, Vh = np.linalg.svd(J)
     system = _FoldSystem(base, k, U_[:, -1], Vh[-1])
     length = hi - lo

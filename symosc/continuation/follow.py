@@ -61,30 +61,33 @@ def continue_periodic(
     Parameters
     ----------
     problem : HarmonicBalance, Shooting or Collocation
-        The formulation (from :func:`harmonic_balance`, :func:`shooting` or :func:`collocation`) with the values of
-        the other parameters.
+        The problem to continue: a formulation from :func:`harmonic_balance`, :func:`shooting` or
+        :func:`collocation`, holding the values of the other parameters.
     parameter : Symbol or str
-        The continuation parameter: any parameter of the model (the forcing frequency, an amplitude, ``eps``, ...).
+        The continuation parameter: a parameter of the model, as Symbol or name (the forcing frequency, an
+        amplitude, ``eps``, ...).
     span : (float, float)
-        Start and end values of the parameter (the end may be smaller than the start).
-    start : PeriodicSolution, LimitCycleSeries, array or None
+        Start and end values of the parameter: two different finite numbers (the end may be smaller than the
+        start).
+    start : PeriodicSolution, LimitCycleSeries, array or None, optional
         Starting solution or guess at ``span[0]``: a solution of any formulation (a shooting solution started from
         a simulated state, for instance), a Poincaré series from :func:`symosc.nonlinear.limit_cycle` (harmonic
-        balance of an autonomous problem), Fourier coefficients (harmonic balance) or an initial state (shooting).
+        balance of an autonomous problem), Fourier coefficients (harmonic balance), an initial state (shooting), or
+        None (default) for the problem's own guess.
     step : float, optional
-        First arclength step (default: 1/200 of the span's length).
+        First arclength step: a positive number (default 1/200 of the span's length).
     max_step : float, optional
-        Largest arclength step (default: 1/50 of the span's length).
+        Largest arclength step: a positive number (default 1/50 of the span's length).
     min_step : float, optional
-        Smallest step before the continuation stops (default: 1e-7 of the span's length).
-    max_points : int
-        Largest number of points.
-    stability : bool
-        Compute the Floquet multipliers of every point (needed for the stability and for period-doubling and
-        Neimark–Sacker detection).
-    detect : bool or sequence of str
-        Which bifurcations to detect and locate (True: all of "fold", "period_doubling", "neimark_sacker",
-        "branch_point"; False: none).
+        Smallest step before the continuation stops: a positive number (default 1e-7 of the span's length).
+    max_points : int, optional
+        Largest number of points: an integer >= 2 (default 2000).
+    stability : bool, optional
+        Whether to compute the Floquet multipliers of every point: True (default) or False (they give the
+        stability and the period-doubling and Neimark–Sacker detection).
+    detect : bool or sequence of str, optional
+        Which bifurcations to detect and locate: True (default: all of "fold", "period_doubling",
+        "neimark_sacker", "branch_point"), False (none) or a sequence of those names.
 
     Returns
     -------
@@ -126,7 +129,7 @@ def continue_periodic(
     stability = check_bool("stability", stability)
     kinds = _kinds(detect, stability)
     opt = _arc.Options(min(step, max_step), min_step, max_step, max_points, stability=stability)
-    prob = problem.with_values({problem.model.params[k]: lo})
+    prob = problem._with_values({problem.model.params[k]: lo})
     p = prob.values.copy()
     u0, prob = _start(prob, start, p)
     raw = _arc.run(
@@ -157,7 +160,7 @@ def _kinds(detect: Any, stability: bool) -> tuple[str, ...]:
 
 def _start(prob: Any, start: Any, p: np.ndarray) -> tuple[np.ndarray, Any]:
     """Converged unknowns at the start point (growing the truncation when adaptive)."""
-    return prob.converge(start)
+    return prob._converge(start)
 
 
 def _branch(raw: _arc.Raw, problem: Any, k: int, p: np.ndarray, name: str | None = None) -> Branch:
@@ -215,26 +218,28 @@ def switch_branch(
     Parameters
     ----------
     problem : HarmonicBalance or Shooting
-        The formulation that computed ``branch``.
+        The formulation that computed ``branch``: a harmonic-balance or shooting problem (switching needs a dense
+        Jacobian, so collocation is refused).
     branch : Branch
-        The branch with the bifurcation.
+        The branch with the bifurcation: a Branch from :func:`continue_periodic` (or from this function).
     bifurcation : Bifurcation
-        A ``"branch_point"`` or ``"period_doubling"`` of ``branch``.
+        Where to switch: a ``"branch_point"`` or ``"period_doubling"`` Bifurcation of ``branch``.
     span : (float, float), optional
-        Range of the parameter for the new branch (default: the old branch's range); the new branch stops when the
-        parameter leaves it.
-    direction : {1, -1}
-        Which half of the new branch to follow (sign of the step along the kernel direction).
+        Range of the parameter for the new branch: two different finite numbers (default: the old branch's range);
+        the new branch stops when the parameter leaves it.
+    direction : {1, -1}, optional
+        Which half of the new branch to follow: 1 (default) or -1, the sign of the step along the kernel direction.
     step : float, optional
-        First step (default 1/200 of the span's length).
+        First arclength step: a positive number (default 1/200 of the span's length).
     max_step : float, optional
-        Largest step (default 1/50 of the span's length).
-    max_points : int
-        Largest number of points.
-    stability : bool
-        Compute Floquet multipliers along the new branch.
-    detect : bool or sequence of str
-        Bifurcations to detect on the new branch.
+        Largest arclength step: a positive number (default 1/50 of the span's length).
+    max_points : int, optional
+        Largest number of points: an integer >= 2 (default 2000).
+    stability : bool, optional
+        Whether to compute the Floquet multipliers along the new branch: True (default) or False.
+    detect : bool or sequence of str, optional
+        Which bifurcations to detect on the new branch: True (default: all), False (none) or a sequence of "fold",
+        "period_doubling", "neimark_sacker", "branch_point".
 
     Returns
     -------
@@ -272,14 +277,14 @@ def switch_branch(
     p = problem.values.copy()
     for name, val in branch.values.items():
         p[problem.model.param_index(name)] = val
-    prob = problem.at_size(bifurcation.size)
+    prob = problem._at_size(bifurcation.size)
     X = bifurcation.state.copy()
     t_old = bifurcation.tangent.copy()
     if bifurcation.kind == "period_doubling":
-        prob, embed = prob.doubled()
+        prob, embed = prob._doubled()
         X = np.append(embed(X[:-1]), X[-1])
         t_old = np.append(embed(t_old[:-1], tangent=True), t_old[-1])
-    prob.begin_step(X[:-1])
+    prob._begin_step(X[:-1])
     w = kernel_direction(prob, X, p, k, t_old) * direction
     length = abs(hi - lo)
     step = length / 200 if step is None else check_positive("step", step)

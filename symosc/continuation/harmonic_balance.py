@@ -23,7 +23,7 @@ from .._validate import check_bool, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from . import _fourier
 from ._model import PeriodicModel, build_model
-from ._problem import Formulation, PointData
+from ._problem import Formulation, PointData, checked_arguments
 from ._solve import _sorted_multipliers, newton, solution_from
 
 __all__ = ["HarmonicBalance", "harmonic_balance"]
@@ -35,23 +35,42 @@ _MAX_HARMONICS = 400
 class HarmonicBalance(Formulation, SymPyPrintable):
     """A harmonic-balance problem: the model, fixed parameter values and the truncation.
 
-    Build it with :func:`harmonic_balance`; solve one point with :meth:`solve`, or follow a branch with
-    :func:`~symosc.continuation.continue_periodic`.
+    Build it with :func:`harmonic_balance`; solve one point with :meth:`solve`, change parameter values with
+    :meth:`with_values`, or follow a branch with :func:`~symosc.continuation.continue_periodic`.
+
+    Parameters
+    ----------
+    model : PeriodicModel
+        The equations ``M(q, t) q'' = F(q, q', t)`` with their parameters, exactly as :func:`harmonic_balance`
+        builds them from the user's model (not constructed by hand).
+    values : ndarray of float, shape (number of parameters,)
+        Values of the model's parameters in the order of :attr:`parameters`: finite numbers, nan for a value not
+        given yet (the continuation parameter).
+    harmonics : int
+        Number of harmonics H of the truncation: an integer from 1 to 800 (:func:`harmonic_balance` allows up to
+        400; a period doubling doubles them).
+    adaptive : bool
+        Whether H grows (by half, up to 400) until the relative residual meets ``tol``: True or False.
+    tol : float
+        Requested relative residual ``max |M q'' - F| / max(|M q''|, |F|)`` of the truncated series in the equations
+        of motion: a positive number.
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (1 for an autonomous problem; default 1).
 
     Attributes
     ----------
-    model : object
-        The equations ``M(q, t) q'' = F(q, q', t)`` (read :attr:`equations`).
     parameters : tuple of Symbol
-        Every parameter of the model (the forcing frequency included).
-    harmonics : int
-        Number of harmonics H of the truncation (the adaptive choice starts here when :attr:`adaptive`).
-    adaptive : bool
-        Whether H grows until the residual meets :attr:`tol`.
-    tol : float
-        Requested relative residual ``max |r(t)| / max |M q''|`` of the truncated series in the equations.
-    period_multiple : int
-        m: the response has period ``m`` times the forcing period.
+        Every parameter of the model (the forcing frequency included), in the order of ``values``.
+    equations : str
+        The equations of motion as text.
+    autonomous : bool
+        Whether the oscillations are self-excited (the frequency is an unknown).
+    samples : int
+        Time samples per period of the alternating frequency-time evaluation.
+    exact : bool
+        Whether that evaluation is alias-free (a polynomial nonlinearity: the exact Fourier convolution).
+
+    The arguments are kept as attributes of the same names.
     """
 
     method = "harmonic balance"
@@ -65,12 +84,13 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         tol: float,
         period_multiple: int = 1,
     ) -> None:
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
-        self.values = np.asarray(values, dtype=float)
-        self.harmonics = int(harmonics)
-        self.adaptive = bool(adaptive)
-        self.tol = float(tol)
-        self.period_multiple = int(period_multiple)
+        self.values = values
+        self.harmonics = check_int("harmonics", harmonics, minimum=1, maximum=2 * _MAX_HARMONICS)
+        self.adaptive = check_bool("adaptive", adaptive)
+        self.tol = check_positive("tol", tol)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         fn, degree = model.hb_function(self.period_multiple)
         self._raw = fn.raw
@@ -89,15 +109,6 @@ class HarmonicBalance(Formulation, SymPyPrintable):
 
     # ------------------------------------------------------------------ description
     @property
-    def parameters(self) -> tuple[sp.Symbol, ...]:
-        return self.model.params
-
-    @property
-    def equations(self) -> str:
-        """The equations of motion as text."""
-        return self.model.describe
-
-    @property
     def exact(self) -> bool:
         """True when the alternating frequency-time evaluation is alias-free (polynomial nonlinearity)."""
         return self.polynomial_degree is not None
@@ -112,22 +123,19 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         vals = f"; {vals}" if vals else ""
         return f"HarmonicBalance({self.equations}; {kind}; {H}, {self.samples} samples, {how}{vals})"
 
-    def with_values(self, values: Mapping[Any, Any]) -> HarmonicBalance:
-        """A copy with some parameter values changed."""
-        p = self.values.copy()
-        for k, v in values.items():
-            p[self.model.param_index(k)] = float(v)
+    # ------------------------------------------------------------------ the driver's protocol (private)
+    def _with_vector(self, p: np.ndarray) -> HarmonicBalance:
         return HarmonicBalance(self.model, p, self.harmonics, self.adaptive, self.tol, self.period_multiple)
 
-    def with_harmonics(self, harmonics: int, period_multiple: int | None = None) -> HarmonicBalance:
+    def _with_harmonics(self, harmonics: int, period_multiple: int | None = None) -> HarmonicBalance:
         m = self.period_multiple if period_multiple is None else period_multiple
         return HarmonicBalance(self.model, self.values, harmonics, self.adaptive, self.tol, m)
 
-    def at_size(self, size: int) -> HarmonicBalance:
+    def _at_size(self, size: int) -> HarmonicBalance:
         """The same problem with ``size`` harmonics (fixed)."""
         return HarmonicBalance(self.model, self.values, size, False, self.tol, self.period_multiple)
 
-    def doubled(self):
+    def _doubled(self):
         """The doubled-period problem (2H harmonics of half the base frequency) and the embedding of unknowns."""
         H = self.harmonics
         new = HarmonicBalance(
@@ -141,7 +149,7 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         n = self.model.n
 
         def embed(v: np.ndarray, tangent: bool = False) -> np.ndarray:
-            c = self.coefficients_of(v)
+            c = self._coefficients_of(v)
             out = np.zeros((n, 4 * H + 1))
             out[:, 0] = c[:, 0]
             out[:, 3::4] = c[:, 1::2]  # harmonic k -> 2k: a_k at index 2(2k)-1, b_k at 2(2k)
@@ -152,18 +160,14 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         return new, embed
 
     # ------------------------------------------------------------------ layout
-    @property
-    def size(self) -> int:
-        return self.model.n * (2 * self.harmonics + 1) + (1 if self.autonomous else 0)
-
-    def frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
+    def _frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
         return float(u[-1]) if self.autonomous else float(p[self._w]) / self.period_multiple
 
-    def coefficients_of(self, u: np.ndarray) -> np.ndarray:
+    def _coefficients_of(self, u: np.ndarray) -> np.ndarray:
         n, m = self.model.n, 2 * self.harmonics + 1
         return np.asarray(u[: n * m]).reshape(n, m)
 
-    def pack(self, coefficients: np.ndarray, omega: float | None = None) -> np.ndarray:
+    def _pack(self, coefficients: np.ndarray, omega: float | None = None) -> np.ndarray:
         c = np.atleast_2d(np.asarray(coefficients, dtype=float))
         H = self.harmonics
         out = np.zeros((self.model.n, 2 * H + 1))
@@ -176,17 +180,16 @@ class HarmonicBalance(Formulation, SymPyPrintable):
             u = np.append(u, float(omega))
         return u
 
-    def transfer(self, v: np.ndarray, other: HarmonicBalance) -> np.ndarray:
+    def _transfer(self, v: np.ndarray, other: HarmonicBalance) -> np.ndarray:
         """``v`` (unknowns of this truncation) in the layout of ``other`` (more or fewer harmonics)."""
-        c = self.coefficients_of(v)
-        return other.pack(c, v[-1] if self.autonomous else None)
+        c = self._coefficients_of(v)
+        return other._pack(c, v[-1] if self.autonomous else None)
 
     # ------------------------------------------------------------------ residual and Jacobian
     def _pieces(self, c: np.ndarray, omega: float, p: np.ndarray, samples: int):
         n = self.model.n
-        tau, E, D, P = _fourier.basis(self.harmonics, samples)
-        B1 = E @ D
-        B2 = B1 @ D
+        tau, E, _, P = _fourier.basis(self.harmonics, samples)
+        B1, B2 = _fourier.derivative_bases(self.harmonics, samples)
         z, zd, zdd = E @ c.T, B1 @ c.T, B2 @ c.T
         out = np.asarray(self._raw(tau, *z.T, *zd.T, *zdd.T, omega, *p))
         N = samples
@@ -198,11 +201,11 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         r_p = out[:, off + n :].reshape(N, n, -1)
         return (tau, E, B1, B2, P), r, G, r_om, r_p, (z, zd, zdd)
 
-    def evaluate(self, u: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _evaluate(self, u: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         n, H = self.model.n, self.harmonics
         m = 2 * H + 1
-        c = self.coefficients_of(u)
-        omega = self.frequency_of(u, p)
+        c = self._coefficients_of(u)
+        omega = self._frequency_of(u, p)
         (_, E, B1, B2, P), r, G, r_om, r_p, _ = self._pieces(c, omega, p, self.samples)
         N = self.samples
         R = (P @ r).T.ravel()
@@ -213,7 +216,7 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         R_p = (P @ r_p.reshape(N, -1)).reshape(m, n, -1).transpose(1, 0, 2).reshape(n * m, -1)
         if self.autonomous:
             ref = self._ref if self._ref is not None else u
-            cr = self.coefficients_of(ref)
+            cr = self._coefficients_of(ref)
             dref = _fourier.derivative(cr).ravel()  # phase condition: integral of z . z_ref' = 0
             g = float(dref @ c.ravel())
             G_all = np.append(R, g)
@@ -228,26 +231,26 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         R_p[:, self._w] += R_om / self.period_multiple
         return R, J, R_p
 
-    def begin_step(self, u: np.ndarray) -> None:
+    def _begin_step(self, u: np.ndarray) -> None:
         self._ref = np.array(u, dtype=float)
 
     # ------------------------------------------------------------------ point data
-    def defect(self, u: np.ndarray, p: np.ndarray) -> float:
+    def _defect(self, u: np.ndarray, p: np.ndarray) -> float:
         """Relative residual of the truncated series in the equations: ``max |r|`` over the period divided by the
         larger of ``max |M q''|`` and ``max |F|`` (the terms that balance)."""
-        c = self.coefficients_of(u)
-        omega = self.frequency_of(u, p)
+        c = self._coefficients_of(u)
+        omega = self._frequency_of(u, p)
         N = max(4 * self.samples, 64)
         _, r, G, _, _, (_, _, zdd) = self._pieces(c, omega, p, N)
         inertia = np.einsum("jik,jk->ji", G[2], zdd)  # M omega^2 q_tautau; the other terms are inertia - r
         scale = max(np.abs(inertia).max(), np.abs(inertia - r).max(), 1e-300)
         return float(np.abs(r).max() / scale)
 
-    def hill_matrices(self, u: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _hill_matrices(self, u: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``D0`` (the Jacobian), ``D1``, ``D2`` of Hill's quadratic eigenvalue problem (see ``_fourier``)."""
         n, m = self.model.n, 2 * self.harmonics + 1
-        c = self.coefficients_of(u)
-        omega = self.frequency_of(u, p)
+        c = self._coefficients_of(u)
+        omega = self._frequency_of(u, p)
         (_, E, B1, B2, P), _, G, _, _, _ = self._pieces(c, omega, p, self.samples)
         N = self.samples
         C, Mp = G[1] / omega, G[2] / omega**2
@@ -264,29 +267,29 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         D2 = project(Mp[..., None] * E[:, None, None, :])
         return D0, D1, D2
 
-    def hill_multipliers(self, u: np.ndarray, p: np.ndarray) -> np.ndarray:
+    def _hill_multipliers(self, u: np.ndarray, p: np.ndarray) -> np.ndarray:
         """Floquet multipliers by Hill's method in the problem's truncation (Krack & Gross 2019, §4.1)."""
-        omega = self.frequency_of(u, p)
-        lam = _fourier.hill_exponents(*self.hill_matrices(u, p), self.model.n, omega)
+        omega = self._frequency_of(u, p)
+        lam = _fourier.hill_exponents(*self._hill_matrices(u, p), self.model.n, omega)
         return _sorted_multipliers(np.exp(lam * 2 * np.pi / omega))
 
-    def point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
-        c = self.coefficients_of(u)
-        omega = self.frequency_of(u, p)
+    def _point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
+        c = self._coefficients_of(u)
+        omega = self._frequency_of(u, p)
         zeta = _fourier.evaluate(c, [0.0])[0]
         zd = _fourier.evaluate(_fourier.derivative(c), [0.0])[0] * omega
-        rho = self.hill_multipliers(u, p) if stability else np.array([])
+        rho = self._hill_multipliers(u, p) if stability else np.array([])
         return PointData(
             amplitudes=_fourier.amplitudes(c),
             frequency=omega,
-            residual=self.defect(u, p),
+            residual=self._defect(u, p),
             multipliers=rho,
             coefficients=c.copy(),
             initial_state=np.concatenate([zeta, zd]),
             size=self.harmonics,
         )
 
-    def adapt(self, u: np.ndarray, p: np.ndarray, data: PointData):
+    def _adapt(self, u: np.ndarray, p: np.ndarray, data: PointData):
         if data.residual <= self.tol:
             return None
         if not self.adaptive:
@@ -303,8 +306,8 @@ class HarmonicBalance(Formulation, SymPyPrintable):
                 f"{H} harmonics; use shooting or collocation for this orbit",
                 achieved=data.residual,
             )
-        new = self.with_harmonics(min(_MAX_HARMONICS, int(np.ceil(1.5 * H)) + 1))
-        return new, (lambda v, old=self: old.transfer(v, new))
+        new = self._with_harmonics(min(_MAX_HARMONICS, int(np.ceil(1.5 * H)) + 1))
+        return new, (lambda v, old=self: old._transfer(v, new))
 
     # ------------------------------------------------------------------ one point
     def solve(
@@ -319,16 +322,18 @@ class HarmonicBalance(Formulation, SymPyPrintable):
 
         Parameters
         ----------
-        guess : PeriodicSolution, LimitCycleSeries, array or None
-            Starting point: a solution (of any method), a Poincaré series of :func:`symosc.nonlinear.limit_cycle`
+        guess : PeriodicSolution, LimitCycleSeries, array or None, optional
+            Starting point: a solution of any formulation, a Poincaré series of :func:`symosc.nonlinear.limit_cycle`
             (evaluated at the problem's value of its small parameter), Fourier coefficients of shape ``(n, 2H'+1)``
-            (any H'), or None for the linearized response (forced) / first-harmonic guesses (autonomous).
-        values : mapping, optional
-            Parameter values that replace the problem's for this solve.
+            (any H'), or None (default) for the linearized response (forced) / first-harmonic guesses (autonomous).
+        values : mapping of Symbol or str to float, optional
+            Parameter values that replace the problem's for this solve: finite numbers keyed by parameter Symbol or
+            name (see :meth:`with_values`).
         frequency : float, optional
-            Frequency guess (rad/s) of an autonomous problem (default: the guess's, else from the linearization).
-        max_iterations : int
-            Newton iterations per truncation.
+            Angular-frequency guess (rad/s) of an autonomous problem: a positive number (default: the guess's, else
+            the linearization's).
+        max_iterations : int, optional
+            Newton iterations per truncation: an integer >= 1 (default 50).
 
         Returns
         -------
@@ -351,9 +356,11 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         (0.342901, True, True)
         """
         check_int("max_iterations", max_iterations, minimum=1)
-        prob = self.with_values(values) if values else self
-        u, prob = prob.converge(guess, frequency, max_iterations=max_iterations)
-        data = prob.point(u, prob.values)
+        if frequency is not None:
+            frequency = check_positive("frequency", frequency)
+        prob = self.with_values(values) if values is not None else self
+        u, prob = prob._converge(guess, frequency, max_iterations=max_iterations)
+        data = prob._point(u, prob.values)
         if data.residual > prob.tol:
             raise ConvergenceError(
                 f"harmonic balance with {prob.harmonics} harmonics reaches a relative residual {data.residual:.2e} "
@@ -362,7 +369,7 @@ class HarmonicBalance(Formulation, SymPyPrintable):
             )
         return solution_from(prob, u, prob.values, data)
 
-    def converge(
+    def _converge(
         self, guess: Any, frequency: float | None = None, *, max_iterations: int = 50
     ) -> tuple[np.ndarray, HarmonicBalance]:
         """Converged unknowns at the problem's values and the (possibly refined) problem."""
@@ -374,23 +381,28 @@ class HarmonicBalance(Formulation, SymPyPrintable):
                 c = np.zeros((self.model.n, 3))
                 c[0, 1] = amp
                 try:
-                    u, prob = self.converge(c, frequency, max_iterations=max_iterations)
+                    u, prob = self._converge(c, frequency, max_iterations=max_iterations)
                 except ConvergenceError as exc:
                     last = exc
                     continue
-                if np.max(np.abs(prob.coefficients_of(u)[:, 1:])) > 1e-8:
+                if np.max(np.abs(prob._coefficients_of(u)[:, 1:])) > 1e-8:
                     return u, prob
             raise ConvergenceError(
                 "harmonic balance found no nontrivial periodic solution from first-harmonic guesses of amplitude "
                 f"0.1 to 20 ({last}); give a guess"
             )
         prob = self
+        given = getattr(guess, "coefficients", guess)
+        H = (given.shape[1] - 1) // 2 if isinstance(given, np.ndarray) and given.ndim == 2 else 0
+        if self.adaptive and H > self.harmonics:
+            # start at the guess's truncation: cutting its harmonics can leave Newton's method far from the solution
+            prob = self._with_harmonics(min(H, _MAX_HARMONICS))
         u0 = prob._initial(guess, frequency)
         while True:
-            prob.begin_step(u0)
+            prob._begin_step(u0)
             u = newton(prob, u0, p, max_iterations=max_iterations)
-            data = prob.point(u, p, stability=False)
-            refined = prob.adapt(u, p, data)
+            data = prob._point(u, p, stability=False)
+            refined = prob._adapt(u, p, data)
             if refined is None:
                 return u, prob
             prob, transfer = refined
@@ -402,23 +414,23 @@ class HarmonicBalance(Formulation, SymPyPrintable):
         n = self.model.n
         if isinstance(guess, PeriodicSolution):
             c = guess.coefficients if guess.coefficients is not None else _coefficients_from_state(self, guess)
-            return self.pack(c, frequency or guess.frequency)
+            return self._pack(c, frequency or guess.frequency)
         if hasattr(guess, "eps_symbol") and hasattr(guess, "solution") and self.autonomous:
             c, om = _coefficients_from_series(self, guess)
-            return self.pack(c, frequency or om)
+            return self._pack(c, frequency or om)
         if guess is not None:
             c = np.atleast_2d(np.asarray(guess, dtype=float))
             if c.shape[0] != n or c.shape[1] % 2 != 1:
                 raise ParameterError(f"guess must be Fourier coefficients of shape ({n}, 2H+1), got {c.shape}")
-            return self.pack(c, frequency)
+            return self._pack(c, frequency)
         if self.autonomous:
             c = np.zeros((n, 3))
             c[0, 1] = 1.0
             omega = frequency if frequency is not None else _linear_frequency(self)
-            return self.pack(c, omega)
+            return self._pack(c, omega)
         # forced: the linear response about q = 0 (first harmonic), by one Newton step from zero
-        u = self.pack(np.zeros((n, 1)))
-        G, J, _ = self.evaluate(u, self.values)
+        u = self._pack(np.zeros((n, 1)))
+        G, J, _ = self._evaluate(u, self.values)
         try:
             return u - np.linalg.solve(J, G)
         except np.linalg.LinAlgError:
@@ -440,7 +452,7 @@ def _coefficients_from_state(prob: HarmonicBalance, sol: Any) -> np.ndarray:
 
     n = prob.model.n
     N = 4 * (2 * prob.harmonics + 1)
-    p = prob.with_values(sol.values).values
+    p = prob._with_values(sol.values).values
     f = prob.model.first_order(p)
     tt = sol.period * np.arange(N) / N
     res = solve_ivp(f.rhs, (0.0, sol.period), sol.initial_state, t_eval=tt, method="DOP853", rtol=1e-11, atol=1e-13)
@@ -485,29 +497,33 @@ def harmonic_balance(
     Parameters
     ----------
     acceleration : Expr, sequence of Expr, LagrangianSystem or FirstOrderSystem
-        ``x'' = acceleration(x, v, t)`` with SymPy expressions in the coordinate(s) ``x``, velocity(ies) ``v``, time
-        ``t`` and parameters (one expression per coordinate for several degrees of freedom), or a mechanical system
-        whose equations ``M(q, t) q'' = F(q, q', t)`` are used as they are (time is :data:`symosc.t`).
+        The equations: ``x'' = acceleration(x, v, t)`` as SymPy expressions in the coordinate(s) ``x``,
+        velocity(ies) ``v``, time ``t`` and parameters (one expression per coordinate for several degrees of
+        freedom), or a mechanical system whose equations ``M(q, t) q'' = F(q, q', t)`` are used as they are (time is
+        :data:`symosc.t`).
     x, v : Symbol or sequence of Symbol
-        Coordinates and velocities used in ``acceleration`` (not needed for a system).
+        Coordinates and velocities used in ``acceleration``: SymPy Symbols, one of each per coordinate (not needed
+        for a system).
     t : Symbol, optional
-        The time symbol (default :data:`symosc.t`).
+        The time symbol: a SymPy Symbol (default :data:`symosc.t`).
     forcing_frequency : Symbol, optional
-        The angular-frequency symbol of the forcing (``w`` in ``F*cos(w*t)``): the response has the forcing period
-        (times ``period_multiple``).  Required unless ``autonomous``.
-    autonomous : bool
-        Self-excited oscillations: the frequency is an unknown, fixed by a phase condition.
-    values : mapping, optional
-        Values of the parameters (keyed by Symbol or name); the continuation parameter may be left out and given
-        by the span of :func:`~symosc.continuation.continue_periodic`.
+        The angular-frequency symbol of the forcing (``w`` in ``F*cos(w*t)``): a Symbol of the equations; required
+        unless ``autonomous``.  The response has the forcing period (times ``period_multiple``).
+    autonomous : bool, optional
+        Whether the oscillations are self-excited (the frequency is an unknown, fixed by a phase condition): True or
+        False (default False).
+    values : mapping of Symbol or str to float, optional
+        Values of the model's parameters: finite numbers keyed by Symbol or name; the continuation parameter may be
+        left out and given by the span of :func:`~symosc.continuation.continue_periodic`.
     harmonics : int, optional
-        Number of harmonics H.  None (default) chooses H for the requested ``tol`` (starting from 3, growing by
-        half until the relative residual is below ``tol``; also along a branch).
-    tol : float
+        Number of harmonics H: an integer from 1 to 400, or None (default) to choose H for the requested ``tol``
+        (starting from 3, growing by half until the relative residual is below ``tol``; also along a branch).
+    tol : float, optional
         Requested relative residual of the truncated series in the equations of motion,
-        ``max |M q'' - F| / max |M q''|`` over the period.
-    period_multiple : int
-        ``m >= 1``: look for responses of period ``m`` times the forcing period (subharmonics, period doubling).
+        ``max |M q'' - F| / max(|M q''|, |F|)`` over the period: a positive number (default 1e-8).
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (subharmonics, period doubling; 1 for an
+        autonomous problem; default 1).
 
     Returns
     -------

@@ -20,22 +20,44 @@ from .._printing import SymPyPrintable
 from .._validate import check_bool, check_choice, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 from ._model import PeriodicModel, build_model
-from ._problem import Formulation, PointData
+from ._problem import Formulation, PointData, checked_arguments
 
 __all__ = ["Shooting", "shooting"]
+
+INTEGRATORS = ("DOP853", "Radau", "LSODA", "RK45", "BDF")
 
 
 class Shooting(Formulation, SymPyPrintable):
     """A shooting problem for periodic solutions; build it with :func:`shooting`.
 
+    Solve one point with :meth:`solve`, change parameter values with :meth:`with_values`, or follow a branch with
+    :func:`~symosc.continuation.continue_periodic`.
+
+    Parameters
+    ----------
+    model : PeriodicModel
+        The equations ``M(q, t) q'' = F(q, q', t)`` with their parameters, exactly as :func:`shooting` builds them
+        from the user's model (not constructed by hand).
+    values : ndarray of float, shape (number of parameters,)
+        Values of the model's parameters in the order of :attr:`parameters`: finite numbers, nan for a value not
+        given yet (the continuation parameter).
+    rtol : float
+        Relative tolerance of the integrations: a positive number (the absolute tolerance is ``rtol * 1e-2``).
+    integrator : {"DOP853", "Radau", "LSODA", "RK45", "BDF"}
+        The ``scipy.integrate.solve_ivp`` method: one of these names (Radau or BDF for stiff orbits).
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (1 for an autonomous problem; default 1).
+
     Attributes
     ----------
-    rtol : float
-        Relative tolerance of the integrations (absolute tolerance ``rtol * 1e-2``).
-    integrator : str
-        ``solve_ivp`` method.
-    period_multiple : int
-        The response period in forcing periods.
+    parameters : tuple of Symbol
+        Every parameter of the model (the forcing frequency included), in the order of ``values``.
+    equations : str
+        The equations of motion as text.
+    autonomous : bool
+        Whether the oscillations are self-excited (the period is an unknown).
+
+    The arguments are kept as attributes of the same names.
     """
 
     method = "shooting"
@@ -43,12 +65,13 @@ class Shooting(Formulation, SymPyPrintable):
     def __init__(
         self, model: PeriodicModel, values: np.ndarray, rtol: float, integrator: str, period_multiple: int = 1
     ) -> None:
+        values, period_multiple = checked_arguments(model, values, period_multiple)
         self.model = model
-        self.values = np.asarray(values, dtype=float)
-        self.rtol = float(rtol)
-        self.tol = float(rtol)
-        self.integrator = integrator
-        self.period_multiple = int(period_multiple)
+        self.values = values
+        self.rtol = check_positive("rtol", rtol)
+        self.tol = self.rtol
+        self.integrator = check_choice("integrator", integrator, INTEGRATORS)
+        self.period_multiple = period_multiple
         self.autonomous = model.autonomous
         self._w = None if model.autonomous else model.param_index(model.forcing_frequency)
         self._ref: np.ndarray | None = None
@@ -61,21 +84,16 @@ class Shooting(Formulation, SymPyPrintable):
         kind = "autonomous" if self.autonomous else f"forced by {self.model.forcing_frequency}"
         return f"Shooting({self.model.describe}; {kind}; {self.integrator}, rtol={self.rtol:g})"
 
-    @property
-    def parameters(self) -> tuple[sp.Symbol, ...]:
-        return self.model.params
-
-    def with_values(self, values: Mapping[Any, Any]) -> Shooting:
-        p = self.values.copy()
-        for k, v in values.items():
-            p[self.model.param_index(k)] = float(v)
+    # ------------------------------------------------------------------ the driver's protocol (private)
+    def _with_vector(self, p: np.ndarray) -> Shooting:
         return Shooting(self.model, p, self.rtol, self.integrator, self.period_multiple)
 
-    def at_size(self, size: int) -> Shooting:
+    def _at_size(self, size: int) -> Shooting:
         return self
 
-    def doubled(self):
-        new = Shooting(self.model, self.values, self.rtol, self.integrator, 2 * self.period_multiple)
+    def _doubled(self):
+        m = self.period_multiple if self.autonomous else 2 * self.period_multiple  # autonomous: T is an unknown
+        new = Shooting(self.model, self.values, self.rtol, self.integrator, m)
 
         def embed(v: np.ndarray, tangent: bool = False) -> np.ndarray:
             v = np.array(v, dtype=float)
@@ -86,11 +104,11 @@ class Shooting(Formulation, SymPyPrintable):
         return new, embed
 
     # ------------------------------------------------------------------ layout
-    def period_of(self, u: np.ndarray, p: np.ndarray) -> float:
+    def _period_of(self, u: np.ndarray, p: np.ndarray) -> float:
         return float(u[-1]) if self.autonomous else 2 * np.pi * self.period_multiple / float(p[self._w])
 
-    def frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
-        return 2 * np.pi / self.period_of(u, p)
+    def _frequency_of(self, u: np.ndarray, p: np.ndarray) -> float:
+        return 2 * np.pi / self._period_of(u, p)
 
     def _flow(self, u: np.ndarray, p: np.ndarray, dense: bool = False):
         key = (u.tobytes(), p.tobytes(), dense)
@@ -101,7 +119,7 @@ class Shooting(Formulation, SymPyPrintable):
         f = self.model.first_order(p)
         d, npar = f.dim, f.npar
         y0 = u[:d]
-        T = self.period_of(u, p)
+        T = self._period_of(u, p)
 
         def rhs(tt: float, z: np.ndarray) -> np.ndarray:
             fy, A, fp = f.all(tt, z[:d])
@@ -122,7 +140,7 @@ class Shooting(Formulation, SymPyPrintable):
         self._cache[key] = out
         return out
 
-    def evaluate(self, u: np.ndarray, p: np.ndarray):
+    def _evaluate(self, u: np.ndarray, p: np.ndarray):
         d = 2 * self.model.n
         yT, X, S, f, T, _ = self._flow(u, p)
         G = yT - u[:d]
@@ -142,10 +160,10 @@ class Shooting(Formulation, SymPyPrintable):
         Gp[:, self._w] += fT * (-T / float(p[self._w]))
         return G, J, Gp
 
-    def begin_step(self, u: np.ndarray) -> None:
+    def _begin_step(self, u: np.ndarray) -> None:
         self._ref = np.array(u, dtype=float)
 
-    def point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
+    def _point(self, u: np.ndarray, p: np.ndarray, *, stability: bool = True) -> PointData:
         d = 2 * self.model.n
         yT, X, _, _, T, sol = self._flow(u, p, dense=True)
         amps = _dense_maxima(sol.sol, T, self.model.n)
@@ -178,35 +196,43 @@ class Shooting(Formulation, SymPyPrintable):
         return y0
 
     def solve(self, guess: Any = None, *, values: Mapping[Any, Any] | None = None, max_iterations: int = 30):
-        """Newton's method from ``guess`` (a PeriodicSolution or an initial state, with the period appended for an
-        autonomous problem).
+        """Solve for one periodic solution by Newton's method from ``guess``.
 
         Parameters
         ----------
         guess : PeriodicSolution or array
-            Starting point.
-        values : mapping, optional
-            Parameter values that replace the problem's.
-        max_iterations : int
-            Newton iterations.
+            Starting point (required): a solution of any formulation, or an initial state ``(q, q')`` of size 2n
+            (with the period appended for an autonomous problem).
+        values : mapping of Symbol or str to float, optional
+            Parameter values that replace the problem's for this solve: finite numbers keyed by parameter Symbol or
+            name (see :meth:`with_values`).
+        max_iterations : int, optional
+            Newton iterations: an integer >= 1 (default 30).
 
         Returns
         -------
         PeriodicSolution
+
+        Raises
+        ------
+        ParameterError
+            No guess, or a state of the wrong size.
+        ConvergenceError
+            Newton's method or an integration does not converge.
         """
         from ._solve import solution_from
 
         check_int("max_iterations", max_iterations, minimum=1)
-        prob = self.with_values(values) if values else self
-        u, prob = prob.converge(guess, max_iterations=max_iterations)
-        return solution_from(prob, u, prob.values, prob.point(u, prob.values))
+        prob = self.with_values(values) if values is not None else self
+        u, prob = prob._converge(guess, max_iterations=max_iterations)
+        return solution_from(prob, u, prob.values, prob._point(u, prob.values))
 
-    def converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
+    def _converge(self, guess: Any, frequency: float | None = None, *, max_iterations: int = 30):
         """Converged unknowns at the problem's values (and the problem)."""
         from ._solve import newton
 
         u0 = self._initial(guess, frequency)
-        self.begin_step(u0)
+        self._begin_step(u0)
         return newton(self, u0, self.values, max_iterations=max_iterations, tol=1e-11), self
 
 
@@ -248,21 +274,25 @@ def shooting(
     acceleration : Expr, sequence of Expr, LagrangianSystem or FirstOrderSystem
         The equations, as for :func:`harmonic_balance` (a Lagrangian system needs at most 3 coordinates here).
     x, v : Symbol or sequence of Symbol
-        Coordinates and velocities used in ``acceleration``.
+        Coordinates and velocities used in ``acceleration``: SymPy Symbols, one of each per coordinate (not needed
+        for a system).
     t : Symbol, optional
-        Time (default :data:`symosc.t`).
+        The time symbol: a SymPy Symbol (default :data:`symosc.t`).
     forcing_frequency : Symbol, optional
-        Forcing frequency symbol of a forced problem.
-    autonomous : bool
-        Self-excited oscillations (the period is an unknown).
-    values : mapping, optional
-        Parameter values.
-    rtol : float
-        Relative tolerance of the integrations.
-    integrator : {"DOP853", "Radau", "LSODA", "RK45"}
-        ``scipy.integrate.solve_ivp`` method (Radau for stiff relaxation oscillations).
-    period_multiple : int
-        Period of the response in forcing periods.
+        The angular-frequency symbol of the forcing (``w`` in ``F*cos(w*t)``): a Symbol of the equations; required
+        unless ``autonomous``.
+    autonomous : bool, optional
+        Whether the oscillations are self-excited (the period is an unknown): True or False (default False).
+    values : mapping of Symbol or str to float, optional
+        Values of the model's parameters: finite numbers keyed by Symbol or name; the continuation parameter may be
+        left out.
+    rtol : float, optional
+        Relative tolerance of the integrations: a positive number (default 1e-11; absolute tolerance ``rtol * 1e-2``).
+    integrator : {"DOP853", "Radau", "LSODA", "RK45", "BDF"}, optional
+        The ``scipy.integrate.solve_ivp`` method: one of these names (default "DOP853"; Radau or BDF for stiff
+        relaxation oscillations).
+    period_multiple : int, optional
+        The response period in forcing periods, m: an integer >= 1 (1 for an autonomous problem; default 1).
 
     Returns
     -------
@@ -286,7 +316,7 @@ def shooting(
     """
     autonomous = check_bool("autonomous", autonomous)
     rtol = check_positive("rtol", rtol)
-    check_choice("integrator", integrator, ("DOP853", "Radau", "LSODA", "RK45", "BDF"))
+    check_choice("integrator", integrator, INTEGRATORS)
     period_multiple = check_int("period_multiple", period_multiple, minimum=1)
     if values is not None and not isinstance(values, Mapping):
         raise ParameterError(f"values must be a mapping from parameter to number, got {values!r}")

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validate import check_choice, check_positive, validated
+from .._validate import check_choice, check_int, check_positive, validated
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = ["orbit_multipliers"]
@@ -71,21 +71,24 @@ def orbit_multipliers(
     Parameters
     ----------
     problem : HarmonicBalance, Shooting or Collocation
-        The formulation of the model (its compiled equations are used).
+        The formulation of the model: a problem from :func:`harmonic_balance`, :func:`shooting` or
+        :func:`collocation` (its compiled equations are used).
     solution : PeriodicSolution
-        The solution (from ``problem.solve`` or ``Branch.solution``).
-    method : {"monodromy", "hill"}
-        ``"monodromy"``: integrate the variational equations over one period (compiled Jacobian).  ``"hill"``:
-        eigenvalues of Hill's matrix (harmonic-balance solutions only).
-    along : {"integrated", "series"}
-        Monodromy only: along the orbit integrated from the solution's initial state together with the variational
-        equations (the exact orbit's multipliers), or along the solution's own Fourier series
-        (:func:`symosc.periodic.monodromy` of ``A(t)``: the same linear periodic system as Hill's method, so that
-        the two stability computations can be compared independently of the truncation of the orbit).
-    rtol : float
-        Relative tolerance of the integration (monodromy).
+        The solution: a PeriodicSolution of that model (from ``problem.solve`` or ``Branch.solution``).
+    method : {"monodromy", "hill"}, optional
+        How the multipliers are computed: "monodromy" (default) or "hill".  ``"monodromy"``: integrate the
+        variational equations over one period (compiled Jacobian).  ``"hill"``: eigenvalues of Hill's matrix
+        (harmonic-balance solutions only).
+    along : {"integrated", "series"}, optional
+        The orbit of the monodromy computation: "integrated" (default) or "series".  Along the orbit integrated
+        from the solution's initial state together with the variational equations (the exact orbit's
+        multipliers), or along the solution's own Fourier series (:func:`symosc.periodic.monodromy` of ``A(t)``:
+        the same linear periodic system as Hill's method, so that the two stability computations can be compared
+        independently of the truncation of the orbit).  Ignored by Hill's method.
+    rtol : float, optional
+        Relative tolerance of the integration (monodromy): a positive number (default 1e-12).
     harmonics : int, optional
-        Truncation of Hill's matrix (default: the solution's harmonics).
+        Truncation of Hill's matrix: an integer from 1 to 800 (default: the solution's harmonics).
 
     Returns
     -------
@@ -120,7 +123,7 @@ def orbit_multipliers(
     check_choice("method", method, ("monodromy", "hill"))
     check_choice("along", along, ("integrated", "series"))
     rtol = check_positive("rtol", rtol)
-    p = problem.with_values(solution.values).values
+    p = problem._with_values(solution.values).values
     if method == "monodromy":
         if along == "series":
             if solution.coefficients is None:
@@ -132,12 +135,12 @@ def orbit_multipliers(
         return rho[np.lexsort((-rho.imag, -np.abs(rho)))]
     if problem.method != "harmonic balance" or solution.coefficients is None:
         raise ParameterError("method='hill' needs a harmonic-balance problem and solution")
-    H = solution.size if harmonics is None else int(harmonics)
-    prob = problem.at_size(H)
+    H = solution.size if harmonics is None else check_int("harmonics", harmonics, minimum=1, maximum=800)
+    prob = problem._at_size(H)
     if not problem.autonomous:
         ratio = solution.values[problem.model.forcing_frequency.name] / solution.frequency
         m = round(ratio)
         if m != prob.period_multiple:
-            prob = prob.with_harmonics(H, period_multiple=m)
-    u = prob.pack(solution.coefficients, solution.frequency if problem.autonomous else None)
-    return prob.hill_multipliers(u, p)
+            prob = prob._with_harmonics(H, period_multiple=m)
+    u = prob._pack(solution.coefficients, solution.frequency if problem.autonomous else None)
+    return prob._hill_multipliers(u, p)

@@ -134,6 +134,8 @@ class QuestionResult(SymPyPrintable):
         Figures of the answer (drawn by :meth:`SceneResult.write`).
     data : dict
         JSON-ready numbers of the answer (written to ``results.json``).
+    math : tuple of (int, Expr, Expr)
+        Equations the HTML report typesets as MathML: ``(line index, left-hand side, right-hand side)``.
 
     Examples
     --------
@@ -186,6 +188,8 @@ class SceneResult(SymPyPrintable):
         One answer per question, in the order of the scene file.
     log : tuple of LogEntry
         The derivation log: every step derived or evaluated for the scene.
+    parameter_text : dict
+        Each parameter's value as the scene file wrote it (``"45 mm"``), for the reports.
 
     Examples
     --------

@@ -60,6 +60,21 @@ def test_fold_agrees_with_shooting(duffing):
     (f2,) = brs.of_kind("fold")
     assert f2.parameter == pytest.approx(fold.parameter, abs=1e-8)
     assert f2.amplitude == pytest.approx(fold.amplitude, abs=1e-6)
+    # the state at t = 0 reported with the fold: Fourier series (harmonic balance) against the period map's fixed point
+    np.testing.assert_allclose(f2.initial_state, fold.initial_state, atol=1e-8)
+
+
+def test_a_fold_right_after_the_start_is_found_when_the_branch_turns_out_of_the_span(duffing):
+    """Started from a point of the branch just before a fold, at the low end of the span, with a long step: the step
+    turns round the fold and leaves the span, and the fold is still located (where the full branch has it).  The
+    start, a solution with many harmonics, is not cut to the adaptive problem's first 3 harmonics (Newton's method
+    fails from the cut series this close to the fold)."""
+    hb, br = duffing
+    fold = br.of_kind("fold")[0]
+    for i in (fold.index, fold.index - 1):
+        short = continue_periodic(hb, w, (br.parameter[i], fold.parameter + 0.05), start=br.solution(i), step=0.2)
+        (found,) = short.bifurcations
+        assert found.kind == "fold" and found.parameter == pytest.approx(fold.parameter, abs=1e-9)
 
 
 def test_weakly_nonlinear_folds_approach_averaging():

@@ -66,7 +66,7 @@ def test_exact_convolution_equals_fine_quadrature(duffing_hb):
     H = duffing_hb.harmonics
     c = rng.normal(size=(1, 2 * H + 1)) / np.arange(1, 2 * H + 2)
     p = duffing_hb.values.copy()
-    G, J, _ = duffing_hb.evaluate(c.ravel(), p)
+    G, J, _ = duffing_hb._evaluate(c.ravel(), p)
     assert duffing_hb.exact and duffing_hb.samples == 4 * H + 2
     N = 4096
     tau = 2 * np.pi * np.arange(N) / N
@@ -87,8 +87,8 @@ def test_exact_convolution_equals_fine_quadrature(duffing_hb):
     # the Jacobian is the exact derivative of the residual (central differences agree to their own error)
     h = 1e-6
     col = (
-        duffing_hb.evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
-        - duffing_hb.evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]
+        duffing_hb._evaluate(c.ravel() + h * np.eye(2 * H + 1)[3], p)[0]
+        - duffing_hb._evaluate(c.ravel() - h * np.eye(2 * H + 1)[3], p)[0]
     ) / (2 * h)
     np.testing.assert_allclose(J[:, 3], col, atol=1e-7)
 
@@ -179,3 +179,35 @@ def test_arguments_are_checked():
         harmonic_balance(DUFFING, x, v, t, forcing_frequency=w, values={"G": 1.0})
     with pytest.raises(ParameterError, match="x and v"):
         harmonic_balance(DUFFING, forcing_frequency=w)
+
+
+def test_constructors_and_with_values_refuse_nonsense(duffing_hb, vdp_hb):
+    """The problem classes check their arguments (each error names the argument); with_values checks its values."""
+    from symosc.continuation import Collocation, HarmonicBalance, Shooting
+
+    model, p = duffing_hb.model, duffing_hb.values
+    cases = [
+        (lambda: HarmonicBalance("x'' = -x", p, 5, False, 1e-8), "model"),
+        (lambda: HarmonicBalance(model, p[:1], 5, False, 1e-8), "values"),
+        (lambda: HarmonicBalance(model, [np.inf, 1.0], 5, False, 1e-8), "values"),
+        (lambda: HarmonicBalance(model, p, 0, False, 1e-8), "harmonics"),
+        (lambda: HarmonicBalance(model, p, 5, "yes", 1e-8), "adaptive"),
+        (lambda: HarmonicBalance(model, p, 5, False, -1.0), "tol"),
+        (lambda: HarmonicBalance(model, p, 5, False, 1e-8, period_multiple=0), "period_multiple"),
+        (lambda: HarmonicBalance(vdp_hb.model, vdp_hb.values, 5, False, 1e-8, period_multiple=2), "period_multiple"),
+        (lambda: Shooting(model, p, 0.0, "DOP853"), "rtol"),
+        (lambda: Shooting(model, p, 1e-9, "Euler"), "integrator"),
+        (lambda: Collocation(model, p, [0.0, 0.5, 0.4, 1.0], 4, 1e-6), "mesh"),
+        (lambda: Collocation(model, p, np.linspace(0.0, 2.0, 5), 4, 1e-6), "mesh"),
+        (lambda: Collocation(model, p, np.linspace(0.0, 1.0, 5), 11, 1e-6), "degree"),
+        (lambda: duffing_hb.with_values({"G": 1.0}), "G"),
+        (lambda: duffing_hb.with_values({"F": float("nan")}), "F"),
+        (lambda: duffing_hb.with_values([("F", 1.0)]), "values"),
+        (lambda: duffing_hb.solve(frequency=-1.0), "frequency"),
+    ]
+    for build, name in cases:
+        with pytest.raises(ParameterError, match=name):
+            build()
+    changed = duffing_hb.with_values({F: 0.5})
+    assert changed.values[model.param_index("F")] == 0.5 and changed.values[model.param_index("w")] == 2.0
+    assert changed.harmonics == duffing_hb.harmonics and duffing_hb.values[model.param_index("F")] == 1.0

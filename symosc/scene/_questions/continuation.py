@@ -146,7 +146,7 @@ def continuation(q: Question) -> QuestionResult:
                 "kind": b.kind,
                 "parameter": b.parameter,
                 "amplitude": b.amplitude,
-                "initial_state": _state_at(hb, b),
+                "initial_state": [float(y) for y in b.initial_state],
             }
             for b in br.bifurcations
         ],
@@ -154,13 +154,6 @@ def continuation(q: Question) -> QuestionResult:
         "harmonics": [int(br.size.min()), int(br.size.max())],
     }
     return QuestionResult("continuation", f"Continuation in {name} (harmonic balance)", lines, (table,), (fig,), data)
-
-
-def _state_at(hb: Any, b: Any) -> list:
-    """``(x, x')`` at t = 0 of the solution at the bifurcation, from its Fourier coefficients."""
-    c = hb.at_size(b.size).coefficients_of(b.state[:-1])[0]
-    k = np.arange(1, len(c) // 2 + 1)
-    return [float(c[0] + c[1::2].sum()), float(b.frequency * (k * c[2::2]).sum())]
 
 
 def draw_branch(ax: Any, *, parameter: list, y: list, stable: list, name: str, what: str, marks: list) -> Any:
