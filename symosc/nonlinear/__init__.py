@@ -158,8 +158,8 @@ _DEPRECATED_NAMES = {
 #: code and pickles written against them still load
 _MOVED_MODULES = {
     "_averaging_numeric": "averaging._numeric",
-    "_fourier": "series._fourier",
-    "_fourier_products": "series._fourier_products",
+    "_fourier": "series._arith.trig",
+    "_fourier_products": "series._arith.products",
     "_ndof_exponents": "series._ndof_exponents",
     "_normal_form_support": "averaging._normal_form_support",
     "_poincare_core": "series._poincare_core",

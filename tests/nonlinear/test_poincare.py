@@ -330,7 +330,7 @@ def test_symbol_spellings_are_equivalent():
 )
 def test_fourier_product_is_pointwise_product(a, b, tau):
     """The convolution product of trigonometric polynomials equals the product of their values (exact)."""
-    from symosc.nonlinear.series._fourier import ExactArith
+    from symosc.nonlinear.series._arith.trig import ExactArith
 
     ar = ExactArith()
 

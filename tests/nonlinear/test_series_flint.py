@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from symosc.nonlinear import limit_cycle
-from symosc.nonlinear.series import _fourier
+from symosc.nonlinear.series._arith import trig as _fourier
 
 x, v = sp.symbols("x v")
 

@@ -1,7 +1,8 @@
 """Input handling and the order-by-order recurrence of Poincaré's method (used by :mod:`.poincare`).
 
 The scaled problem ``y'' + y = eps g(y, w, eps)`` (generating amplitude 1) is solved on truncated Fourier series; see
-:mod:`symosc.nonlinear.series.poincare` for the method and :mod:`symosc.nonlinear.series._fourier` for the arithmetic.
+:mod:`symosc.nonlinear.series.poincare` for the method and :mod:`symosc.nonlinear.series._arith.trig` for the
+arithmetic.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from typing import Any
 import sympy as sp
 
 from ...errors import ModelError, ParameterError
-from ._fourier import ExactArith, Trig, _Arith
+from ._arith.trig import ExactArith, Trig, _Arith
 
 
 # ---------------------------------------------------------------------------------------------------------------

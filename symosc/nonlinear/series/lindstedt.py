@@ -22,7 +22,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
 from ...numeric import compile as _compile
-from ._fourier import ExactArith, RingArith, Trig, _Arith
+from ._arith.trig import ExactArith, RingArith, Trig, _Arith
 from ._series import EpsSeries, SeriesResult, to_sympy_number
 
 __all__ = ["LindstedtSeries", "lindstedt"]

@@ -8,8 +8,8 @@ whose secular (``cos tau``, ``sin tau``) terms must vanish.  Those two condition
 where the orbit crosses the half-line ``v = 0, x > 0``.
 
 Harmonics are truncated Fourier series with exact rational, binary fixed-point (``mpmath``) or float coefficients
-(see :mod:`symosc.nonlinear.series._fourier`): no symbolic trigonometry is involved, so the van der Pol series reaches
-order 48 exactly in about 0.2 s and order 200 in floating point in about a second.
+(see :mod:`symosc.nonlinear.series._arith.trig`): no symbolic trigonometry is involved, so the van der Pol series
+reaches order 48 exactly in about 0.2 s and order 200 in floating point in about a second.
 
 References: Bulgakov (1954) §§5.16–5.22; Andersen & Geer, SIAM J. Appl. Math. 42
 (1982) 678–693 (van der Pol to order 24); Nayfeh, *Perturbation Methods* (1973) §3.1.
@@ -33,7 +33,7 @@ from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ModelError, ParameterError
-from ._fourier import FloatArith, _fmpz_poly, from_number, make_arith
+from ._arith.trig import FloatArith, _fmpz_poly, from_number, make_arith
 from ._poincare_core import _poincare_raw, _polynomial_terms, _positive_roots, _RawSeries, amplitude_functions
 from ._series import EpsSeries, SeriesResult, to_sympy_number
 
@@ -449,7 +449,7 @@ def relaxed_exact_arith() -> Any:
     """The exact arithmetic with relaxed block products (python-flint installed), else None."""
     if not _fmpz_poly():
         return None
-    from ._laurent import LaurentArith
+    from ._arith.laurent import LaurentArith
 
     return LaurentArith()
 

@@ -30,7 +30,7 @@ from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ConvergenceError, ModelError, ParameterError
 from ...numeric import compile as _compile
-from ._fourier import FixedArith, Trig, _Arith, make_arith
+from ._arith.trig import FixedArith, Trig, _Arith, make_arith
 from ._ndof_exponents import CharacteristicExponentSeries
 from ._ndof_exponents import exponent_series as _exponent_series
 from ._poincare_core import _polynomial_terms, _trig_power_coefficients

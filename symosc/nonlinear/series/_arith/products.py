@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 if TYPE_CHECKING:
-    from ._fourier import Trig
+    from .trig import Trig
 
 
 def _object_array(values: list) -> np.ndarray:

@@ -35,7 +35,7 @@ from typing import Any
 import mpmath
 import numpy as np
 
-from ._fourier_products import (
+from .products import (
     _flint_dot,
     _flint_lincomb,
     _float_direct_dot,

@@ -28,7 +28,7 @@ from collections import defaultdict
 from fractions import Fraction
 from typing import Any
 
-from ._fourier import _Arith, _fmpz_poly
+from .trig import _Arith, _fmpz_poly
 
 #: blocks of fewer terms are multiplied pair by pair (measured: packing pays from 4 terms on)
 _BLOCK_MIN = 4
