@@ -71,7 +71,7 @@ def summary(obj: Any) -> dict[str, Any]:
     >>> s["class"], s["parameters"]
     ('symosc.mechanics.lagrange.LagrangianSystem', ['g', 'l1', 'm1'])
     >>> s["symbolic"]["mass_matrix"][:40]
-    'MutableDenseMatrix([[Add(Mul(Pow(Symbol('
+    "MutableDenseMatrix([[Mul(Pow(Symbol('l1'"
 
     """
     from . import __version__

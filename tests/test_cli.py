@@ -88,6 +88,10 @@ def test_run_writes_report_json_and_figure(tmp_path, capsys):
     assert sorted(p.name for p in out.iterdir()) == [
         ".symosc-output",
         "gribkov2015-ince-strutt.png",
+        "gribkov2015-motion-3.gif",  # the two time_response questions: animation and time series
+        "gribkov2015-motion-3.png",
+        "gribkov2015-motion-4.gif",
+        "gribkov2015-motion-4.png",
         "report.md",
         "results.json",
         "timings.json",

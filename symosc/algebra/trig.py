@@ -19,6 +19,7 @@ from typing import Any
 import sympy as sp
 
 from .._validate import validated
+from ..errors import ParameterError
 
 __all__ = ["trig_reduce", "trig_reduce_groups"]
 
@@ -172,6 +173,8 @@ def trig_reduce(expr: Any) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(trig_reduce)
     e = sp.sympify(expr)
+    if isinstance(e, sp.Basic) and e.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise ParameterError(f"trig_reduce(): expr must be finite, got {e} (nan or an infinity)")
     if not e.has(sp.sin, sp.cos):
         return e
     groups: dict[sp.Expr, list[sp.Expr]] = {}

@@ -145,19 +145,12 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
 
         Parameters
         ----------
-        values : mapping
-            Parameter values keyed by Symbol or name (checked as in :meth:`rhs`).
-        backend : {"auto", "c", "llvm", "numpy"}
-            As in :meth:`rhs`.
-
-        Parameters
-        ----------
         values : mapping of Symbol or str to float
             One scalar value for every parameter of the system (keys are symbols or their names); checked once, so
             missing, non-finite or wrongly signed values raise ParameterError.
-        backend : {"numpy", "c", "auto"}, optional
-            Where the solves run: "numpy" (compiled expressions, LAPACK), "c" (generated C), "auto" ("c" when a C
-            compiler is available); default "numpy".
+        backend : {"auto", "c", "llvm", "numpy"}, optional
+            As in :meth:`rhs`: "auto" (the default) takes "c" when a C compiler is available, else "llvm", else
+            "numpy".
 
         Returns
         -------

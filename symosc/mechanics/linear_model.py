@@ -449,19 +449,6 @@ class LinearModel(ModelEquality, SymPyPrintable):
 
         Parameters
         ----------
-        inputs : coordinates, force symbols, indices or matrix (n, m), optional
-            Where the inputs act (see :meth:`transfer_function`); default: a generalized force on every coordinate.
-        outputs : coordinates, indices or matrix (n, p), optional
-            The measured coordinates (default: all).
-        values : mapping
-            Numbers for every parameter (keyed by Symbol or name).
-        velocities : bool
-            Measure the rates of the outputs instead of the coordinates.
-        backend : {"auto", "control", "scipy"}
-            ``control.TransferFunction`` when python-control is installed (``"auto"``), else SciPy's.
-
-        Parameters
-        ----------
         inputs : coordinates, indices or array (n, m), optional
             Where the inputs act: a unit generalized force on each listed coordinate (given by Symbol, name or index;
             default every coordinate), or a force-distribution matrix ``E`` with one row per coordinate.

@@ -12,7 +12,7 @@ analytic Jacobian used when it switches to BDF), the integrator PyDy's ``System.
 from __future__ import annotations
 
 import time as _time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -66,7 +66,23 @@ class Geometry(SymPyPrintable):
     fixed: tuple = ()
 
     def __post_init__(self) -> None:
-        pts = {str(k): (sp.sympify(v[0]), sp.sympify(v[1])) for k, v in dict(self.points).items()}
+        if not isinstance(self.points, Mapping) or not self.points:
+            raise ParameterError(
+                f"Geometry(): points must be a dict of point name -> (horizontal, vertical), got {self.points!r}"
+            )
+        for key, value in self.points.items():
+            if isinstance(value, str | bytes) or not (isinstance(value, Sequence) and len(value) == 2):
+                raise ParameterError(
+                    f"Geometry(): point {key!r} must be a pair (horizontal, vertical) of expressions, got {value!r}"
+                )
+        for what in ("lines", "masses", "fixed"):
+            value = getattr(self, what)
+            if isinstance(value, str | bytes) or not isinstance(value, Sequence):
+                raise ParameterError(f"Geometry(): {what} must be a tuple of point names, got {value!r}")
+        for pair in self.lines:
+            if isinstance(pair, str | bytes) or not (isinstance(pair, Sequence) and len(pair) == 2):
+                raise ParameterError(f"Geometry(): each line must be a pair of point names, got {pair!r}")
+        pts = {str(k): (sp.sympify(v[0]), sp.sympify(v[1])) for k, v in self.points.items()}
         for pair in self.lines:
             for name in pair:
                 if name not in pts:

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from .._printing import SymPyPrintable
-from .._validate import check_int, check_positive
+from .._validate import check_finite_array, check_int, check_positive
 from ..errors import ParameterError
 
 __all__ = ["Animation", "animate_trajectory"]
@@ -67,6 +67,15 @@ class Animation(SymPyPrintable):
     """
 
     def __init__(self, figure: Any, draw: Any, times: np.ndarray, interval: float, dpi: int) -> None:
+        if not callable(getattr(figure, "savefig", None)):
+            raise ParameterError(f"Animation(): figure must be a matplotlib Figure, got {figure!r}")
+        if not callable(draw):
+            raise ParameterError(f"Animation(): draw must be a function of the frame index, got {draw!r}")
+        times = check_finite_array("times", times, ndim=1)
+        if times.size == 0:
+            raise ParameterError("Animation(): times must hold at least one frame time")
+        interval = check_positive("interval", interval)
+        dpi = check_int("dpi", dpi, minimum=1)
         self.figure, self._draw, self.times, self.interval = figure, draw, times, float(interval)
         self.frames = int(times.size)
         self.path: Path | None = None
@@ -252,6 +261,12 @@ def animate_trajectory(
     from matplotlib.collections import LineCollection
     from matplotlib.figure import Figure
 
+    from ..mechanics import Trajectory
+
+    if not isinstance(trajectory, Trajectory):
+        raise ParameterError(
+            f"animate_trajectory(): trajectory must be a Trajectory (LagrangianSystem.simulate), got {trajectory!r}"
+        )
     fps, speed = check_positive("fps", fps), check_positive("speed", speed)
     max_frames = check_int("max_frames", max_frames, minimum=2)
     trail = check_positive("trail", trail, allow_zero=True)

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validate import check_positive, validated
+from .._validate import check_choice, check_positive, validated
 
 __all__ = [
     "mathieu_explorer",
@@ -229,6 +229,7 @@ def pivot_explorer(
     """
     from ..models import gribkov_khokhlov_table1, n_link_pendulum
 
+    check_choice("links", links, ("point", "rigid"))
     if values is None:
         if n != 2 or links != "rigid":
             from ..errors import ParameterError
