@@ -275,7 +275,10 @@ FACTORIES: dict[str, Callable[[], Any]] = {
 __all__ = ["FACTORIES", "np"]
 
 
-# Arguments a plot method needs besides ``ax`` (keyed by class name).
+# Arguments a plot method needs besides ``ax`` (keyed by class name); and smaller sampling where the default
+# drawing is long and the same code draws fewer points (DPartition: root counts on an 8 x 8 grid instead of 60 x 60,
+# 401 boundary samples instead of 4001; tests/linear/test_dpartition.py checks the drawing itself).
 PLOT_ARGS: dict[str, dict[str, Any]] = {
     "LimitCycleSeries": {"eps": 0.3, "numeric": False},
+    "DPartition": {"grid": 8, "n_omega": 401, "hatch_every": 40},
 }

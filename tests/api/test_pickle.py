@@ -7,14 +7,14 @@ import pickle
 import pytest
 import sympy as sp
 
-from .public import example_instances, public_classes
+from .public import public_classes
 
 CLASSES = public_classes()
 
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
-def test_pickle_round_trip(cls):
-    obj = example_instances().get(cls)
+def test_pickle_round_trip(cls, examples):
+    obj = examples.get(cls)
     assert obj is not None, f"no documented example builds a {cls.__name__}"
     back = pickle.loads(pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL))
     assert type(back) is type(obj)

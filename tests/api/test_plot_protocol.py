@@ -13,7 +13,7 @@ import pytest
 
 from ..test_user_text import scan
 from .examples import PLOT_ARGS
-from .public import example_instances, public_classes
+from .public import public_classes
 from .test_plot_labels import overlapping_texts, unnamed_curves
 
 PLOTTING = [c for c in public_classes() if callable(getattr(c, "plot", None))]
@@ -37,8 +37,8 @@ def test_plot_signature(cls):
 
 
 @pytest.mark.parametrize("cls", PLOTTING, ids=lambda c: c.__name__)
-def test_plot_draws_on_given_axes_or_a_new_figure(cls):
-    obj = example_instances().get(cls)
+def test_plot_draws_on_given_axes_or_a_new_figure(cls, examples):
+    obj = examples.get(cls)
     assert obj is not None, f"no documented example builds a {cls.__name__}"
     kwargs = PLOT_ARGS.get(cls.__name__, {})
     plt.close("all")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from .public import example_instances, public_classes
+from .public import public_classes
 
 CLASSES = public_classes()
 
@@ -28,8 +28,8 @@ def _balanced(text: str) -> bool:
     return depth == 0
 
 
-def _instance(cls):
-    obj = example_instances().get(cls)
+def _instance(examples, cls):
+    obj = examples.get(cls)
     assert obj is not None, (
         f"no documented example builds a {cls.__name__}: add one to its docstring (or to tests/api/examples.py)"
     )
@@ -37,8 +37,8 @@ def _instance(cls):
 
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
-def test_latex_is_real_latex(cls):
-    obj = _instance(cls)
+def test_latex_is_real_latex(cls, examples):
+    obj = _instance(examples, cls)
     text = sp.latex(obj)
     assert text and not text.startswith(r"\mathtt{\text{"), text[:80]  # SymPy's fallback for unknown objects
     assert "$" not in text and _balanced(text), text[:200]
@@ -53,8 +53,8 @@ def _is_series(obj) -> bool:
 
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
-def test_str_and_pretty_hooks(cls):
-    obj = _instance(cls)
+def test_str_and_pretty_hooks(cls, examples):
+    obj = _instance(examples, cls)
     assert sp.sstr(obj) == repr(obj)
     pretty = [line.rstrip() for line in sp.pretty(obj, wrap_line=False).splitlines()]
     if _is_series(obj):  # series print their mathematics in 2-D, eps as epsilon
