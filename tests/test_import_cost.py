@@ -11,8 +11,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
-
 ROOT = Path(__file__).resolve().parents[1]
 #: never imported by ``import symosc.<subpackage>``
 HEAVY = ("scipy", "matplotlib", "pandas", "xarray", "dask", "distributed", "tqdm", "numba", "symengine", "control")
