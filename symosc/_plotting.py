@@ -13,18 +13,33 @@ from typing import Any
 from ._deprecation import warn_deprecated
 from .errors import ParameterError
 
-__all__ = ["label_curves", "new_axes", "outside_legend", "plot_method", "tex_name"]
+__all__ = ["label_curves", "new_axes", "outside_legend", "plot_method", "pyplot", "require_matplotlib", "tex_name"]
+
+MISSING_MATPLOTLIB = "drawing needs matplotlib, which is not installed: pip install 'symosc[plot]'"
+
+
+def require_matplotlib() -> Any:
+    """The ``matplotlib`` module; ``ImportError`` naming the ``plot`` extra when it is not installed."""
+    try:
+        import matplotlib
+    except ImportError as err:
+        raise ImportError(MISSING_MATPLOTLIB) from err
+    return matplotlib
+
+
+def pyplot() -> Any:
+    """``matplotlib.pyplot``, imported when something is drawn (``ImportError`` naming the extra otherwise)."""
+    require_matplotlib()
+    import matplotlib.pyplot as plt
+
+    return plt
 
 
 def new_axes(ax: Any = None, **subplots: Any) -> Any:
     """``ax`` itself, or the Axes of a new figure (``plt.subplots(**subplots)``) when ``ax`` is None."""
     if ax is not None:
         return ax
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as err:  # pragma: no cover - depends on the environment
-        raise ImportError("plotting needs matplotlib: pip install 'symosc[plot]'") from err
-    _, ax = plt.subplots(**subplots)
+    _, ax = pyplot().subplots(**subplots)
     return ax
 
 

@@ -112,7 +112,9 @@ class ErrorMap(SymPyPrintable):
         -------
         matplotlib Axes
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

@@ -102,7 +102,9 @@ def figure_axes(ax: Any):
     """Return ``ax`` or a new Axes (matplotlib imported here only)."""
     if ax is not None:
         return ax
-    import matplotlib.pyplot as plt
+    from .._plotting import pyplot
+
+    plt = pyplot()
 
     _, ax = plt.subplots()
     return ax

@@ -110,7 +110,9 @@ class ComplexModes(SymPyPrintable):
         ax : matplotlib Axes, optional
             Axes to draw on; a new figure when omitted.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

@@ -118,7 +118,9 @@ class MethodComparison(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.5, 4.5))

@@ -196,7 +196,9 @@ class FloquetResult(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots(figsize=(4.5, 4.5))

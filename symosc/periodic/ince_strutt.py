@@ -255,7 +255,9 @@ class InceStruttDiagram(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots(figsize=(8, 5), layout="constrained")
@@ -542,7 +544,9 @@ class ModifiedInceStruttDiagram(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots(figsize=(8, 5), layout="constrained")

@@ -481,7 +481,9 @@ class StabilityRegion(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from .._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots(figsize=(8, 4.5), layout="constrained")

@@ -354,7 +354,9 @@ class SceneResult(SymPyPrintable):
                     import matplotlib
 
                     matplotlib.use("Agg", force=False)
-                    import matplotlib.pyplot as plt
+                    from .._plotting import pyplot
+
+                    plt = pyplot()
                 except ImportError:
                     plt = None
                     notes.append("figures skipped: matplotlib is not installed (pip install 'symosc[plot]')")

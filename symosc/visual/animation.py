@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import require_matplotlib
 from .._printing import SymPyPrintable
 from .._validate import check_finite_array, check_int, check_positive
 from ..errors import ParameterError
@@ -257,6 +258,7 @@ def animate_trajectory(
     -------
     Animation
     """
+    require_matplotlib()
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.collections import LineCollection
     from matplotlib.figure import Figure

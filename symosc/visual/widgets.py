@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from .._plotting import require_matplotlib
 from .._validate import check_choice, check_positive, validated
 
 __all__ = [
@@ -47,6 +48,7 @@ def _png(fig: Any) -> bytes:
 
 def _figure(width: float = 6.0, height: float = 3.6, right: float = 0.97) -> Any:
     """An Agg figure with fixed margins (a layout engine would cost most of each redraw)."""
+    require_matplotlib()
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 

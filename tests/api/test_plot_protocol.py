@@ -4,6 +4,10 @@ new figure; the Axes is returned; figure text carries no internal references."""
 from __future__ import annotations
 
 import inspect
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
 
 import matplotlib
 
@@ -69,3 +73,51 @@ def test_positional_axes_still_works_with_a_warning():
     with pytest.warns(DeprecationWarning, match="ax="):
         assert d.plot(ax) is ax
     plt.close("all")
+
+
+def test_without_matplotlib_plotting_names_the_extra():
+    """In an interpreter where matplotlib cannot be imported, a plot method, an animation and the scene writer say
+    what to install (the ``plot`` extra) instead of failing with a bare ModuleNotFoundError."""
+    code = textwrap.dedent(
+        """
+        import sys, tempfile
+        sys.modules["matplotlib"] = None  # what an environment without matplotlib looks like to an import
+        import sympy as sp
+        from symosc.models import n_link_pendulum
+        from symosc.periodic import ince_strutt_diagram
+        from symosc.scene import loads
+        messages = []
+        for call in (
+            lambda: ince_strutt_diagram(n_max=1, q_max=1.0, num=5).plot(),
+            lambda: n_link_pendulum(1).simulate(1.0, [0.1, 0.0], {"m1": 1.0, "l1": 1.0, "g": 9.81}).animate(),
+        ):
+            try:
+                call()
+                messages.append("no error")
+            except ImportError as exc:
+                messages.append(str(exc))
+        res = loads('[system]\\nmodel = "mathieu"\\n[[questions]]\\nkind = "ince_strutt"\\n').run()
+        with tempfile.TemporaryDirectory() as d:
+            res.write(d + "/out")
+            messages.append(open(d + "/out/report.md").read())
+        print("\\n=====\\n".join(messages))
+        """
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=False)
+    assert out.returncode == 0, out.stderr[-3000:]
+    first, second, report = out.stdout.split("\n=====\n")[-3:]
+    first = first.splitlines()[-1]  # after what SceneResult.write printed
+    assert first.startswith("drawing needs matplotlib") and "symosc[plot]" in first
+    assert second.startswith("drawing needs matplotlib") and "symosc[plot]" in second
+    assert "figures skipped: matplotlib is not installed" in report and "symosc[plot]" in report
+
+
+def test_every_drawing_imports_matplotlib_through_the_helper():
+    """pyplot is imported only by symosc._plotting (which names the extra when it is missing)."""
+    root = Path(__file__).resolve().parents[2] / "symosc"
+    offenders = [
+        str(p.relative_to(root))
+        for p in root.rglob("*.py")
+        if p.name != "_plotting.py" and "import matplotlib.pyplot" in p.read_text(encoding="utf-8")
+    ]
+    assert offenders == []

@@ -98,7 +98,9 @@ class AnalyticContinuation(SymPyPrintable):
         matplotlib Axes
             The axes drawn on.
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
         from matplotlib.patches import Circle
 
         if ax is None:

@@ -190,7 +190,9 @@ class ModalEstimate(SymPyPrintable):
         -------
         matplotlib Axes
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

@@ -591,7 +591,9 @@ class ErrorVsNoise(SymPyPrintable):
         -------
         matplotlib Axes
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

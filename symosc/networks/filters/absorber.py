@@ -277,7 +277,9 @@ class Absorber(SymPyPrintable):
         ax : matplotlib Axes, optional
             Axes to draw on; a new figure when omitted.
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

@@ -88,7 +88,9 @@ class FilterSection(SymPyPrintable):
         ax : matplotlib Axes, optional
             Axes to draw on; a new figure when omitted.
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
         import numpy as np
 
         if ax is None:

@@ -287,7 +287,9 @@ class HarmonicLinearization(SymPyPrintable):
             Largest amplitude drawn, a positive number (default: 1.5 times the largest cycle amplitude, at least
             1.5).
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

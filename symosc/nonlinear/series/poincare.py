@@ -241,7 +241,9 @@ class LimitCycleSeries(SeriesResult, SymPyPrintable):
             Whether to overlay the numerically integrated cycle (:func:`~symosc.nonlinear.numeric_orbit`); default
             True.
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()

@@ -143,7 +143,9 @@ class CoulombMotion(SymPyPrintable):
         n : int, optional
             Number of time samples from 0 to 1.1 times the stop time, an integer >= 2 (default 2000).
         """
-        import matplotlib.pyplot as plt
+        from ..._plotting import pyplot
+
+        plt = pyplot()
 
         if ax is None:
             _, ax = plt.subplots()
