@@ -263,9 +263,7 @@ def animate_trajectory(
     from matplotlib.collections import LineCollection
     from matplotlib.figure import Figure
 
-    from ..mechanics import Trajectory
-
-    if not isinstance(trajectory, Trajectory):
+    if not all(hasattr(trajectory, a) for a in ("t", "states", "coordinates", "values", "geometry")):
         raise ParameterError(
             f"animate_trajectory(): trajectory must be a Trajectory (LagrangianSystem.simulate), got {trajectory!r}"
         )

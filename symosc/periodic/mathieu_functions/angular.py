@@ -409,8 +409,8 @@ def mathieu_ce_prime(n: int, q: Any, x: Any, *, tol: float = _DEFAULT_TOL) -> An
 
     Examples
     --------
-    >>> round(mathieu_ce_prime(1, 0.0, 0.0), 15)
-    -0.0
+    >>> abs(mathieu_ce_prime(1, 0.0, 0.0)) < 1e-15       # ce_1 = cos x at q = 0: its slope vanishes at x = 0
+    True
     >>> round(mathieu_ce_prime(0, 1.0, 0.5), 10)
     0.4481542814
     """
