@@ -12,6 +12,7 @@ tuple concatenation); SymPy expressions are built once per distinct product, whe
 
 from __future__ import annotations
 
+import functools
 import math
 from collections import defaultdict
 from collections.abc import Iterable, Sequence
@@ -275,8 +276,25 @@ def _d_factor(f: sp.Expr, v: sp.Symbol) -> sp.Expr:
     if isinstance(f, (sp.sin, sp.cos)):
         u = f.args[0]
         du = sp.S.One if u == v else _d_linear(u, v)
-        return (sp.cos(u) if isinstance(f, sp.sin) else -sp.sin(u)) * du
+        return _partner(f, u) * du
     return f.diff(v)
+
+
+@functools.lru_cache(maxsize=4096)
+def _partner(f: sp.Expr, u: sp.Expr) -> sp.Expr:
+    """``cos(u)`` for ``f = sin(u)``, ``-sin(u)`` for ``f = cos(u)``.
+
+    When ``u`` is a symbol or a sum of rational multiples of symbols (``phi1 - phi2``), the function is built without
+    SymPy's evaluation: ``f`` already holds ``u`` in the canonical form both functions share (the sign of an
+    argument is normalised the same way for sin and cos, and such a ``u`` has no multiple of pi to shift), and the
+    evaluation (``could_extract_minus_sign`` and the search for multiples of pi) is most of the cost of the
+    derivatives of a long chain."""
+    plain = u.is_Symbol or (
+        u.is_Add and all(a.as_coeff_Mul()[1].is_Symbol and a.as_coeff_Mul()[0].is_Rational for a in u.args)
+    )
+    func = sp.cos if isinstance(f, sp.sin) else sp.sin
+    value = func(u, evaluate=False) if plain else func(u)
+    return value if func is sp.cos else -value
 
 
 def _d_linear(u: sp.Expr, v: sp.Symbol) -> sp.Expr:
