@@ -12,7 +12,6 @@ tuple concatenation); SymPy expressions are built once per distinct product, whe
 
 from __future__ import annotations
 
-import functools
 import math
 from collections import defaultdict
 from collections.abc import Iterable, Sequence
@@ -280,7 +279,6 @@ def _d_factor(f: sp.Expr, v: sp.Symbol) -> sp.Expr:
     return f.diff(v)
 
 
-@functools.lru_cache(maxsize=4096)
 def _partner(f: sp.Expr, u: sp.Expr) -> sp.Expr:
     """``cos(u)`` for ``f = sin(u)``, ``-sin(u)`` for ``f = cos(u)``.
 
