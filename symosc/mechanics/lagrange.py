@@ -22,6 +22,7 @@ from sympy.core.function import AppliedUndef
 
 from .._equality import ModelEquality
 from .._printing import SymPyPrintable
+from .._trig import trig_reduce_groups
 from ..errors import ModelError, ParameterError
 from ..symbols import ddot, dot, sort_symbols, t
 from . import _constraints, _terms
@@ -326,8 +327,6 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         dep = _terms._Depends(self._dependent)
         out = {k: _terms.group_terms(_terms.expand_terms(v, dep), dep) for k, v in parts.items()}
         if self._simplify:  # sin**2 + cos**2 and angle-difference pairs, found by hashing (presentation-ready M, F)
-            from .._trig import trig_reduce_groups
-
             out = {
                 k: [_terms.product_group(d, c) for d, c in trig_reduce_groups([(g.dep, g.coeff) for g in groups])]
                 for k, groups in out.items()
