@@ -17,6 +17,11 @@ from .symbols import ddot, dot, t
 
 __version__ = "0.1.0"
 
+# ``symosc._lazy`` moved into ``symosc.numeric`` (results pickled before the move name the old path)
+from ._deprecation import moved_modules as _moved_modules
+
+_moved_modules(__name__, {"_lazy": "numeric._lazy"})
+
 __all__ = [
     "ConvergenceError",
     "IdentificationError",

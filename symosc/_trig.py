@@ -143,3 +143,7 @@ def trig_reduce_groups(groups: list) -> list:
                     changed = True
                     break
     return [(d, c) for d, c in table.items() if c != 0]
+
+
+#: :func:`trig_reduce_groups` without the argument checks, for the Lagrange engine (its groups are built internally)
+trig_reduce_groups_unchecked = trig_reduce_groups.__wrapped__

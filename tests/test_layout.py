@@ -480,3 +480,23 @@ def test_the_circle_check_can_fail():
     found = _cycles(graph)
     assert sorted(map(sorted, found)) == [["p._c", "p._d"], ["p.a", "p.b"]]
     assert [_private_core(c) for c in sorted(found, key=sorted)] == [True, False]
+
+
+def test_a_function_pickled_under_the_old_lazy_module_path_loads():
+    """``symosc._lazy`` moved into ``symosc.numeric``: a LazyFunction pickled before names the old module, and
+    loading it finds the class (with a deprecation warning)."""
+    import pickle
+
+    import sympy as sp
+
+    from symosc.numeric._lazy import LazyFunction
+
+    x = sp.Symbol("x")
+    blob = pickle.dumps(LazyFunction(3 * x, [x]), protocol=2).replace(b"symosc.numeric._lazy", b"symosc._lazy")
+    assert b"symosc._lazy" in blob
+    sys.modules.pop("symosc._lazy", None)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        back = pickle.loads(blob)
+    assert type(back) is LazyFunction and float(back(2.0)) == 6.0
+    assert any(issubclass(w.category, DeprecationWarning) for w in caught)

@@ -22,7 +22,7 @@ from sympy.core.function import AppliedUndef
 
 from .._equality import ModelEquality
 from .._printing import SymPyPrintable
-from .._trig import trig_reduce_groups
+from .._trig import trig_reduce_groups_unchecked
 from ..errors import ModelError, ParameterError
 from ..symbols import ddot, dot, sort_symbols, t
 from . import _constraints, _terms
@@ -327,8 +327,9 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         dep = _terms._Depends(self._dependent)
         out = {k: _terms.group_terms(_terms.expand_terms(v, dep), dep) for k, v in parts.items()}
         if self._simplify:  # sin**2 + cos**2 and angle-difference pairs, found by hashing (presentation-ready M, F)
+            reduce = trig_reduce_groups_unchecked
             out = {
-                k: [_terms.product_group(d, c) for d, c in trig_reduce_groups([(g.dep, g.coeff) for g in groups])]
+                k: [_terms.product_group(d, c) for d, c in reduce([(g.dep, g.coeff) for g in groups])]
                 for k, groups in out.items()
             }
         return out

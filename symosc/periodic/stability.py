@@ -26,12 +26,12 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .._lazy import LazyFunction
 from .._plotting import plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
 from ..errors import ConvergenceError, ModelError, ParameterError
 from ..numeric import compile, resolve
+from ..numeric._lazy import LazyFunction
 from ..symbols import sort_symbols, t
 from .floquet import monodromy
 from .ince_strutt import ModifiedInceStruttDiagram, _as_float_array, modified_ince_strutt, series_boundary

@@ -26,11 +26,11 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..._lazy import LazyFunction
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
 from ..._validate import validated
 from ...errors import ConvergenceError, ModelError, ParameterError
+from ...numeric._lazy import LazyFunction
 
 __all__ = [
     "CoulombMotion",

@@ -34,7 +34,7 @@ class LazyFunction:
 
     def _compiled(self) -> Any:
         if self._raw is None:
-            from .numeric import compile as _compile
+            from . import compile as _compile
 
             kw = {"name": self.name} if self.name else {}
             self._raw = _compile(self.expr, list(self.args), check=False, **kw).raw
