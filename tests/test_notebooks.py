@@ -36,6 +36,18 @@ def test_notebook_executes(path, monkeypatch):
     monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
     monkeypatch.setenv("MPLBACKEND", "Agg")
     nb = nbformat.read(path, as_version=4)
-    NotebookClient(nb, timeout=240, kernel_name="python3", resources={"metadata": {"path": str(ROOT)}}).execute()
+    # 60 s per cell is ten times the slowest cell.  interrupt_on_timeout also bounds nbclient's wait for the kernel's
+    # first reply (a lost kernel_info reply once held a run for 240 s, the old timeout, before it went on);
+    # error_on_timeout makes a cell that timed out fail the test (CellExecutionError), as a plain timeout would.
+    client = NotebookClient(
+        nb,
+        timeout=60,
+        interrupt_on_timeout=True,
+        error_on_timeout={"ename": "CellTimeoutError", "evalue": "the cell ran longer than 60 s", "traceback": []},
+        kernel_name="python3",
+        resources={"metadata": {"path": str(ROOT)}},
+    )
+    client.execute()
+    assert not [o for c in _code_cells(nb) for o in c.outputs if o.get("output_type") == "error"], path.name
     figures = [o for c in _code_cells(nb) for o in c.outputs if "image/png" in o.get("data", {})]
     assert figures, f"{path.name} drew no figure"
