@@ -13,7 +13,7 @@ given as ``dynamicsymbols`` are converted on entry.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from functools import cached_property
 from typing import Any
 
@@ -403,16 +403,18 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         dep = self._dependent
         velocity = {v: i for i, v in enumerate(qd)}
         acc: list[dict] = [{} for _ in range(n)]
+        depends = _terms._Depends(dep)  # memoized: free_symbols is recomputed by SymPy on every call
+        depends_or_rate = _terms._Depends(dep | set(qd))
 
         def file(k: int, expr: sp.Expr, mono: tuple, scale: int) -> None:
-            for x in _distribute(expr, dep | set(qd)):
+            for x in _distribute(expr, depends_or_rate):
                 num, rest = x.as_coeff_Mul()
                 d, c, m = [], [], list(mono)
                 for f in sp.Mul.make_args(rest):
                     base, exp = (f.base, f.exp) if f.is_Pow and f.exp.is_Integer and f.exp > 0 else (f, 1)
                     if base in velocity:
                         m += [velocity[base]] * int(exp)
-                    elif f.free_symbols & dep:
+                    elif depends(f):
                         d.append(f)
                     else:
                         c.append(f)
@@ -759,9 +761,9 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         return HamiltonianSystem.from_lagrangian(self)
 
 
-def _distribute(expr: sp.Expr, dep: set) -> list[sp.Expr]:
-    """The additive terms of ``expr`` with every product distributed over its sums that contain ``dep`` symbols
-    (sums of constants are kept whole); no other rewriting."""
+def _distribute(expr: sp.Expr, depends: Callable[[sp.Expr], bool]) -> list[sp.Expr]:
+    """The additive terms of ``expr`` with every product distributed over its sums for which ``depends`` holds (sums
+    of constants are kept whole); no other rewriting."""
     out: list[sp.Expr] = []
     for term in sp.Add.make_args(expr):
         if not term.is_Mul:
@@ -769,8 +771,8 @@ def _distribute(expr: sp.Expr, dep: set) -> list[sp.Expr]:
             continue
         parts: list[list[sp.Expr]] = [[]]
         for f in term.args:
-            if f.is_Add and f.free_symbols & dep:
-                inner = [x for a in f.args for x in _distribute(a, dep)]
+            if f.is_Add and depends(f):
+                inner = [x for a in f.args for x in _distribute(a, depends)]
                 parts = [[*p, x] for p in parts for x in inner]
             else:
                 for p in parts:
