@@ -1,4 +1,4 @@
-"""Frequency estimation in white noise vs the Cramér–Rao lower bound (issue 6 target).
+"""Frequency estimation in white noise vs the Cramér–Rao lower bound (target: RMSE within 2x the bound).
 
 A 3-mode damped signal at the dissertation's frequencies (Belyakov 2005, Table 3: 14.04726, 16.39794, 27.35160
 rad/s), sampled at omega_d / omega_max = 4 (Belyakov's rule 43), N = 256 samples, with white Gaussian noise at

@@ -1,7 +1,7 @@
 """Accuracy of symosc.algebra.matrix_function on wide spectra against SciPy (logm, sqrtm, sinm, expm).
 
 Reference: the same float matrix diagonalised in 50-digit mpmath.  Prints the relative Frobenius errors of both
-and their ratio, for the quoted cases of issue 16 and random matrices with spectra spanning 1e-6..1e6.
+and their ratio, for the quoted cases and random matrices with spectra spanning 1e-6..1e6.
 """
 
 from __future__ import annotations

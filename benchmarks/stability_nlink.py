@@ -1,4 +1,4 @@
-"""Benchmark (b) of issue 3: stability region of inverted N-link pendulums, N = 2..10.
+"""Stability region of inverted N-link pendulums, N = 2..10.
 
 Modified Ince–Strutt diagram (two Mathieu curves, Gribkov & Khokhlov 2015) versus the brute-force reference a
 user would otherwise write: Floquet multipliers of the full coupled 2N-dimensional system (monodromy matrix by

@@ -165,7 +165,7 @@ def _near_jordan(delta: float, seed: int) -> np.ndarray:
 
 @pytest.mark.parametrize("delta", [1e-4, 1e-8, 1e-12])
 def test_near_repeated_roots_target(delta):
-    """Issue 4 target: eigenvalue gaps δ = 1e-4, 1e-8, 1e-12 (float entries): relative error <= 1e-10 against a
+    """Target: eigenvalue gaps δ = 1e-4, 1e-8, 1e-12 (float entries): relative error <= 1e-10 against a
     50-digit mpmath expm of the same float matrix (research report §5 item 1)."""
     for seed in (0, 1):
         A = _near_jordan(delta, seed)

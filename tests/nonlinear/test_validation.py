@@ -1,4 +1,4 @@
-"""Series against numerically integrated limit cycles (issue 5 targets; report part 2 §3 item 10 and §5 items 1, 5)."""
+"""Series against numerically integrated limit cycles (the accuracy targets of the series methods)."""
 
 from __future__ import annotations
 

@@ -100,7 +100,7 @@ def _gramian(u, h):
 
 
 def test_random_hurwitz_degrees_1_to_8_vs_quadrature():
-    """Issue 4 target: integral_square matches independent values to 1e-10 for random Hurwitz denominators of
+    """Target: integral_square matches independent values to 1e-10 for random Hurwitz denominators of
     degree 1..8 (float coefficients): the controllability Gramian for every degree, and numeric quadrature of
     x(t)^2 (mpmath, 30 digits) for degree 8.  (The Gramian agrees with the quadrature to 2e-13 at every degree;
     quadrature at each degree made this test ten times longer.)"""

@@ -105,7 +105,7 @@ def test_value_near_zero_at_large_q_is_absolutely_accurate(kind, n, q):
 
 @pytest.mark.parametrize(("kind", "q"), [("a", 1.0), ("b", 1.0), ("a", 1e4), ("b", -1e4)])
 def test_order_100(kind, q):
-    """Orders up to at least 100 (issue 3)."""
+    """Orders up to at least 100."""
     ref = reference_value(kind, 100, q, dps=30)
     f = mathieu_a if kind == "a" else mathieu_b
     assert rel_err(f(100, q), ref) <= 1e-13
