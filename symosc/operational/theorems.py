@@ -62,7 +62,7 @@ def shift(image, p: sp.Symbol, lam) -> sp.Expr:
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
     lam = check_expression(lam, "lam")
-    return sp.cancel(p / (p + lam) * sp.sympify(image).subs(p, p + lam))
+    return sp.cancel(p / (p + lam) * image.subs(p, p + lam))
 
 
 @validated
@@ -88,10 +88,9 @@ def delay(image, p: sp.Symbol, tau) -> sp.Expr:
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
     tau = check_expression(tau, "tau")
-    tau = sp.sympify(tau)
     if tau.is_negative:
         raise ParameterError(f"delay tau must be >= 0, got {tau}; for an advance use advance()")
-    return sp.exp(-p * tau) * sp.sympify(image)
+    return sp.exp(-p * tau) * image
 
 
 @validated
@@ -122,12 +121,11 @@ def advance(image, p: sp.Symbol, tau, head) -> sp.Expr:
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
     tau = check_expression(tau, "tau")
-    tau = sp.sympify(tau)
     if tau.is_negative:
         raise ParameterError(f"advance tau must be >= 0, got {tau}")
     if isinstance(head, tuple):
         head = _head_image(*head, p, tau)
-    return sp.exp(p * tau) * (sp.sympify(image) - head)
+    return sp.exp(p * tau) * (image - head)
 
 
 @validated
@@ -153,10 +151,9 @@ def finite_sum(image, p: sp.Symbol, tau) -> sp.Expr:
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
     tau = check_expression(tau, "tau")
-    tau = sp.sympify(tau)
     if tau.is_positive is False:
         raise ParameterError(f"finite_sum needs tau > 0, got {tau}")
-    return sp.sympify(image) / (sp.exp(p * tau) - 1)
+    return image / (sp.exp(p * tau) - 1)
 
 
 @validated
@@ -187,12 +184,11 @@ def finite_difference(image, p: sp.Symbol, tau, head) -> sp.Expr:
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
     tau = check_expression(tau, "tau")
-    tau = sp.sympify(tau)
     if tau.is_positive is False:
         raise ParameterError(f"finite_difference needs tau > 0, got {tau}")
     if isinstance(head, tuple):
         head = _head_image(*head, p, tau)
-    return (sp.exp(p * tau) - 1) * sp.sympify(image) - sp.exp(p * tau) * head
+    return (sp.exp(p * tau) - 1) * image - sp.exp(p * tau) * head
 
 
 def _heads(p, tau, m: int, heads, original, transform, what: str) -> list[sp.Expr]:
@@ -264,7 +260,7 @@ def multiple_advance(image, p: sp.Symbol, tau, m: int, heads: Sequence | None = 
     if tau.is_negative:
         raise ParameterError(f"multiple_advance needs tau >= 0, got {tau}")
     alphas = _heads(p, tau, m, heads, original, lambda x, t, j: x.subs(t, t + j * tau), "multiple_advance")
-    return sp.exp(p * m * tau) * sp.sympify(image) - sp.Add(*[sp.exp(p * (m - j) * tau) * alphas[j] for j in range(m)])
+    return sp.exp(p * m * tau) * image - sp.Add(*[sp.exp(p * (m - j) * tau) * alphas[j] for j in range(m)])
 
 
 @validated
@@ -312,7 +308,7 @@ def higher_difference(image, p: sp.Symbol, tau, m: int, heads: Sequence | None =
 
     betas = _heads(p, tau, m, heads, original, delta_power, "higher_difference")
     g = sp.exp(p * tau)
-    return (g - 1) ** m * sp.sympify(image) - g * sp.Add(*[(g - 1) ** (m - j - 1) * betas[j] for j in range(m)])
+    return (g - 1) ** m * image - g * sp.Add(*[(g - 1) ** (m - j - 1) * betas[j] for j in range(m)])
 
 
 @validated
@@ -346,7 +342,7 @@ def differentiate_parameter(image, s: sp.Symbol, n: int = 1) -> sp.Expr:
         raise ParameterError(f"the parameter must be a SymPy Symbol, got {s!r}")
     if int(n) != n or n < 0:
         raise ParameterError(f"n (the derivative order) must be an integer >= 0, got {n}")
-    return sp.diff(sp.sympify(image), s, int(n))
+    return sp.diff(image, s, int(n))
 
 
 @validated
@@ -378,8 +374,8 @@ def integrate_parameter(image, s: sp.Symbol, s0, s1=None) -> sp.Expr:
     upper = s if s1 is None else sp.sympify(s1)
     if upper == s:
         u = sp.Dummy(s.name)
-        return sp.integrate(sp.sympify(image).subs(s, u), (u, s0, s))
-    return sp.integrate(sp.sympify(image), (s, s0, upper))
+        return sp.integrate(image.subs(s, u), (u, s0, s))
+    return sp.integrate(image, (s, s0, upper))
 
 
 @validated
@@ -408,7 +404,7 @@ def similarity(image, p: sp.Symbol, a) -> sp.Expr:
     a = sp.sympify(a)
     if a.is_positive is False:
         raise ParameterError(f"similarity needs a > 0, got {a}")
-    return sp.sympify(image).subs(p, p / a)
+    return image.subs(p, p / a)
 
 
 @validated
@@ -445,7 +441,7 @@ def differentiate_original(image, p: sp.Symbol, initial: Sequence = (), n: int |
     if len(initial) > m:
         raise ParameterError(f"{len(initial)} initial values given for a derivative of order {m}")
     init = list(initial) + [0] * (m - len(initial))
-    return p**m * sp.sympify(image) - sp.Add(*[p ** (m - k) * init[k] for k in range(m)])
+    return p**m * image - sp.Add(*[p ** (m - k) * init[k] for k in range(m)])
 
 
 @validated
@@ -478,7 +474,7 @@ def integrate_original(image, p: sp.Symbol, times: int = 1, constant=0) -> sp.Ex
         raise ParameterError("times must be >= 1")
     if constant != 0 and times != 1:
         raise ParameterError("an integration constant is supported for a single integration only")
-    return sp.sympify(image) / p**times + constant
+    return image / p**times + constant
 
 
 @validated
@@ -506,7 +502,7 @@ def differentiate_image(image, p: sp.Symbol, n: int = 1) -> sp.Expr:
     p = check_symbol(p, "p")
     if n < 0:
         raise ParameterError("n (the derivative order) must be >= 0")
-    return sp.cancel((-1) ** n * p * sp.diff(sp.sympify(image) / p, p, n))
+    return sp.cancel((-1) ** n * p * sp.diff(image / p, p, n))
 
 
 @validated
@@ -593,7 +589,7 @@ def initial_value(image, p: sp.Symbol) -> sp.Expr:
     """
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
-    value = sp.limit(sp.sympify(image), p, sp.oo)
+    value = sp.limit(image, p, sp.oo)
     if value.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(value, sp.AccumBounds):
         raise ModelError(f"X(p) has no finite limit at p -> oo ({value}): the original is not a function at t = 0+")
     return value
@@ -634,7 +630,7 @@ def final_value(image, p: sp.Symbol) -> sp.Expr:
     """
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
-    image = sp.sympify(image)
+    image = image
     bad = []
     for root, mult in _poles_checked(image / p, p, "final_value"):
         re = sp.re(sp.N(root)) if root.is_number else sp.re(root)
@@ -675,7 +671,7 @@ def integral_to_infinity(image, p: sp.Symbol) -> sp.Expr:
     """
     image = check_expression(image, "image")
     p = check_symbol(p, "p")
-    image = sp.sympify(image)
+    image = image
     for root, _ in _poles_checked(image / p, p, "integral_to_infinity"):
         re = sp.re(sp.N(root)) if root.is_number else sp.re(root)
         if not re.is_negative:
