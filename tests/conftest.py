@@ -8,7 +8,8 @@ it (a developer's run) each run draws new examples, so the properties keep being
 
 The tests marked ``slow`` come first: pytest-xdist deals the first quarter of the tests to the workers in turn and
 the rest to whichever worker is free, so long tests at the front run side by side from the start instead of leaving
-one worker alone at the end of the run.
+one worker alone at the end of the run.  The tests marked ``browser`` come last: .ci/run installs Chromium while the
+other tests run.
 """
 
 import os
@@ -21,5 +22,7 @@ settings.load_profile("ci" if os.environ.get("CI") else "explore")
 
 
 def pytest_collection_modifyitems(config, items):
-    """Tests marked ``slow`` first; the order is otherwise the collection order."""
-    items.sort(key=lambda item: item.get_closest_marker("slow") is None)
+    """Tests marked ``slow`` first and ``browser`` last; the order is otherwise the collection order."""
+    items.sort(
+        key=lambda item: 0 if item.get_closest_marker("slow") else 2 if item.get_closest_marker("browser") else 1
+    )
