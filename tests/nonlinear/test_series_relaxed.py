@@ -16,7 +16,7 @@ import sympy as sp
 from symosc.nonlinear import limit_cycle
 from symosc.nonlinear.series import poincare
 from symosc.nonlinear.series._arith import trig as _fourier
-from symosc.nonlinear.series._arith.laurent import LaurentArith
+from symosc.nonlinear.series._arith.laurent import LaurentArith, block_products, pair_product
 
 pytest.importorskip("flint", reason="the relaxed exact engine runs on python-flint (the 'exact' extra)")
 
@@ -114,6 +114,50 @@ def test_relaxed_cauchy_equals_pairwise_fraction_sums(pattern):
                 expected_sq[key] = expected_sq.get(key, 0) + val
         assert _from_half(ar, prod(m)) == {k: val for k, val in expected.items() if val}, m
         assert _from_half(ar, square(m)) == {k: val for k, val in expected_sq.items() if val}, m
+
+
+@pytest.mark.parametrize("pattern", ["general", "odd pure alternating", "mixed parity sides"])
+@pytest.mark.parametrize("size", [4, 5, 8])
+@pytest.mark.parametrize("cut", [None, 1, 3])
+@pytest.mark.parametrize("square", [False, True])
+def test_block_products_equal_fraction_sums(pattern, size, cut, square):
+    """One block product (terms packed half a product apart and unfolded; a square packed once; ``count`` cut below
+    ``2 size - 1``) against the pairs summed with Fractions; blocks of both length parities."""
+    rng = random.Random(f"{pattern}{size}{cut}{square}")
+    i0, j0 = 2 * size + 1, size
+
+    def term(k, side):
+        if pattern == "general":
+            return _random_series(rng, 1 + (k * 7) % 6, None, None)
+        if pattern == "odd pure alternating":
+            return _random_series(rng, 2 * k + 1, 1, "c" if k % 2 == 0 else "s")
+        return _random_series(rng, 2 + k % 4, side, None)
+
+    A = [term(i0 + r, 1) for r in range(size)]
+    B = A if square else [term(j0 + r, 0) for r in range(size)]
+    first = (i0, i0) if square else (i0, j0)
+    count = 2 * size - 1 if cut is None else cut
+    ar = LaurentArith()
+    HA = [_to_half(ar, t) for t in A]
+    HB = HA if square else [_to_half(ar, t) for t in B]
+    got = block_products(ar, HA[:count], HB[:count], count, first)
+    for t in range(count):
+        expected: dict = {}
+        for i in range(max(0, t - size + 1), min(t, size - 1) + 1):
+            for key, val in _product(A[i], B[t - i]).items():
+                expected[key] = expected.get(key, 0) + val
+        assert _from_half(ar, ar._sum([(got[t], 1)])) == {k: val for k, val in expected.items() if val}, t
+
+
+@pytest.mark.parametrize("short_top", [11, 13, 15, 31])
+def test_pair_product_of_a_short_and_a_long_series(short_top):
+    """A short factor of 6..16 coefficients (multiplied in pieces) against one of large coefficients."""
+    rng = random.Random(short_top)
+    ar = LaurentArith()
+    a = _random_series(rng, short_top, 1, "c")
+    b = {key: val * 10**300 / 7**200 for key, val in _random_series(rng, 81, 1, "s").items()}
+    got = ar._sum([(pair_product(ar, _to_half(ar, a), _to_half(ar, b)), 1)])
+    assert _from_half(ar, got) == _product(a, b)
 
 
 @pytest.fixture

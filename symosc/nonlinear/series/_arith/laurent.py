@@ -19,6 +19,13 @@ into a single ``fmpz_poly``) formed when its last term becomes known, its result
 contribute to.  The terms ``a_0 b_m + a_m b_0`` of the current order are formed directly (the recurrence still
 corrects the newest terms).  Blocks are multiplied as one product only from four terms on; below that the pairs
 are cheaper.
+
+What keeps the constant small: in a block product the terms are packed half as far apart as their products are
+long, the half ``n < 0`` of each product overlapping the half ``n > 0`` of the one before, and recovered from the
+evenness or oddness in ``n`` (:func:`_unfold`); a square block is packed once and squared; a block cut by the
+truncation order packs only the terms that reach it; a short factor (``x_1 .. x_3`` against ``x_m``) is multiplied in
+pieces small enough for FLINT's coefficient-by-coefficient product (:func:`_mul`); and the pending terms of an order
+are summed on increasing denominators, each multiplier the small ratio of two consecutive ones (:meth:`_sum`).
 """
 
 from __future__ import annotations
@@ -123,21 +130,45 @@ class LaurentArith(_Arith):
 
     # --- linear operations -----------------------------------------------------------------------------------------
     def _sum(self, terms: list[tuple[Half, int]]) -> Half:
-        """``sum f * t`` over ``(t, f)`` (integer ``f``) on one common denominator, reduced once."""
+        """``sum f * t`` over ``(t, f)`` (integer ``f``) on one common denominator, reduced once.
+
+        Terms of one denominator are added first; the groups are then taken by increasing denominator, the running
+        sum brought to each next one (Horner's scheme): when the denominators divide one another, as the orders of a
+        series do, every multiplier is the small ratio of consecutive denominators instead of the large ratio of
+        the common denominator to each term's.
+        """
         terms = [(t, f) for t, f in terms if f and not t.is_zero()]
         if not terms:
             return self.new(0)
         if len(terms) == 1 and terms[0][1] == 1:
             return self._norm(terms[0][0])
         off, step = self._layout([t for t, _ in terms])
-        den = _lcm([t.den for t, _ in terms])
+        groups: dict[int, list[tuple[Half, int]]] = defaultdict(list)
+        for t, f in terms:
+            groups[t.den].append((t, f))
+        u = v = self.zero_poly
+        den = 0
+        for d in sorted(groups):
+            gu, gv = self._group_sum(groups[d], off, step)
+            if not den:
+                u, v, den = gu, gv, d
+                continue
+            q, r = divmod(d, den)
+            if r:
+                g = math.gcd(d, den)
+                q, k = d // g, den // g
+                gu, gv = gu * k, gv * k
+            u, v, den = u * q + gu, v * q + gv, den * q
+        return self._norm(Half(u, v, off, step, den))
+
+    def _group_sum(self, terms: list[tuple[Half, int]], off: int, step: int) -> tuple[Any, Any]:
+        """Numerators of ``sum f * t`` for terms of one denominator, in the layout ``(off, step)``."""
         u = v = self.zero_poly
         for t, f in terms:
             tu, tv = self._at(t, off, step)
-            k = (den // t.den) * f
-            u += tu * k if k != 1 else tu
-            v += tv * k if k != 1 else tv
-        return self._norm(Half(u, v, off, step, den))
+            u += tu * f if f != 1 else tu
+            v += tv * f if f != 1 else tv
+        return u, v
 
     def add(self, a: Half, b: Half) -> Half:
         return self._sum([(a, 1), (b, 1)])
@@ -171,10 +202,10 @@ class LaurentArith(_Arith):
         return self._norm(Half(out.u, out.v, out.off, out.step, out.den * den))
 
     def mul(self, a: Half, b: Half) -> Half:
-        return self._norm(block_products(self, [a], [b], 1)[0])
+        return self._norm(pair_product(self, a, b))
 
     def dot(self, pairs: list[tuple[Half, Half]]) -> Half:
-        return self._sum([(block_products(self, [a], [b], 1)[0], 1) for a, b in pairs])
+        return self._sum([(pair_product(self, a, b), 1) for a, b in pairs])
 
     # --- coefficients ----------------------------------------------------------------------------------------------
     def _index(self, t: Half, n: int) -> int | None:
@@ -261,6 +292,64 @@ def _two_sided(pos: Any, neg: Any, off: int, count: int) -> list:
     return (q[:-1] if off == 0 else q) + p
 
 
+def _side(t: Half, step: int) -> tuple[Any, Any, int]:
+    """Two-sided real and imaginary parts of ``t`` as ``fmpz_poly`` in steps of ``step`` from ``n = -hi``, and
+    ``hi``."""
+    off, st = (t.off, t.step) if t.step == step else (0, 1)
+    u, v = LaurentArith._at(t, off, st)
+    hi = t.hi
+    count = (hi - off) // step + 1
+    P = type(u)
+    return P(_two_sided(u, u, off, count)), P(_two_sided(v, -v, off, count)), hi
+
+
+#: FLINT multiplies coefficient by coefficient only while the shorter polynomial has fewer terms than this; from
+#: there on it pads every coefficient to the size of the largest (measured, python-flint 0.9: 8 coefficients of
+#: 30 bits times 150 of 16000 bits take 4 ms at once, 0.4 ms in two pieces; x_3 against x_150 is such a product)
+_CLASSICAL = 7
+#: a shorter factor up to this length is multiplied in pieces of ``_CLASSICAL - 1`` terms
+_PIECEWISE_MAX = 16
+
+
+def _mul(x: Any, y: Any) -> Any:
+    """``x * y``; a short factor (``_CLASSICAL <= length <= _PIECEWISE_MAX``) in pieces of ``_CLASSICAL - 1``."""
+    if x.length() > y.length():
+        x, y = y, x
+    if not _CLASSICAL <= x.length() <= _PIECEWISE_MAX:
+        return x * y
+    P, k = type(x), _CLASSICAL - 1
+    c = x.coeffs()
+    out = P(c[:k]) * y
+    for i in range(k, len(c), k):
+        out += (P(c[i : i + k]) * y).left_shift(i)
+    return out
+
+
+def pair_product(ar: LaurentArith, a: Half, b: Half) -> Half:
+    """``a b`` (not reduced): :func:`block_products` of one term on each side, without packing or phases."""
+    if a.is_zero() or b.is_zero():
+        return ar.new(0)
+    step = 2 if a.step == b.step == 2 else 1
+    au, av, ha = _side(a, step)
+    bu, bv, hb = _side(b, step)
+    # (au + i av)(bu + i bv) = (au bu - av bv) + i (au bv + av bu); pure cosine or sine series need one product
+    if av.is_zero() and bv.is_zero():
+        re, im = _mul(au, bu), ar.zero_poly
+    elif au.is_zero() and bu.is_zero():
+        re, im = -_mul(av, bv), ar.zero_poly
+    elif av.is_zero() and bu.is_zero():
+        re, im = ar.zero_poly, _mul(au, bv)
+    elif au.is_zero() and bv.is_zero():
+        re, im = ar.zero_poly, _mul(av, bu)
+    else:
+        p1, p2, p3 = _mul(au, bu), _mul(av, bv), _mul(au + av, bu + bv)
+        re, im = p1 - p2, p3 - p1 - p2
+    # the product's harmonics run from -(ha + hb) in steps of ``step``; keep n >= 0
+    zero = (ha + hb + step - 1) // step
+    off = -(ha + hb) + step * zero
+    return Half(re.right_shift(zero), im.right_shift(zero), off, step, a.den * b.den)
+
+
 def block_products(
     ar: LaurentArith, A: list[Half], B: list[Half], count: int, first: tuple[int, int] = (0, 0)
 ) -> list[Half]:
@@ -269,9 +358,13 @@ def block_products(
     ``first`` are the indices (orders) of ``A[0]`` and ``B[0]``.  When the terms of each block are pure cosine or
     sine series in a pattern ``i**(alpha + beta k)`` (the same ``beta`` on both sides), each term is made real by that
     factor and the block product is one product of integer polynomials; otherwise the cosine and sine parts are
-    multiplied with Karatsuba's three products.
+    multiplied with Karatsuba's three products (squares when ``A is B``).
+
+    Every ``C_t`` is a two-sided Laurent polynomial of ``L`` coefficients whose real and imaginary parts are even or
+    odd in ``n``; its terms are placed only ``ceil(L/2)`` apart, so that the half ``n < 0`` of ``C_(t+1)`` falls on
+    the half ``n > 0`` of ``C_t``: the products are half as long, and :func:`_unfold` separates the two halves from
+    ``t = 0`` up by that symmetry.
     """
-    P = ar.P
     sides = []
     for side in (A, B):
         off, step = ar._layout(side)
@@ -283,39 +376,15 @@ def block_products(
     for q in sides:  # the two-sided range -hi..hi must be a whole number of steps from the parity offset
         q[3] += (q[3] - q[1]) % step
     (_, oa, _, ha, da), (_, ob, _, hb, db) = sides
-    la, lb = 2 * ha // step + 1, 2 * hb // step + 1
-    stride = la + lb - 1
-    pa, pb = _phases(A, first[0]), _phases(B, first[1])
-    common = [(x, y) for x in pa for y in pb if x[1] == y[1]]
+    length = 2 * ha // step + 2 * hb // step + 1  # of each C_t
+    stride = length - length // 2
+    square = A is B and first[0] == first[1]  # one packed polynomial: FLINT squares it
+    pa = _phases(A, first[0])
+    pb = pa if square else _phases(B, first[1])
+    common = [(x, y) for x in pa for y in pb if x[1] == y[1] and (x == y or not square)]
     phase = common[0] if common else None
-
-    def pack(side, off, hi, den, k0, ph) -> tuple[Any, Any]:
-        n_half = (hi - off) // step + 1
-        us: list = []
-        vs: list = []
-        for r, t in enumerate(side):
-            tu, tv = ar._at(t, off, step)
-            f = den // t.den
-            if f != 1:
-                tu, tv = tu * f, tv * f
-            # two-sided: the real part is even in n, the imaginary part odd; i**e (u + i v) for the phase e
-            e = (ph[0] + ph[1] * (k0 + r)) % 4 if ph is not None else 0
-            if e == 0:
-                cu, cv = _two_sided(tu, tu, off, n_half), _two_sided(tv, -tv, off, n_half)
-            elif e == 1:
-                cu, cv = _two_sided(-tv, tv, off, n_half), _two_sided(tu, tu, off, n_half)
-            elif e == 2:
-                cu, cv = _two_sided(-tu, -tu, off, n_half), _two_sided(-tv, tv, off, n_half)
-            else:
-                cu, cv = _two_sided(tv, -tv, off, n_half), _two_sided(-tu, -tu, off, n_half)
-            for out, c in ((us, cu), (vs, cv)):
-                if c:
-                    out.extend([0] * (r * stride - len(out)))
-                    out.extend(c)
-        return P(us), P(vs)
-
-    au, av = pack(A, oa, ha, da, first[0], phase[0] if phase else None)
-    bu, bv = pack(B, ob, hb, db, first[1], phase[1] if phase else None)
+    au, av = _pack(ar, A, oa, step, ha, da, stride, first[0], phase[0] if phase else None)
+    bu, bv = (au, av) if square else _pack(ar, B, ob, step, hb, db, stride, first[1], phase[1] if phase else None)
     n = count * stride
 
     def mul(x, y):
@@ -328,21 +397,93 @@ def block_products(
         re = mul(au, bu) - mul(av, bv)
         im = mul(au, bv) + mul(av, bu)
     else:
-        p1, p2, p3 = mul(au, bu), mul(av, bv), mul(au + av, bu + bv)
+        sa = au + av
+        p1, p2, p3 = mul(au, bu), mul(av, bv), mul(sa, sa if square else bu + bv)
         re, im = p1 - p2, p3 - p1 - p2
-    rc, ic = re.coeffs(), im.coeffs()
+    # the factor i**e_t of the order first + t (phases) makes the real part even for even e_t, odd for odd e_t
+    if phase is not None:
+        (xa, beta), (xb, _) = phase
+        turns = [(xa + xb + beta * (first[0] + first[1] + t)) % 4 for t in range(count)]
+    else:
+        turns = [0] * count
+    res = _unfold(ar.P, re.coeffs(), length, count, [e % 2 == 0 for e in turns])
+    ims = _unfold(ar.P, im.coeffs(), length, count, [e % 2 == 1 for e in turns])
     # the product's harmonics run from -(ha + hb) in steps of ``step``; keep n >= 0
     zero = (ha + hb + step - 1) // step
     off = -(ha + hb) + step * zero
     out = []
-    for t in range(count):
-        sl = slice(t * stride + zero, (t + 1) * stride)
-        u, v = P(rc[sl]), P(ic[sl])
-        if phase is not None:  # undo the factor i**(alpha_a + alpha_b + beta m) of the order m
-            (xa, beta), (xb, _) = phase
-            e = (xa + xb + beta * (first[0] + first[1] + t)) % 4
-            u, v = ((u, v), (v, -u), (-u, -v), (-v, u))[e]
+    for e, u, v in zip(turns, res, ims, strict=True):
+        u, v = ((u, v), (v, -u), (-u, -v), (-v, u))[e]  # undo the factor i**e_t
         out.append(Half(u, v, off, step, da * db))  # reduced when summed
+    return out
+
+
+def _pack(
+    ar: LaurentArith, side: list[Half], off: int, step: int, hi: int, den: int, stride: int, k0: int, ph: Any
+) -> tuple[Any, Any]:
+    """Real and imaginary parts of ``sum_r i**e_r side[r] y**r`` on the denominator ``den``, each term two-sided
+    (``n = -hi .. hi``), with ``y = z**stride``; overlapping terms add up."""
+    n_half = (hi - off) // step + 1
+    us: list = []
+    vs: list = []
+    for r, t in enumerate(side):
+        tu, tv = ar._at(t, off, step)
+        f = den // t.den
+        if f != 1:
+            tu, tv = tu * f, tv * f
+        # two-sided: the real part is even in n, the imaginary part odd; i**e (u + i v) for the phase e
+        e = (ph[0] + ph[1] * (k0 + r)) % 4 if ph is not None else 0
+        if e == 0:
+            cu, cv = _two_sided(tu, tu, off, n_half), _two_sided(tv, -tv, off, n_half)
+        elif e == 1:
+            cu, cv = _two_sided(-tv, tv, off, n_half), _two_sided(tu, tu, off, n_half)
+        elif e == 2:
+            cu, cv = _two_sided(-tu, -tu, off, n_half), _two_sided(-tv, tv, off, n_half)
+        else:
+            cu, cv = _two_sided(tv, -tv, off, n_half), _two_sided(-tu, -tu, off, n_half)
+        for out, c in ((us, cu), (vs, cv)):
+            if c:
+                _place(out, c, r * stride)
+    return ar.P(us), ar.P(vs)
+
+
+def _place(out: list, c: list, start: int) -> None:
+    """Add the coefficients ``c`` into ``out`` from index ``start`` (extending it)."""
+    if len(out) <= start:
+        out.extend([0] * (start - len(out)))
+        out.extend(c)
+        return
+    overlap = min(len(out) - start, len(c))
+    for k in range(overlap):
+        out[start + k] += c[k]
+    out.extend(c[overlap:])
+
+
+def _unfold(P: Any, coeffs: list, length: int, count: int, even: list[bool]) -> list:
+    """The halves ``n >= 0`` (``fmpz_poly``) of ``count`` Laurent polynomials of ``length`` coefficients each, even
+    (``even[t]``) or odd in ``n``, packed ``stride = ceil(length/2)`` apart (the half ``n < 0`` of the ``t+1``-st on
+    the half ``n > 0`` of the ``t``-th): term by term, the negative half is what remains after the previous positive
+    half is removed, and the positive half is its mirror image (negated when odd; the middle coefficient ``n = 0``
+    of an odd one is zero)."""
+    if not coeffs:
+        return [P(0)] * count
+    neg = length // 2  # coefficients for n < 0 (and as many for n > 0; the middle one is n = 0 when length is odd)
+    stride = length - neg
+    coeffs = coeffs + [0] * (count * stride - len(coeffs))
+    out = []
+    mirror: list = [0] * neg  # the previous negative half reversed: +- its positive half
+    for t in range(count):
+        seg = coeffs[t * stride : (t + 1) * stride]
+        if t == 0:
+            low = seg[:neg]
+        elif even[t - 1]:
+            low = [a - b for a, b in zip(seg[:neg], mirror, strict=True)]
+        else:
+            low = [a + b for a, b in zip(seg[:neg], mirror, strict=True)]
+        low.reverse()
+        mirror = low
+        half = P(seg[neg:] + low)
+        out.append(half if even[t] else -half)
     return out
 
 
@@ -400,29 +541,32 @@ class RelaxedCauchy:
         count = min(2 * size - 1, self.limit - first + 1)
         if count <= 0:
             return
-        A = [self._get(self.a, i) for i in range(i0, i0 + size)]
-        B = [self._get(self.b, j) for j in range(j0, j0 + size)]
+        used = min(size, count)  # terms beyond the limit's reach are not needed
+        A = [self._get(self.a, i) for i in range(i0, i0 + used)]
+        B = A if self.square and i0 == j0 else [self._get(self.b, j) for j in range(j0, j0 + used)]
         if self.scalar_a:
             blocked = size >= _SCALAR_BLOCK_MIN and count == 2 * size - 1
         else:
-            blocked = size >= _BLOCK_MIN  # small blocks: the products of the pairs cost less than packing them
+            blocked = used >= _BLOCK_MIN  # small blocks: the products of the pairs cost less than packing them
         if not blocked:
             for i, a in enumerate(A):
+                if self.scalar_a and not a:  # (every other frequency coefficient of an odd nonlinearity)
+                    continue
                 for j, b in enumerate(B[: count - i]):
-                    self.pending[first + i + j].append((self._pair(a, b, i0 + i, j0 + j), weight))
+                    self.pending[first + i + j].append((self._pair(a, b), weight))
             return
         if self.scalar_a:
             blocks = scalar_block_products(self.ar, A, B)
         else:
             blocks = block_products(self.ar, A, B, count, (i0, j0))
-        for t, c in enumerate(blocks):
+        for t, c in enumerate(blocks[:count]):
             self.pending[first + t].append((c, weight))
 
-    def _pair(self, a: Any, b: Half, i: int, j: int) -> Half:
+    def _pair(self, a: Any, b: Half) -> Half:
         if self.scalar_a:
             q = Fraction(a)
             return Half(b.u * q.numerator, b.v * q.numerator, b.off, b.step, b.den * q.denominator)
-        return block_products(self.ar, [a], [b], 1, (i, j))[0]
+        return pair_product(self.ar, a, b)
 
     def __call__(self, m: int) -> Half:
         if m != self.next:
@@ -443,11 +587,11 @@ class RelaxedCauchy:
                         self._block(size, s * size, size, 1)
             k += 1
         a0, b0, am, bm = self._get(self.a, 0), self._get(self.b, 0), self._get(self.a, m), self._get(self.b, m)
-        edge = self._pair(a0, bm, 0, m)
+        edge = self._pair(a0, bm)
         if m == 0:
             terms = [(edge, 1)]
         elif self.square:
             terms = [(edge, 2)]
         else:
-            terms = [(edge, 1), (self._pair(am, b0, m, 0), 1)]
+            terms = [(edge, 1), (self._pair(am, b0), 1)]
         return self.ar._sum(terms + self.pending.pop(m, []))
