@@ -209,10 +209,12 @@ def _head_image(x, t, p, tau) -> sp.Expr:
     """``p Integral(x(t) exp(-p t), (t, 0, tau))``, the Carson image of the piece of ``x`` on ``(0, tau)``.
 
     The integral over a finite interval is entire in p: integrate for p > 0 (no ``Piecewise`` for p = 0) and
-    continue analytically, so the result is the same whatever assumptions the caller's ``p`` carries.
+    continue analytically, so the result is the same whatever assumptions the caller's ``p`` carries.  The
+    integrand is expanded first: SymPy integrates the sum of its terms 2-4x faster than a product of shifted factors
+    (``exp(-(t + tau)) cos(t + tau)``), which it sends to its heuristic Risch algorithm.
     """
     pp = sp.Dummy("p", positive=True)
-    return p * sp.integrate(sp.sympify(x) * sp.exp(-pp * t), (t, 0, tau)).subs(pp, p)
+    return p * sp.integrate(sp.expand(sp.sympify(x) * sp.exp(-pp * t)), (t, 0, tau)).subs(pp, p)
 
 
 def _check_order(m, what: str) -> int:

@@ -127,6 +127,18 @@ def test_single_expansion_refuses_an_eigenvalue_outside_the_disk():
         analytic_continuation(np.diag([2.0, 9.0]), sp.log, method="single", path=[4.0])
 
 
+def test_a_path_through_a_singularity_is_refused_and_one_close_to_it_is_followed():
+    """The segment from the center -1 to the eigenvalue 0.001 runs through the branch point of log: refused once the
+    radius of convergence stays below 1e-15 of the remaining distance (not after the 2000-step cap).  A path
+    passing 1e-6 from the branch point is followed to the principal logarithm (SciPy's)."""
+    A = np.array([[0.001, 1.0], [0.0, 50.0]])
+    with pytest.raises(ConvergenceError, match=r"stalls .* too close to a singularity of f"):
+        analytic_continuation(A, sp.log, center=-1)
+    res = analytic_continuation(A, sp.log, path=[1e-6j])
+    assert np.allclose(res.value, sla.logm(A), atol=1e-12, rtol=0)
+    assert min(abs(b) for b in res.path) < 2e-6  # the path did pass the branch point that close
+
+
 def test_order_too_small_raises():
     with pytest.raises(ConvergenceError, match="order=5"):
         analytic_continuation(np.array([[3.0, 1.0], [0.5, 4.5]]), sp.log, method="single", path=[4.0], order=5)

@@ -202,8 +202,13 @@ class _Element:
 def _walk(
     element: _Element, targets: list[complex], step: float, path: list[complex], max_steps: int = 2000
 ) -> _Element:
-    """Continue ``element`` through ``targets`` in straight segments, each step at most ``step·R``."""
+    """Continue ``element`` through ``targets`` in straight segments, each step at most ``step·R``.
+
+    A segment through a singularity of f never gets past it: the steps shrink with the distance to it.  Once the
+    radius has stayed below ``1e-15`` of the remaining distance for three steps (the singularity lies on the
+    segment to the precision of its end points), the walk stops with a ConvergenceError, as after ``max_steps``."""
     for target in targets:
+        stalled = 0
         for _ in range(max_steps):
             here = complex(element.beta)
             gap = target - here
@@ -212,6 +217,12 @@ def _walk(
             R = element.radius()
             if not R > 0:  # pragma: no cover - f is checked for analyticity at the centers first
                 raise ModelError(f"f has a singularity at the center {here:.6g} of the continuation")
+            stalled = stalled + 1 if R <= 1e-15 * abs(gap) else 0
+            if stalled >= 3:
+                raise ConvergenceError(
+                    f"the continuation from {here:.6g} to {target:.6g} stalls at a radius of convergence of "
+                    f"{R:.3g}: the path passes too close to a singularity of f; choose a path (or center) around it"
+                )
             move = gap if abs(gap) <= step * R else gap / abs(gap) * step * R
             for _ in range(60):
                 try:

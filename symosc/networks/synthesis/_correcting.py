@@ -34,7 +34,7 @@ def dual(net: OnePort, W2: Any, scale: Callable[[Any, str], Any] | None = None) 
 
 
 def scale_expr(W2: sp.Expr) -> Callable[[sp.Expr, str], sp.Expr]:
-    return lambda v, kind: {"R": W2 / v, "L": v / W2, "C": W2 * v}[kind]
+    return lambda v, kind: W2 / v if kind == "R" else v / W2 if kind == "L" else W2 * v  # only the one needed
 
 
 def positive(value: Any, name: str) -> sp.Expr:

@@ -314,7 +314,8 @@ class _Values:
             c, F = self.pending[v]
             r = ex.convert(r2, K, F)
             d = sp.Dummy(positive=True)
-            self.pending[d] = ({"R": F.quo(r, c), "L": F.quo(c, r), "C": F.mul(r, c)}[kind], F)
+            scaled = F.quo(r, c) if kind == "R" else F.quo(c, r) if kind == "L" else F.mul(r, c)  # only the one needed
+            self.pending[d] = (scaled, F)
             return d
 
         out = dual(net, r2, scale)

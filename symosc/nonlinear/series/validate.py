@@ -240,10 +240,14 @@ def _polish_mpmath(f, x, v, eps_symbol, eps, a0, T0, dps, method, stiff) -> Nume
         def flow(x0: Any) -> Any:
             return mpmath.odefun(lambda t, y: list(rhs.raw(y[0], y[1], e))[:2], 0, [x0, mpmath.mpf(0)])
 
+        found: dict = {}  # findroot checks its root by one more evaluation: the final crossing is that one
+
         def crossing(x0: Any) -> tuple[Any, Any]:
-            sol = flow(x0)
-            T = mpmath.findroot(lambda t: sol(t)[1], mpmath.mpf(T0))
-            return T, sol(T)[0]
+            if x0 not in found:
+                sol = flow(x0)
+                T = mpmath.findroot(lambda t: sol(t)[1], mpmath.mpf(T0))
+                found[x0] = T, sol(T)[0]
+            return found[x0]
 
         a = mpmath.findroot(
             lambda x0: crossing(x0)[1] - x0, (mpmath.mpf(a0), mpmath.mpf(a0) * (1 + 1e-9)), tol=mpmath.mpf(10) ** (-dps)
