@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from .._plotting import require_matplotlib
-from .._validate import check_choice, check_positive, validated
+from .._validate import check_choice, check_finite, check_positive, validated
 
 __all__ = [
     "mathieu_explorer",
@@ -204,13 +204,13 @@ def pivot_explorer(
     values : dict, optional
         Parameters of the chain (SI); default: the double physical pendulum of Gribkov & Khokhlov (2015), Table 1.
     amplitude : float
-        Initial pivot amplitude, mm.
+        Initial pivot amplitude, mm (>= 0).
     frequency : float
         Initial pivot frequency, Hz.
     duration : float
         Simulated seconds after each change.
     tilt : float
-        Initial angle of the first link (rad); the others start at minus half of it.
+        Initial angle of the first link (rad, finite); the others start at minus half of it.
 
     Returns
     -------
@@ -239,6 +239,8 @@ def pivot_explorer(
             raise ParameterError("values are needed for a chain other than the double rigid pendulum of Table 1")
         values = gribkov_khokhlov_table1()
     check_positive("duration", duration)
+    check_positive("amplitude", amplitude, allow_zero=True)
+    check_finite("tilt", tilt)
     system = n_link_pendulum(n, links=links, inverted=True, pivot="vertical")
     return PivotExplorer(system, values, amplitude, frequency, duration, tilt)
 

@@ -10,6 +10,7 @@ from scipy.optimize import brentq
 
 pytest.importorskip("ipywidgets", reason="the explorers need the widgets extra (ipywidgets); .ci/run installs it")
 
+from symosc.errors import ParameterError
 from symosc.visual import mathieu_explorer, pivot_explorer, resonance_explorer
 
 
@@ -60,3 +61,16 @@ def test_resonance_explorer_jumps_match_the_amplitude_equation():
         np.testing.assert_allclose(ex.response.jump_frequencies, jumps, rtol=1e-6)
     ex.damping.value = 0.3
     assert ex.response.jump_frequencies == () and "none" in ex.verdict.value
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"amplitude": -1.0}, r"amplitude must be >= 0, got -1\.0"),
+        ({"amplitude": float("inf")}, r"amplitude must be finite, got inf"),
+        ({"tilt": float("nan")}, r"tilt must be finite, got nan"),
+    ],
+)
+def test_pivot_explorer_refuses_a_negative_or_infinite_amplitude_and_a_nan_tilt(kwargs, message):
+    with pytest.raises(ParameterError, match=message):
+        pivot_explorer(duration=0.1, **kwargs)
