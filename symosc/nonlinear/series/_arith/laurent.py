@@ -79,15 +79,6 @@ class LaurentArith(_Arith):
     def scalar(self, q: Fraction | int) -> Fraction:
         return Fraction(q)
 
-    def sdiv(self, a: Fraction, b: Fraction) -> Fraction:
-        return a / b
-
-    def smul(self, a: Fraction, b: Fraction) -> Fraction:
-        return a * b
-
-    def is_zero(self, a: Fraction) -> bool:
-        return a == 0
-
     # --- construction and normal form -----------------------------------------------------------------------------
     def new(self, n: int) -> Half:
         return Half(self.zero_poly, self.zero_poly, 0, 2, 1)

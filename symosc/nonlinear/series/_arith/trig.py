@@ -96,14 +96,15 @@ class _Arith:
     def scalar(self, q: Fraction | int) -> Any:  # rational -> scalar
         raise NotImplementedError
 
+    # the field operations of Python's number types (Fraction, float); fixed-point and mpmath scalars override them
     def sdiv(self, a: Any, b: Any) -> Any:
-        raise NotImplementedError
+        return a / b
 
     def smul(self, a: Any, b: Any) -> Any:
-        raise NotImplementedError
+        return a * b
 
     def is_zero(self, a: Any) -> bool:
-        raise NotImplementedError
+        return a == 0
 
     def output(self, a: Any) -> Any:  # scalar -> user-facing number (Fraction, mpf, float, PolyElement)
         return a
@@ -283,15 +284,6 @@ class ExactArith(_Arith):
 
     def scalar(self, q: Fraction | int) -> Fraction:
         return Fraction(q)
-
-    def sdiv(self, a: Fraction, b: Fraction) -> Fraction:
-        return a / b
-
-    def smul(self, a: Fraction, b: Fraction) -> Fraction:
-        return a * b
-
-    def is_zero(self, a: Fraction) -> bool:
-        return a == 0
 
     def _norm(self, t: Trig) -> Trig:
         g = math.gcd(t.den, *t.cos.tolist(), *t.sin.tolist())
@@ -526,15 +518,6 @@ class FloatArith(_Arith):
 
     def scalar(self, q: Fraction | int) -> float:
         return float(Fraction(q))
-
-    def sdiv(self, a: float, b: float) -> float:
-        return a / b
-
-    def smul(self, a: float, b: float) -> float:
-        return a * b
-
-    def is_zero(self, a: float) -> bool:
-        return a == 0.0
 
     def mul(self, a: Trig, b: Trig) -> Trig:
         c, s = self._products(a, b)
