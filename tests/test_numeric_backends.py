@@ -120,6 +120,86 @@ def test_c_source_compiles_on_its_own(tmp_path):
     assert lib.shared_checked(a, out) == 3
 
 
+def test_math_constants_inside_a_piecewise_compile_in_c():
+    # SymPy's C printer writes M_PI, M_E, M_SQRT2 for a Piecewise; -std=c99 hides them in glibc's math.h.
+    f = compile(sp.Piecewise((sp.pi * x + sp.E, x > 0), (sp.sqrt(2) * x, True)), [x], backend="c")
+    assert float(f(1.0)) == pytest.approx(float(sp.pi + sp.E), rel=1e-15)
+    assert float(f(-1.0)) == pytest.approx(-(2**0.5), rel=1e-15)
+
+
+def test_a_source_of_several_units_compiles_as_one_file(tmp_path, monkeypatch):
+    from symosc.models import n_link_pendulum
+    from symosc.numeric import _build, _c
+
+    monkeypatch.setattr(_c.os, "cpu_count", lambda: 2)
+    fo = n_link_pendulum(6).first_order()
+    source = fo._program(True).c_source()
+    assert source.count(_build.UNIT_MARKER) >= 1  # the kernel has a unit of its own
+    (tmp_path / "ode.c").write_text(source)
+    flags = ["-O0", "-std=c99", "-Werror=implicit-function-declaration", "-fPIC", "-shared"]
+    subprocess.run(["cc", *flags, "-o", "ode.so", "ode.c", "-lm"], cwd=tmp_path, check=True)
+    values = {p.name: 1.0 + 0.1 * i for i, p in enumerate(fo.system.parameters)}
+    state = np.linspace(-0.4, 0.5, 12)
+    lib = ctypes.CDLL(str(tmp_path / "ode.so"))
+    p = (ctypes.c_double * len(values))(*[values[s.name] for s in fo.system.parameters])
+    h = (ctypes.c_double * ctypes.c_int.in_dll(lib, "symosc_ode_hoisted").value)()
+    lib.symosc_ode_setup(p, h)
+    jac = (ctypes.c_double * 144)()
+    assert lib.symosc_ode_jac(ctypes.c_double(0.0), (ctypes.c_double * 12)(*state), h, jac) == 0
+    expected = fo.jacobian(values, backend="numpy")(0.0, state)
+    np.testing.assert_allclose(np.array(jac).reshape(12, 12), expected, rtol=1e-11, atol=1e-11)
+
+
+def test_gcc_is_told_from_clang_by_its_banner(monkeypatch):
+    from symosc.numeric import _build
+
+    gcc = "gcc (Debian 12.2.0-14) 12.2.0\nCopyright (C) 2022 Free Software Foundation, Inc.\n"
+    clang = "Apple clang version 15.0.0 (clang-1500.1.0.2.5)\nTarget: arm64-apple-darwin23.2.0\n"
+    for banner, is_gcc in ((gcc, True), (clang, False), ("cc: unknown\n", False)):
+        monkeypatch.setattr(_build, "_compiler_banner", lambda cc, b=banner: b)
+        assert _build._is_gcc("cc") is is_gcc
+        first, rest = _build._unit_flags("cc", _build.GENERATED_FLAGS)
+        assert (first[len(_build.GENERATED_FLAGS) :] == _build.GCC_GENERATED_FLAGS) is is_gcc
+        assert (rest == first + _build.GCC_KERNEL_FLAGS) is is_gcc  # kernel-only units
+        assert set(_build._unit_flags("cc", _build.FLAGS)[1]) == set(_build.FLAGS)  # hand-written code: as given
+    monkeypatch.setattr(_build, "_compiler_banner", lambda cc: clang)
+    assert _build._libs("cc", _build.GENERATED_FLAGS) == _build.LIBS
+
+
+def test_a_lean_library_that_does_not_load_is_linked_again(monkeypatch):
+    from symosc.numeric import _build
+
+    if _build._libs(_build.compiler(), _build.GENERATED_FLAGS) == _build.LIBS:
+        pytest.skip("the lean link is used with GCC on Linux only")
+    links = []
+    compile_ = _build._compile
+    try_load = _build._try_load
+
+    def recording(cc, flags, units, directory, path, full, libs):
+        links.append(libs)
+        return compile_(cc, flags, units, directory, path, full, libs)
+
+    monkeypatch.setattr(_build, "_compile", recording)
+    monkeypatch.setattr(
+        _build, "_try_load", lambda path, key, full: try_load(path, key, full) if links[-1:] == [_build.LIBS] else None
+    )
+    f = compile(sp.cos(x) * 13 + y, [x, y], backend="c")
+    assert float(f(0.0, 1.0)) == 14.0
+    assert links == [_build.LEAN_LIBS, _build.LIBS]
+
+
+def test_rhs_and_jacobian_of_one_system_share_the_graph():
+    from symosc.mechanics import FirstOrderSystem
+    from symosc.models import n_link_pendulum
+
+    system = n_link_pendulum(3)
+    fresh = [FirstOrderSystem(system)._program(j).c_source() for j in (False, True)]
+    fo = FirstOrderSystem(system)
+    jac, rhs = fo._program(True), fo._program(False)
+    assert rhs.graph is jac.graph
+    assert [rhs.c_source(), jac.c_source()] == fresh  # the same code as from graphs of their own
+
+
 # --- the disk cache ------------------------------------------------------------------------------------------
 
 

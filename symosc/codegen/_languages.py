@@ -110,7 +110,7 @@ def c_kernel(k: Kernel) -> tuple[str, str, list]:
     _real_only(k, "C")
     rename, loads, renamed = _names(k, "c", _C_RES)
     repl, reduced = _cse(k, rename)
-    printer = _cnum.SafeC99Printer()
+    printer = _cnum.c_printer()
     params = ", ".join([("double t" if a == "t" else f"const double *{a}") for a, _ in k.inputs] + ["double *out"])
     proto = f"void {k.name}({params})"
     body = [f"    const double {loc} = {a}[{i}];" for a, i, loc in loads]

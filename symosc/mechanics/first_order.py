@@ -51,7 +51,7 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
 
     def __init__(self, system: LagrangianSystem):
         self.system = system
-        self._parts: dict[tuple[str, bool], Any] = {}  # generated code per (backend, jacobian)
+        self._parts: dict[Any, Any] = {}  # generated code per (backend, jacobian); "program": the first Program
 
     def _equality_data(self) -> tuple:
         return self.system._equality_data()  # equal when the systems are (same equations)
@@ -188,10 +188,15 @@ class FirstOrderSystem(ModelEquality, SymPyPrintable):
         return backend
 
     def _program(self, jacobian: bool) -> Any:
+        """The :class:`~symosc.numeric._ode.Program` of the right-hand side or the Jacobian; the second one made
+        extends the graph of the first (M and F are converted once)."""
         from ..numeric import _ode
 
         s = self.system
-        return _ode.Program(s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters, jacobian)
+        base = self._parts.get("program")
+        program = _ode.Program(s.mass_matrix, s.forcing, t, s.coordinates, s.velocities, s.parameters, jacobian, base)
+        self._parts.setdefault("program", program)
+        return program
 
     def _evaluator(self, values: Mapping[Any, Any], backend: str, jacobian: bool) -> Any:
         from ..numeric import _ode

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import ctypes
+import functools
 import keyword
 import os
+import re
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 import sympy as sp
-from sympy.printing.c import C99CodePrinter
 
 from ..errors import ParameterError
 from . import _build
@@ -62,22 +64,51 @@ def c_names(python_names: list[str], reserved: frozenset[str] = frozenset()) -> 
     return out
 
 
-class SafeC99Printer(C99CodePrinter):
-    """SymPy's C99 printer with integers and rationals of 2**53 or more printed as correctly rounded doubles
-    (a C integer literal of 2**64 or more wraps around or is refused; ``HUGE_VAL`` beyond the double range), and
-    ``loggamma`` and ``Mod`` through :data:`C_HELPERS`."""
+@functools.cache
+def _printer_class() -> type:
+    """``SafeC99Printer``, made on first use: importing SymPy's C printer and building its first instance cost
+    about 10 ms, and most generated code never needs it (the graph printer prints sums, products, powers and
+    the common functions itself)."""
+    from sympy.printing.c import C99CodePrinter
 
-    def _print_loggamma(self, expr: sp.Expr) -> str:
-        return f"symosc_loggamma({self._print(expr.args[0])})"
+    class SafeC99Printer(C99CodePrinter):
+        """SymPy's C99 printer with integers and rationals of 2**53 or more printed as correctly rounded doubles
+        (a C integer literal of 2**64 or more wraps around or is refused; ``HUGE_VAL`` beyond the double range),
+        and ``loggamma`` and ``Mod`` through :data:`C_HELPERS`."""
 
-    def _print_Mod(self, expr: sp.Expr) -> str:
-        return f"symosc_mod({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+        def _print_loggamma(self, expr: sp.Expr) -> str:
+            return f"symosc_loggamma({self._print(expr.args[0])})"
 
-    def _print_Integer(self, expr: sp.Integer) -> str:
-        return _big_literal(expr) or super()._print_Integer(expr)
+        def _print_Mod(self, expr: sp.Expr) -> str:
+            return f"symosc_mod({self._print(expr.args[0])}, {self._print(expr.args[1])})"
 
-    def _print_Rational(self, expr: sp.Rational) -> str:
-        return _big_literal(expr) or super()._print_Rational(expr)
+        def _print_Integer(self, expr: sp.Integer) -> str:
+            return _big_literal(expr) or super()._print_Integer(expr)
+
+        def _print_Rational(self, expr: sp.Rational) -> str:
+            return _big_literal(expr) or super()._print_Rational(expr)
+
+    return SafeC99Printer
+
+
+def c_printer() -> Any:
+    """A new ``SafeC99Printer``: SymPy's C99 printer with integers and rationals of 2**53 or more printed as
+    correctly rounded doubles, and ``loggamma`` and ``Mod`` through :data:`C_HELPERS`."""
+    return _printer_class()()
+
+
+def fallback_printer(to_c: dict[sp.Symbol, sp.Symbol]) -> Callable[[sp.Expr], str]:
+    """The fallback of :class:`symosc.numeric._emit.CPrinter`: the C code (:func:`printed`) of an expression whose
+    argument symbols ``to_c`` renames to their C names; the printer is made at the first call."""
+    printer = None
+
+    def fallback(expr: sp.Expr) -> str:
+        nonlocal printer
+        if printer is None:
+            printer = c_printer()
+        return printed(printer, expr.xreplace(to_c))
+
+    return fallback
 
 
 def _big_literal(expr: sp.Rational) -> str | None:
@@ -92,7 +123,7 @@ def _big_literal(expr: sp.Rational) -> str | None:
     return f"({text})" if text.startswith("-") else text
 
 
-def printed(printer: C99CodePrinter, expr: sp.Expr) -> str:
+def printed(printer: Any, expr: sp.Expr) -> str:
     """C code of ``expr``, or :class:`ParameterError` naming what the C printer cannot print."""
     if expr.has(sp.I) or any(a.is_real is False for a in expr.atoms(sp.Number)):
         raise ParameterError(
@@ -127,6 +158,43 @@ static inline double symosc_mod(double x, double y)
 """
 
 
+#: The declarations of ``<math.h>`` that generated code may use: the C99 functions of doubles and the macros, declared
+#: directly for GCC and Clang (``__GNUC__``), ``#include <math.h>`` for any other compiler.  Parsing ``<math.h>``
+#: takes GCC 12 about 7 ms, against 24 ms for compiling and linking an empty file; generated code is compiled with
+#: ``-Werror=implicit-function-declaration``, so a function missing here is a build error, never an ``int`` result.
+#: The ``M_`` constants (SymPy's printer writes ``M_PI``) are defined here because ``-std=c99`` hides them in glibc's
+#: ``<math.h>``.
+MATH_DECLARATIONS = """\
+#if defined(__GNUC__)
+double acos(double); double asin(double); double atan(double); double atan2(double, double); double cos(double);
+double sin(double); double tan(double); double acosh(double); double asinh(double); double atanh(double);
+double cosh(double); double sinh(double); double tanh(double); double exp(double); double exp2(double);
+double expm1(double); double frexp(double, int *); int ilogb(double); double ldexp(double, int); double log(double);
+double log10(double); double log1p(double); double log2(double); double logb(double); double modf(double, double *);
+double scalbn(double, int); double scalbln(double, long); double cbrt(double); double fabs(double);
+double hypot(double, double); double pow(double, double); double sqrt(double); double erf(double); double erfc(double);
+double lgamma(double); double tgamma(double); double ceil(double); double floor(double); double nearbyint(double);
+double rint(double); long lrint(double); long long llrint(double); double round(double); long lround(double);
+long long llround(double); double trunc(double); double fmod(double, double); double remainder(double, double);
+double remquo(double, double, int *); double copysign(double, double); double nan(const char *);
+double nextafter(double, double); double nexttoward(double, long double); double fdim(double, double);
+double fmax(double, double); double fmin(double, double); double fma(double, double, double);
+#define HUGE_VAL (__builtin_huge_val())
+#define INFINITY (__builtin_inff())
+#define NAN (__builtin_nanf(""))
+#define isfinite(x) __builtin_isfinite(x)
+#define isinf(x) __builtin_isinf_sign(x)
+#define isnan(x) __builtin_isnan(x)
+#define signbit(x) __builtin_signbit(x)
+#else
+#include <math.h>
+#endif
+""" + "".join(f"#ifndef {name}\n#define {name} {value}\n#endif\n" for name, value in MATH_MACROS.items())
+
+#: What every generated translation unit starts with (guarded, so that the units joined are one valid C file).
+C_PRELUDE = "#ifndef SYMOSC_PRELUDE\n#define SYMOSC_PRELUDE\n" + MATH_DECLARATIONS + C_HELPERS + "#endif\n"
+
+
 def header_lines(used: str) -> list[str]:
     lines = ["#include <math.h>", C_HELPERS]
     for name, value in MATH_MACROS.items():
@@ -135,35 +203,74 @@ def header_lines(used: str) -> list[str]:
     return lines
 
 
-#: Characters of expression text per function of a long straight-line kernel.  GCC's instruction combiner and
-#: register allocator grow faster than linearly with a function's size; splitting keeps the build time linear.
+#: A kernel of up to this size (characters of expression text, plus 20 per statement) is one C function: shorter
+#: to compile and faster to run than the same code cut into parts (values stay in registers, ``sin`` and ``cos`` of
+#: one angle become one ``sincos``).
+FUNCTION_TEXT = 8000
+#: The size of each function ("part") of a longer kernel.  GCC's register allocator and instruction combiner grow
+#: faster than linearly with a function's size; parts keep the build time linear.
 SEGMENT_TEXT = 1200
-#: A kernel is spread over several translation units (compiled in parallel, one per core) from this much
-#: expression text per unit on.
-UNIT_TEXT = 8000
+#: A kernel is spread over several translation units (compiled in parallel, one per core) from this build cost
+#: (:func:`text_cost`) per unit on.
+UNIT_TEXT = 6000
+#: The build cost of a function call in characters of expression text: GCC spills the live values around each call.
+CALL_TEXT = 40
+_CALL = re.compile(r"\w\(")
+
+
+def text_cost(statements: list) -> int:
+    """The build cost of ``statements`` in characters of expression text, 20 per statement and :data:`CALL_TEXT`
+    per function call added: a rough model of GCC's time, used to balance the translation units."""
+    return sum(len(st.text) + 20 + CALL_TEXT * len(_CALL.findall(st.text)) for st in statements)
 
 
 def kernel_units(
-    name: str, inputs: list[tuple[str, list[str]]], statements: list, outputs: str = "out"
+    name: str, inputs: list[tuple[str, list[str]]], statements: list, outputs: str = "out", reserve: int = 0
 ) -> tuple[list[str], str]:
     """C99 definitions of ``void name(const double *<input>, ..., double *<outputs>)`` from straight-line
     ``statements`` (see :class:`symosc.numeric._emit.Statement`).
 
-    ``inputs`` lists the input arrays and the variable name of each element.  A long kernel is cut into parts of
-    :data:`SEGMENT_TEXT` characters of code (values passed between parts go through a stack array ``_w``), spread
-    evenly over as many translation units as there are cores (at least :data:`UNIT_TEXT` characters each).
-    Returns the units (the first holds ``name``; it has no ``#include``, the caller's source provides it) and the
-    prototype of ``name``.
+    Parameters
+    ----------
+    name : str
+        The function's name.
+    inputs : list of (str, list of str)
+        The input arrays and the variable name of each element.
+    statements : list of Statement
+        The code, in evaluation order.
+    outputs : str
+        The output array.
+    reserve : int
+        The build cost (:func:`text_cost`) of the other code of the first unit; the first unit gets that much less
+        of the kernel.
+
+    Returns
+    -------
+    units : list of str
+        The first unit goes into the caller's source (which provides the prelude): it defines ``name``, or only
+        declares it when ``name`` is defined in a unit of its own.  The others start with :data:`C_PRELUDE`.
+    proto : str
+        The prototype of ``name``.
+
+    Notes
+    -----
+    A kernel of up to :data:`FUNCTION_TEXT` characters (20 per statement counted) is one function, in a unit of its
+    own when it and ``reserve`` each cost at least :data:`UNIT_TEXT` and there are several cores.  A longer one
+    is cut into parts of :data:`SEGMENT_TEXT` characters (values passed between parts go through a stack array
+    ``_w``), spread over as many translation units as there are cores (a build cost, :func:`text_cost`, of at
+    least :data:`UNIT_TEXT` each, the first unit counting ``reserve``).  In every function an input is loaded
+    right before its first use: loads all at the top would keep every input live through the whole function,
+    which costs the register allocator time.
     """
     where = {var: (arr, i) for arr, names in inputs for i, var in enumerate(names)}
     params = ", ".join([f"const double *restrict {arr}" for arr, _ in inputs] + [f"double *restrict {outputs}"])
     proto = f"void {name}({params})"
 
-    def loads(seg: list, local: set[str], cross: dict[str, int]) -> list[str]:
-        lines, seen = [], set()
+    def code(seg: list, cross: dict[str, int]) -> list[str]:
+        lines, seen = [], {st.temp for st in seg if st.temp}
         for st in seg:
             for u in st.uses:
-                if u in seen or u in local:
+                if u in seen:
                     continue
                 seen.add(u)
                 if u in where:
@@ -171,11 +278,6 @@ def kernel_units(
                     lines.append(f"    const double {u} = {arr}[{i}];")
                 else:
                     lines.append(f"    const double {u} = _w[{cross[u]}];")
-        return lines
-
-    def body(seg: list, cross: dict[str, int]) -> list[str]:
-        lines = []
-        for st in seg:
             if st.temp is None:
                 lines.append(f"    {st.target} = {st.text};")
             else:
@@ -184,11 +286,13 @@ def kernel_units(
                     lines.append(f"    _w[{cross[st.temp]}] = {st.temp};")
         return lines
 
-    if sum(len(st.text) for st in statements) <= SEGMENT_TEXT:
-        local = {st.temp for st in statements if st.temp}
-        lines = [f"{proto}", "{", *loads(statements, local, {}), *body(statements, {}), "}", ""]
+    cores = os.cpu_count() or 1
+    if sum(len(st.text) + 20 for st in statements) <= FUNCTION_TEXT:
+        lines = [f"{proto}", "{", *code(statements, {}), "}", ""]
         if not statements:
             lines[2:2] = [f"    (void){arr};" for arr, _ in inputs] + [f"    (void){outputs};"]
+        if cores > 1 and min(text_cost(statements), reserve) >= UNIT_TEXT:  # both halves worth a compiler each
+            return [f"{proto};\n", f"{C_PRELUDE}\n" + "\n".join(lines)], proto
         return ["\n".join(lines)], proto
     segs: list[list] = [[]]
     size = 0
@@ -208,20 +312,24 @@ def kernel_units(
     part_params = ", ".join(
         [f"const double *restrict {arr}" for arr, _ in inputs] + [f"double *restrict {outputs}", "double *restrict _w"]
     )
-    parts = []
-    for k, seg in enumerate(segs):
-        local = {st.temp for st in seg if st.temp}
-        lines = [f"void {name}_part{k}({part_params})", "{", *loads(seg, local, cross), *body(seg, cross), "}", ""]
-        parts.append("\n".join(lines))
-    total = sum(len(st.text) for st in statements)
-    count = max(1, min(os.cpu_count() or 1, total // UNIT_TEXT, len(parts)))
-    groups = [parts[len(parts) * u // count : len(parts) * (u + 1) // count] for u in range(count)]
+    parts = [
+        "\n".join([f"void {name}_part{k}({part_params})", "{", *code(seg, cross), "}", ""])
+        for k, seg in enumerate(segs)
+    ]
+    costs = [text_cost(seg) for seg in segs]
+    count = max(1, min(cores, (sum(costs) + reserve) // UNIT_TEXT, len(parts)))
+    share = (sum(costs) + reserve) / count
+    groups: list[list[str]] = [[] for _ in range(count)]
+    done = reserve
+    for part, cost in zip(parts, costs, strict=True):
+        groups[min(count - 1, int((done + cost / 2) // share))].append(part)
+        done += cost
     call_args = ", ".join([arr for arr, _ in inputs] + [outputs, "_w"])
     main = [f"void {name}_part{k}({part_params});" for k in range(len(parts))]
     main += ["", *groups[0], proto, "{", f"    double _w[{max(len(cross), 1)}];"]
     main += [f"    {name}_part{k}({call_args});" for k in range(len(parts))]
     main += ["}", ""]
-    return ["\n".join(main), *(f"#include <math.h>\n{C_HELPERS}\n" + "\n".join(g) for g in groups[1:])], proto
+    return ["\n".join(main), *(f"{C_PRELUDE}\n" + "\n".join(g) for g in groups[1:] if g)], proto
 
 
 def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str], items: list[sp.Expr], shape) -> str:
@@ -242,8 +350,7 @@ def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str],
         nodes = [graph.node(e) for e in items]
     except ValueError as exc:
         raise ParameterError(str(exc)) from exc
-    printer = SafeC99Printer()
-    cprinter = CPrinter(graph, names, lambda e: printed(printer, e.xreplace(to_c)))
+    cprinter = CPrinter(graph, names, fallback_printer(to_c))
     statements = cprinter.statements(nodes, [f"out[{i}]" for i in range(len(nodes))])
     units, _ = kernel_units(f"{fname}_body", [("a", names)], statements)
     nargs, nout = len(names), len(items)
@@ -259,8 +366,7 @@ def function_source(fname: str, arg_syms: list[sp.Symbol], arg_names: list[str],
         "                              argument a[i], -1 when a result is not finite, 0 otherwise.",
         f"   {fname}_batch(count, a, out)  evaluates count points: a is count x {nargs}, out is count x {nout}.",
         f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {fname}.so {fname}.c -lm */",
-        "#include <math.h>",
-        C_HELPERS,
+        C_PRELUDE,
         units[0],
         f"int {fname}(const double *a, double *out)",
         "{",

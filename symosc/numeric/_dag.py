@@ -122,42 +122,46 @@ class Graph:
     def mul(self, children: Sequence[int]) -> int:
         """The product node; a numeric coefficient stays outside (``c * P``), so that ``P`` is shared by ``P``,
         ``-P`` and ``2*P``."""
-        coeff, rest = sp.S.One, []
+        coeff, rest = None, []  # coeff None: 1 (no SymPy arithmetic in the common case of no coefficient)
+        kind, data = self.kind, self.data
         for c in children:
-            v = self.number(c)
-            if v is not None:
-                coeff *= v
+            if kind[c] == CONST and data[c].is_Number:
+                coeff = data[c] if coeff is None else coeff * data[c]
                 continue
-            cc, inner = self.signed(c)
-            coeff *= cc
-            rest.append(inner)
-        if coeff == 0:
+            if kind[c] == MUL and len(data[c]) == 2:
+                cc, inner = self.signed(c)
+                if inner != c:
+                    coeff = cc if coeff is None else coeff * cc
+                    c = inner
+            rest.append(c)
+        if coeff is not None and coeff == 0:
             return self.zero
         if not rest:
-            return self.const(coeff)
+            return self.one if coeff is None else self.const(coeff)
         body = rest[0] if len(rest) == 1 else self._split_product(rest)
-        if coeff == 1:
+        if coeff is None or coeff == 1:
             return body
         return self._new(MUL, tuple(sorted((self.const(coeff), body))), self.deps[body])
 
     def signed(self, k: int) -> tuple[sp.Expr, int]:
         """``(c, P)`` with node ``k`` = ``c * P`` (``c = 1`` for a node without a numeric coefficient)."""
-        if self.kind[k] == MUL and len(self.data[k]) == 2:
-            a, b = self.data[k]
-            v = self.number(a)
-            if v is not None:
-                return v, b
-            v = self.number(b)
-            if v is not None:
-                return v, a
+        kind, data = self.kind, self.data
+        if kind[k] == MUL and len(data[k]) == 2:
+            a, b = data[k]
+            if kind[a] == CONST and data[a].is_Number:
+                return data[a], b
+            if kind[b] == CONST and data[b].is_Number:
+                return data[b], a
         return sp.S.One, k
 
     def _split_product(self, rest: list[int]) -> int:
         if self.varying:
             # Products of parameters and products of varying quantities are shared by many terms: make each a
             # node of its own (``(l1*l2*m3) * (cos(phi1)*sin(phi2))``) so that the graph shares them.
-            fixed = [c for c in rest if not self.deps[c] & self.varying]
-            moving = [c for c in rest if self.deps[c] & self.varying]
+            fixed, moving = [], []
+            deps, varying = self.deps, self.varying
+            for c in rest:
+                (moving if deps[c] & varying else fixed).append(c)
             if (len(fixed) > 1 and moving) or (len(moving) > 1 and fixed):
                 return self._product([self._product(fixed), self._product(moving)])
         return self._product(rest)
@@ -374,6 +378,7 @@ def reachable(graph: Graph, outputs: Sequence[int], stop=()) -> tuple[list[int],
     for k in outputs:
         uses[k] = uses.get(k, 0) + 1
     order = []
+    kind, data = graph.kind, graph.data
     while stack:
         k = stack.pop()
         if k in seen:
@@ -382,7 +387,14 @@ def reachable(graph: Graph, outputs: Sequence[int], stop=()) -> tuple[list[int],
         order.append(k)
         if k in stop:
             continue
-        for c in graph._children(k):
+        kk = kind[k]
+        if kk == FUNC:
+            children = data[k][1]
+        elif kk == ADD or kk == MUL or kk == POW:
+            children = data[k]
+        else:
+            continue
+        for c in children:
             uses[c] = uses.get(c, 0) + 1
             if c not in seen:
                 stack.append(c)

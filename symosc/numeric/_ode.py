@@ -36,22 +36,44 @@ class Program:
     (entry index into ``pairs``, j) pairs); ``hoisted`` the parameter-only nodes computed at set-up.
     """
 
-    def __init__(self, M: sp.Matrix, F: sp.Matrix, t, q, u, params, jacobian: bool) -> None:
+    def __init__(
+        self, M: sp.Matrix, F: sp.Matrix, t, q, u, params, jacobian: bool, base: Program | None = None
+    ) -> None:
+        """
+        Parameters
+        ----------
+        M, F : sympy.Matrix
+            The mass matrix and the forcing of ``M q'' = F``.
+        t, q, u, params : Symbol, sequences of Symbol
+            Time, the coordinates, the velocities and the parameters.
+        jacobian : bool
+            Whether the derivatives of F and M (for the Jacobian) are outputs too.
+        base : Program, optional
+            A program of the same equations whose graph (with M and F in it) this one extends, so that the
+            right-hand side and the Jacobian of one system convert M and F once; the nodes of M and F, hence the
+            generated code, are the same as in a fresh graph.
+        """
         n = M.shape[0]
         self.n, self.jacobian = n, jacobian
         self.state = [*q, *u]
         self.params = list(params)
         args = [t, *self.state, *self.params]
         self.symbols = args
-        varying = (1 << (1 + 2 * n)) - 1  # t and the state
-        g = self.graph = Graph(args, varying)
-        self.symmetric = all(M[i, j] == M[j, i] for i in range(n) for j in range(i + 1, n))
-        self.pairs = [(i, j) for i in range(n) for j in range(i if self.symmetric else 0, n)]
-        try:
-            m_nodes = [g.node(M[i, j]) for i, j in self.pairs]
-            f_nodes = [g.node(F[i]) for i in range(n)]
-        except ValueError as exc:
-            raise ParameterError(f"the equations depend on symbols that are not parameters: {exc}") from exc
+        if base is not None:
+            g = self.graph = base.graph
+            self.symmetric, self.pairs = base.symmetric, base.pairs
+            m_nodes = base.outputs[: len(self.pairs)]
+            f_nodes = base.outputs[len(self.pairs) : len(self.pairs) + n]
+        else:
+            varying = (1 << (1 + 2 * n)) - 1  # t and the state
+            g = self.graph = Graph(args, varying)
+            self.symmetric = all(M[i, j] == M[j, i] for i in range(n) for j in range(i + 1, n))
+            self.pairs = [(i, j) for i in range(n) for j in range(i if self.symmetric else 0, n)]
+            try:
+                m_nodes = [g.node(M[i, j]) for i, j in self.pairs]
+                f_nodes = [g.node(F[i]) for i in range(n)]
+            except ValueError as exc:
+                raise ParameterError(f"the equations depend on symbols that are not parameters: {exc}") from exc
         self.outputs = m_nodes + f_nodes
         self.df: list[tuple[int, int]] = []
         self.dm: list[tuple[int, int]] = []
@@ -94,8 +116,7 @@ class Program:
         py = _argument_names(self.symbols)
         names = _c.c_names(py, _RESERVED)
         to_c = {s: sp.Symbol(c, **s.assumptions0) for s, c in zip(self.symbols, names, strict=True)}
-        printer = _c.SafeC99Printer()
-        fallback = lambda e: _c.printed(printer, e.xreplace(to_c))  # noqa: E731
+        fallback = _c.fallback_printer(to_c)
         ny = 1 + 2 * n
         hnames = [f"_h{j}" for j in range(len(self.hoisted))]
         setup = CPrinter(g, names, fallback).statements(self.hoisted, [f"_H[{j}]" for j in range(len(self.hoisted))])
@@ -104,8 +125,9 @@ class Program:
             self.outputs, [f"_O[{i}]" for i in range(len(self.outputs))], preset=preset
         )
         setup_units, _ = _c.kernel_units(f"{name}_setup_kernel", [("_P", names[ny:])], setup, "_H")
+        reserve = _DRIVER_TEXT + _c.text_cost(setup)
         main_units, _ = _c.kernel_units(
-            f"{name}_kernel", [("_T", names[:1]), ("_Y", names[1:ny]), ("_H", hnames)], main, "_O"
+            f"{name}_kernel", [("_T", names[:1]), ("_Y", names[1:ny]), ("_H", hnames)], main, "_O", reserve
         )
         listing = ", ".join(comment_text(s.name) for s in self.params) or "none"
         header = [
@@ -119,8 +141,7 @@ class Program:
             f"   int {name}_jac(double t, const double *y, const double *h, double *J)       J = df/dy, 2n x 2n",
             "   Each returns 0, or 1 (+ row index for the batch) when the mass matrix is singular.",
             f"   Build: cc -O1 -fno-math-errno -std=c99 -fPIC -shared -o {name}.so {name}.c -lm */",
-            "#include <math.h>",
-            _c.C_HELPERS,
+            _c.C_PRELUDE,
             f"const int {name}_hoisted = {len(self.hoisted)};",
             "",
             _SOLVE,
@@ -339,6 +360,10 @@ static int symosc_solve(int n, double *A, double *B, int nrhs)
 """
 
 _RESERVED = frozenset({"symosc_solve"})
+#: The build cost (:func:`symosc.numeric._c.text_cost`) of the solver and the drivers of :meth:`Program.c_source`:
+#: the first translation unit, which holds them and the set-up kernel, gets that much less of the kernel.  Chosen
+#: for the shortest build of the two units of the n = 10 and 20 pendulums' right-hand sides and Jacobians (GCC 12).
+_DRIVER_TEXT = 14000
 
 
 class CFirstOrder:
