@@ -221,22 +221,29 @@ def symengine_outputs(case: Case, jacobian: bool):
 
 
 def builds(sizes: tuple[int, ...], repeats: int) -> None:
-    """Cold builds (fresh disk cache) of the rhs and the analytic Jacobian: symosc C vs symengine LLVM, best of
-    ``repeats`` alternating runs (wall and CPU seconds); M and F are derived before the clock starts."""
+    """Cold builds (fresh disk cache) of the rhs and the analytic Jacobian: symosc C and symosc LLVM (the default
+    where no C compiler works) vs symengine LLVM, best of ``repeats`` alternating runs (wall and CPU seconds); M and
+    F are derived before the clock starts."""
     print(f"cold builds, best of {repeats} alternating runs; derivation of M and F excluded; wall s (CPU s)")
-    print(f"{'n':>3} {'what':<9}{'symosc c':>18}{'symengine llvm':>18}{'ratio (wall)':>14}")
+    head = f"{'n':>3} {'what':<9}{'symosc c':>18}{'symosc llvm':>18}{'symengine llvm':>18}"
+    print(head + f"{'c / symengine':>15}{'llvm / symengine':>18}")
     for n in sizes:
         case = Case(n)
         for what, jac in (("rhs", False), ("jacobian", True)):
-            ours, theirs = [], []
+            runs: dict[str, list] = {"c": [], "llvm": [], "symengine": []}
             for _ in range(repeats):
-                _fresh_cache()
-                fo = FirstOrderSystem(case.system)
-                build = fo.jacobian if jac else fo.rhs
-                ours.append(_timed(lambda b=build, c=case: b(c.values, backend="c")))
-                theirs.append(_timed(lambda c=case, j=jac: symengine_outputs(c, j)))
-            (ow, oc), (tw, tc) = min(ours), min(theirs)
-            print(f"{n:3d} {what:<9}{ow:10.2f} ({oc:5.2f}){tw:10.2f} ({tc:5.2f}){ow / tw:14.2f}", flush=True)
+                for backend in ("c", "llvm"):
+                    _fresh_cache()
+                    fo = FirstOrderSystem(case.system)
+                    build = fo.jacobian if jac else fo.rhs
+                    runs[backend].append(_timed(lambda b=build, k=backend, c=case: b(c.values, backend=k)))
+                runs["symengine"].append(_timed(lambda c=case, j=jac: symengine_outputs(c, j)))
+            (cw, cc), (lw, lc), (tw, tc) = (min(runs[k]) for k in ("c", "llvm", "symengine"))
+            print(
+                f"{n:3d} {what:<9}{cw:10.2f} ({cc:5.2f}){lw:10.2f} ({lc:5.2f}){tw:10.2f} ({tc:5.2f})"
+                f"{cw / tw:15.2f}{lw / tw:18.2f}",
+                flush=True,
+            )
 
 
 def defaults(sizes: tuple[int, ...]) -> None:

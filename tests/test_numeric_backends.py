@@ -284,6 +284,22 @@ def test_unprintable_function_is_named():
         compile(sp.exp(sp.I * x), [x], backend="c")
 
 
+@pytest.mark.parametrize("backend", COMPILED)
+def test_a_dummy_argument_is_its_own_argument(backend):
+    # symengine knows a symbol by its name, and converts a Dummy to a symbol of its own: the argument must still
+    # be the one in the expression
+    d = sp.Dummy("d")
+    f = compile([sp.sin(d) + 3 * x, d * x], [d, x], backend=backend)
+    np.testing.assert_allclose(f(0.25, -1.0), [np.sin(0.25) - 3.0, -0.25], rtol=1e-15)
+
+
+def test_an_llvm_source_is_written_when_it_is_read():
+    f = compile(EXPRS, [x, y, m], backend="llvm")
+    assert not isinstance(f._source, str)  # the evaluator needs no text: nothing printed at build time
+    text = f.source
+    assert isinstance(f._source, str) and f.source is text and "symengine.Lambdify" in text
+
+
 @pytest.mark.parametrize("backend", ["numpy", "c", "llvm"])
 def test_nan_and_wrong_signs_are_named(backend):
     f = compile(EXPRS, [x, y, m], backend=backend)

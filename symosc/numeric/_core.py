@@ -80,13 +80,20 @@ class CompiledFunction:
     args: tuple[sp.Symbol, ...]
     backend: str
     shape: tuple[int, ...] | None
-    source: str
+    _source: str | Callable[[], str] = field(repr=False, compare=False)  # text, or what writes it on first use
     dps: int | None
     check: bool
     name: str = ""
-    exprs: tuple = field(default=(), repr=False, compare=False)
+    exprs: tuple = field(default=(), repr=False)
     _func: Callable = field(default=None, repr=False, compare=False)
     _checked: Callable = field(default=None, repr=False, compare=False)
+
+    @property
+    def source(self) -> str:
+        """The generated code (written on first access for "llvm", whose evaluator needs no source text)."""
+        if not isinstance(self._source, str):
+            object.__setattr__(self, "_source", self._source())
+        return self._source
 
     @property
     def raw(self) -> Callable:

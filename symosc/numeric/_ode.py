@@ -75,6 +75,8 @@ class Program:
             except ValueError as exc:
                 raise ParameterError(f"the equations depend on symbols that are not parameters: {exc}") from exc
         self.outputs = m_nodes + f_nodes
+        #: The SymPy expressions of the M and F outputs as given (the llvm backend compiles them directly).
+        self.given = base.given if base is not None else [M[i, j] for i, j in self.pairs] + [F[i] for i in range(n)]
         self.df: list[tuple[int, int]] = []
         self.dm: list[tuple[int, int]] = []
         if jacobian:
@@ -303,7 +305,9 @@ class Program:
         """The outputs by symengine's LLVM JIT, in the interface of :meth:`python_functions` (no set-up step)."""
         from ._core import compile
 
-        fn = compile([self.graph.expression(k) for k in self.outputs], self.symbols, backend="llvm", check=False)
+        given = len(self.given)  # M and F as given; the derivatives rebuilt from the graph
+        exprs = self.given + [self.graph.expression(k) for k in self.outputs[given:]]
+        fn = compile(exprs, self.symbols, backend="llvm", check=False)
         raw = fn.raw
 
         def scalar(t: float, y: list, h: list) -> np.ndarray:
@@ -312,7 +316,7 @@ class Program:
         def array(t: float, rows: list, h: list) -> np.ndarray:
             return raw(t, *rows, *h).T
 
-        return {"setup": list, "scalar": scalar, "array": array, "source": fn.source}
+        return {"setup": list, "scalar": scalar, "array": array, "source": lambda: fn.source}
 
 
 def _printed(printer: Any, expr: sp.Expr) -> str:
@@ -424,11 +428,18 @@ class NumpyFirstOrder:
         self.n, self.pairs, self.symmetric = program.n, program.pairs, program.symmetric
         self.df, self.dm = program.df, program.dm
         self.scalar, self.array = functions["scalar"], functions["array"]
-        self.source = functions["source"]
+        self._source = functions["source"]  # the text, or what writes it (llvm: on first access)
         self.h = functions["setup"]([float(v) for v in values])
         rows = [r for r, _ in self.pairs]
         cols = [c for _, c in self.pairs]
         self.index = (np.array(rows + cols), np.array(cols + rows)) if self.symmetric else (rows, cols)
+
+    @property
+    def source(self) -> str:
+        """The generated code."""
+        if callable(self._source):
+            self._source = self._source()
+        return self._source
 
     def _values(self, t: float, y: np.ndarray) -> np.ndarray:
         """Outputs for one state (1-D) or a batch (2n, k) -> (k, nout)."""
