@@ -27,6 +27,7 @@ exclude_patterns = ["_build", "**/.ipynb_checkpoints"]
 nb_execution_mode = "off"  # render the outputs stored in the notebooks; the test suite executes them
 myst_heading_anchors = 3
 myst_enable_extensions = ["dollarmath"]
+templates_path = ["_templates"]
 autosummary_generate = True
 autodoc_typehints = "none"
 numpydoc_show_class_members = False

@@ -84,3 +84,7 @@ def test_docs_build_without_warnings_and_list_every_public_object(tmp_path):
     headline = {id(getattr(importlib.import_module(m), n)) for m, n in HEADLINE}
     assert all((generated / f"{documented[i]}.doctree").exists() for i in headline)
     assert (read / "notebooks" / "inverted_double_pendulum.doctree").exists()
+    # a class page carries its methods' whole docstrings (parameters and all), not only their summary lines
+    page = (generated / "symosc.mechanics.FirstOrderSystem.doctree").read_bytes()
+    assert b"elimination with partial pivoting" in page  # from the Parameters section of rhs()
+    assert b"M^{-1} (dF/dy - (dM/dy) M^{-1} F)" in page  # from the body of jacobian()
