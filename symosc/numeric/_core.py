@@ -337,7 +337,7 @@ def compile(
         _check_function_name(name, backend)
     fname = name or default
     originals = tuple(items)
-    items = [_evaluate_root_constants(e, (dps or mpmath.mp.dps) + 10 if backend == "mpmath" else 20) for e in items]
+    items = _evaluate_root_constants(items, (dps or mpmath.mp.dps) + 10 if backend == "mpmath" else 20)
     if backend == "llvm":
         from . import _llvm
 
@@ -437,14 +437,16 @@ def _auto(exprs: Any, arg_syms: list, **options: Any) -> CompiledFunction:
     return compile(exprs, arg_syms, backend="numpy", **options)
 
 
-def _evaluate_root_constants(expr: sp.Expr, digits: int) -> sp.Expr:
-    """Replace algebraic-number constants (``CRootOf``) by floats with ``digits`` significant digits.
+def _evaluate_root_constants(items: list[sp.Expr], digits: int) -> list[sp.Expr]:
+    """``items`` with algebraic-number constants (``CRootOf``) replaced by floats of ``digits`` significant digits.
 
     Exact matrix functions of matrices with irreducible cubic (or higher) characteristic polynomials
     contain ``CRootOf`` objects, which no numeric printer knows.
     """
-    roots = expr.atoms(sp.CRootOf)
-    return expr.xreplace({r: r.evalf(digits) for r in roots}) if roots else expr
+    from ._dag import subexpressions
+
+    roots = {r: r.evalf(digits) for r in subexpressions(items) if isinstance(r, sp.CRootOf)}
+    return [e.xreplace(roots) for e in items] if roots else list(items)
 
 
 #: Names generated Python code uses besides its own "_"-prefixed ones: modules and the builtins it calls (an

@@ -15,7 +15,7 @@ an opaque SymPy expression, printed by SymPy's printers and differentiated by Sy
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Iterator, Sequence
 
 import sympy as sp
 
@@ -354,6 +354,22 @@ class Graph:
         if expr.has(sp.Derivative, sp.Subs):
             raise NotImplementedError(f"no closed-form derivative of {cls.__name__} in argument {pos + 1}")
         return self.node(expr, dict(zip(dummies, children, strict=True)))
+
+
+def subexpressions(exprs: Iterable[sp.Basic]) -> Iterator[sp.Basic]:
+    """Every distinct subexpression of ``exprs`` (the expressions themselves included), once each.
+
+    ``Basic.atoms`` and ``Basic.has`` visit a subexpression at every place it occurs; the equations of motion share
+    most of theirs, so this walk is much shorter.
+    """
+    seen: set = set()
+    stack = list(exprs)
+    while stack:
+        e = stack.pop()
+        if e not in seen:
+            seen.add(e)
+            yield e
+            stack.extend(e.args)
 
 
 def _is_constant(expr: sp.Expr) -> bool:

@@ -85,22 +85,17 @@ def build(fname: str, arg_syms: list[sp.Symbol], items: list[sp.Expr], shape) ->
 
 def _atoms(items: list[sp.Expr]) -> tuple[set, set, bool]:
     """The rationals (integers included), the function applications, and whether the imaginary unit occurs, in
-    ``items``; a subexpression shared by several places is visited once (``Basic.atoms`` walks every occurrence)."""
-    seen: set = set()
-    stack = list(items)
+    ``items`` (each distinct subexpression visited once)."""
+    from ._dag import subexpressions
+
     rationals, functions, imaginary = set(), set(), False
-    while stack:
-        e = stack.pop()
-        if e in seen:
-            continue
-        seen.add(e)
+    for e in subexpressions(items):
         if isinstance(e, sp.Rational):
             rationals.add(e)
         elif isinstance(e, sp.Function):
             functions.add(e)
         elif e is sp.I:
             imaginary = True
-        stack.extend(e.args)
     return rationals, functions, imaginary
 
 
