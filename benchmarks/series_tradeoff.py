@@ -5,10 +5,11 @@ DOP853 at rtol 1e-12: the reference the user would otherwise compute), and times
 arithmetic against one shooting solve.  Writes docs/img/series_tradeoff.png.
 
 ``--exact-growth`` times only the exact series of high order (relaxed block products) against the former
-pair-by-pair engine and the float series, with the local cost exponents, and checks that both exact engines give
-the same rationals.
+pair-by-pair engine and the float series, with the local cost exponents, the size of the exact result (bits of all
+its numerators and denominators, whose growth exponent bounds the cost's from below), and checks that both exact
+engines give the same rationals.
 
-    python benchmarks/series_tradeoff.py [--quick | --exact-growth]
+    python benchmarks/series_tradeoff.py [--quick | --exact-growth [--max-order 200]]
 """
 
 from __future__ import annotations
@@ -98,31 +99,70 @@ def high_order() -> None:
     print(f"radius of convergence of the frequency series from the exact eps^100 series: {radius}")
 
 
-def exact_growth() -> None:
-    """Exact van der Pol to eps^150: CPU time per order, local exponent d log t / d log N, the pairwise engine."""
+def output_bits(lc) -> tuple[int, int, int]:
+    """Size of the exact result: (bits of the harmonics, bits of the scalar series, bits of the largest coefficient).
+
+    Every coefficient counts as the bits of its numerator plus those of its denominator in lowest terms: the
+    harmonics ``cos``/``sin`` of ``x_0 .. x_N`` and the coefficients of frequency, period, amplitude and Floquet
+    exponent.  Any exact algorithm writes at least this many bits, so its cost cannot grow more slowly.
+    """
+    from fractions import Fraction
+
+    def size(q: Fraction) -> int:
+        return abs(q.numerator).bit_length() + q.denominator.bit_length()
+
+    harmonics = largest = 0
+    for den, cos, sin in lc._harmonics._raw:
+        for c in (*cos, *sin):
+            if c:
+                b = size(Fraction(c, den))
+                harmonics += b
+                largest = max(largest, b)
+    scalars = 0
+    for series in (lc.frequency, lc.period, lc.amplitude, lc.floquet_exponent):
+        scalars += sum(size(Fraction(int(c.p), int(c.q))) for c in series.coefficients if c.is_Rational)
+    return harmonics, scalars, largest
+
+
+def _exponent(prev: tuple[int, float] | None, n: int, value: float) -> str:
+    """Local growth exponent ``d log value / d log n`` from the previous row, right-aligned in 9 columns."""
+    if prev is None:
+        return " " * 9
     import math
 
+    return f"{math.log(value / prev[1]) / math.log(n / prev[0]):9.2f}"
+
+
+def exact_growth(max_order: int = 150) -> None:
+    """Exact van der Pol to eps^max_order: CPU time per order, local exponent d log t / d log N, the size of the
+    result (its exponent is a lower bound for the cost's), and the pairwise engine up to order 100."""
     import symosc.nonlinear.series.poincare as poincare
 
     relaxed = poincare.relaxed_exact_arith
     limit_cycle(VDP, 24)  # warm: imports, FLINT, caches
     print("== exact series (van der Pol): CPU seconds of this process, one run each ==")
-    print(f"{'order':>5} {'relaxed':>9} {'exponent':>9} {'pairwise':>9} {'exponent':>9} {'same':>5}")
-    prev = {}
-    for n in (48, 60, 80, 100, 120, 150):
+    print("   output: Mbit of all exact coefficients (numerator + denominator, lowest terms), harmonics + scalars;")
+    print("   largest: bits of the largest coefficient; ns/bit: CPU time per output bit")
+    print(
+        f"{'order':>5} {'relaxed':>9} {'exponent':>9} {'output':>9} {'exponent':>9} {'largest':>8} {'ns/bit':>7} "
+        f"{'pairwise':>9} {'exponent':>9} {'same':>5}"
+    )
+    prev: dict[str, tuple[int, float]] = {}
+    orders = [n for n in (48, 60, 80, 100, 120, 150, 200) if n <= max_order]
+    for n in orders:
         lc, _, t_new = timed_cpu(lambda n=n: limit_cycle(VDP, n))
-        row = f"{n:>5d} {t_new:9.2f} "
-        row += f"{math.log(t_new / prev['new'][1]) / math.log(n / prev['new'][0]):9.2f} " if "new" in prev else " " * 10
-        prev["new"] = (n, t_new)
+        harmonics, scalars, largest = output_bits(lc)
+        bits = harmonics + scalars
+        row = f"{n:>5d} {t_new:9.2f} {_exponent(prev.get('new'), n, t_new)} "
+        row += f"{bits / 1e6:9.2f} {_exponent(prev.get('bits'), n, bits)} {largest:8d} {t_new / bits * 1e9:7.0f} "
+        prev["new"], prev["bits"] = (n, t_new), (n, bits)
         if n <= 100:
             poincare.relaxed_exact_arith = lambda: None
             try:
                 old, _, t_old = timed_cpu(lambda n=n: limit_cycle(VDP, n))
             finally:
                 poincare.relaxed_exact_arith = relaxed
-            expo = (
-                f"{math.log(t_old / prev['old'][1]) / math.log(n / prev['old'][0]):9.2f}" if "old" in prev else " " * 9
-            )
+            expo = _exponent(prev.get("old"), n, t_old)
             prev["old"] = (n, t_old)
             same = all(
                 getattr(lc, k).coefficients == getattr(old, k).coefficients
@@ -138,9 +178,10 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--exact-growth", action="store_true", help="only the high-order exact timings")
+    ap.add_argument("--max-order", type=int, default=150, help="highest order of --exact-growth (up to 200)")
     args = ap.parse_args()
     if args.exact_growth:
-        exact_growth()
+        exact_growth(args.max_order)
         return
     orders = [2, 4, 8, 12, 16, 24] + ([] if args.quick else [32, 48, 64])
     eps_values = [0.1, 0.5, 1.0]

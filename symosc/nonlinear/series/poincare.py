@@ -383,8 +383,9 @@ def limit_cycle(
     if arithmetic == "exact" and order > _MAX_ORDER:
         raise ParameterError(
             f"order {order} is beyond the supported range (<= {_MAX_ORDER} in exact arithmetic): the numbers grow "
-            "like order**2 bits and the cost about as order**4.5 (van der Pol: order 100 takes about 2 s, "
-            "order 150 about 11 s, order 200 about 40 s of CPU time); for the radius of convergence order 40 is "
+            "like order**2 bits, so the exact result (every harmonic of every order) has about order**4 bits and "
+            "the cost grows about as order**4.5 (van der Pol: order 100 takes about 2 s, order 150 about 11 s, "
+            "order 200 about 40 s of CPU time); for the radius of convergence order 40 is "
             "ample, evaluate_pade continues the series beyond it, and arithmetic='mpmath' or 'float' is much cheaper"
         )
     f = sp.sympify(f)
