@@ -16,7 +16,7 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from symosc import ParameterError
@@ -52,13 +52,22 @@ def _reference(xv: float, yv: float, mv: float) -> list[float]:
     return [float(e.evalf(30, subs=subs)) for e in EXPRS]
 
 
+def _term_sizes(xv: float, yv: float, mv: float) -> np.ndarray:
+    """The sum of the absolute values of each expression's terms: a sum that cancels (``erf(3) - erfc(0)`` is
+    -2.2e-5) is known only to rounding errors of this size."""
+    subs = {x: sp.Float(xv, 30), y: sp.Float(yv, 30), m: sp.Float(mv, 30)}
+    return np.array([float(sum(abs(a.evalf(30, subs=subs)) for a in sp.Add.make_args(e))) for e in EXPRS])
+
+
 @settings(max_examples=40, deadline=None)
 @given(st.floats(-3, 3, allow_subnormal=False), st.floats(-2, 2, allow_subnormal=False), st.floats(0.01, 5))
+@example(3.0, 0.0, 1.0)  # the last expression cancels to erf(3) - 1 = -2.2e-5
 def test_all_backends_agree_with_30_digit_evalf(compiled, xv, yv, mv):
     ref = np.array(_reference(xv, yv, mv))
+    allowed = 1e-12 * np.abs(ref) + 1e-14 * _term_sizes(xv, yv, mv)
     for backend, f in compiled.items():
-        np.testing.assert_allclose(f(xv, yv, mv), ref, rtol=1e-12, atol=1e-300, err_msg=backend)
-        np.testing.assert_allclose(f.raw(xv, yv, mv), ref, rtol=1e-12, atol=1e-300, err_msg=backend)
+        for got in (f(xv, yv, mv), f.raw(xv, yv, mv)):
+            assert np.all(np.abs(got - ref) <= allowed), (backend, got, ref, allowed)
 
 
 def test_batched_calls_match_pointwise_and_broadcast(compiled):
