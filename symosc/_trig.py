@@ -52,8 +52,26 @@ class _Cos:
     def __call__(self, f: sp.Expr) -> sp.Expr:
         out = self.memo.get(f)
         if out is None:
-            out = self.memo[f] = sp.cos(f.args[0]) if isinstance(f, sp.sin) else sp.cos(f.base.args[0]) ** 2
+            out = self.memo[f] = _cos_of(f.args[0]) if isinstance(f, sp.sin) else _cos_of(f.base.args[0]) ** 2
         return out
+
+
+def plain_argument(u: sp.Expr) -> bool:
+    """Whether ``u`` is a symbol or a sum of rational multiples of symbols (``phi1 - phi2``).
+
+    Such an argument of an evaluated ``sin`` or ``cos`` is already in the canonical form that both functions share
+    (they normalise the sign of the argument the same way, and it has no multiple of pi to shift): the other
+    function of it is built without SymPy's evaluation, whose assumption queries cost most of the time on a cold
+    cache.
+    """
+    if u.is_Symbol:
+        return True
+    return u.is_Add and all(a.as_coeff_Mul()[1].is_Symbol and a.as_coeff_Mul()[0].is_Rational for a in u.args)
+
+
+def _cos_of(u: sp.Expr) -> sp.Expr:
+    """``cos(u)`` for the argument ``u`` of an evaluated ``sin(u)`` (see :func:`plain_argument`)."""
+    return sp.cos(u, evaluate=False) if plain_argument(u) else sp.cos(u)
 
 
 def _partners(factors: list, cos: _Cos) -> Iterable[tuple[frozenset, Any, int]]:

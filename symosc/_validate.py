@@ -565,6 +565,25 @@ def validated(fn):
         kinds = _docstring_parameters(inspect.getdoc(fn) or "")
         return frozenset(p for p in maybe_refused if not _documented_string(kinds.get(p, ("", ""))[0]))
 
+    positional_names = [p for p, par in params.items() if par.kind in (par.POSITIONAL_ONLY, par.POSITIONAL_OR_KEYWORD)]
+    var_positional = next((p for p, par in params.items() if par.kind is par.VAR_POSITIONAL), None)
+    keyword_names = frozenset(
+        p for p, par in params.items() if par.kind in (par.POSITIONAL_OR_KEYWORD, par.KEYWORD_ONLY)
+    )
+
+    def string_may_be_refused(args, kwargs) -> bool:
+        """Whether a string argument goes to a parameter that may refuse strings (True when unsure: extra positional
+        arguments, unknown or renamed keywords), so that the signature is bound only then."""
+        for i, value in enumerate(args):
+            if isinstance(value, str | bytes):
+                target = positional_names[i] if i < len(positional_names) else var_positional
+                if target is None or target in maybe_refused:
+                    return True
+        for key, value in kwargs.items():
+            if isinstance(value, str | bytes) and (key not in keyword_names or key in maybe_refused):
+                return True
+        return False
+
     conventional_names = frozenset(conventional)
     # positional index from which a conventional parameter can be given positionally (never, if none)
     first_position = min((i for i, p in enumerate(params) if p in conventional), default=1 << 30)
@@ -674,11 +693,8 @@ def validated(fn):
                 if value is None:
                     refuse_none(args, kwargs)
                     break
-        if maybe_refused:
-            for value in (*args, *kwargs.values()):
-                if isinstance(value, str | bytes):
-                    refuse_strings(args, kwargs)
-                    break
+        if maybe_refused and string_may_be_refused(args, kwargs):
+            refuse_strings(args, kwargs)
         if len(args) > first_position or (kwargs and not conventional_names.isdisjoint(kwargs)):
             for pname, value in bind(args, kwargs).arguments.items():
                 if pname in conventional:

@@ -20,6 +20,7 @@ from typing import NamedTuple
 
 import sympy as sp
 
+from .._trig import plain_argument
 from ..errors import ModelError
 
 Monomial = tuple[int, ...]  # sorted velocity indices: () constant, (i,) linear, (i, j) quadratic with i <= j
@@ -54,7 +55,7 @@ def product_group(dep: sp.Expr, coeff: sp.Expr) -> Group:
     """``coeff * dep`` as a :class:`Group` (a numeric factor of ``dep`` moved into the coefficient)."""
     number, rest = sp.sympify(dep).as_coeff_Mul()
     powers = tuple(f.as_base_exp() for f in sp.Mul.make_args(rest) if f is not sp.S.One)
-    return Group(rest, number * coeff, powers)
+    return Group(rest, coeff if number is sp.S.One else number * coeff, powers)
 
 
 class _Depends:
@@ -170,37 +171,33 @@ def group_terms(terms: Iterable[Factors], variables: Iterable[sp.Symbol]) -> Gro
     and factors common to all the terms of a coefficient are taken out of its sum (``l1*l2*(m2 + m3)``).
     """
     depends = variables if isinstance(variables, _Depends) else _Depends(variables)
-    ids: dict[sp.Expr, int] = {}
-    split: dict[sp.Expr, tuple[sp.Expr, int | sp.Expr]] = {}  # factor -> (base, exponent), exponents as ints
-    groups: dict[tuple, dict[tuple, Fraction | sp.Expr]] = {}
-    one = sp.S.One
-    numbers: dict[sp.Expr, Fraction | sp.Expr] = {}  # rational coefficients as Fractions: SymPy arithmetic is slow
+    ids: dict[sp.Expr, int] = {}  # base -> its index in the keys
+    # id(factor) -> what it contributes (see _factor_info); `seen` keeps the factors alive (no id is reused)
+    info: dict[int, tuple] = {}
+    seen: list[sp.Expr] = []
+    groups: dict[tuple, dict[tuple, int | Fraction | sp.Expr]] = {}
     for term in terms:
-        coeff: Fraction | sp.Expr = Fraction(1)
-        dep: dict[sp.Expr, int | sp.Expr] = {}
-        ind: dict[sp.Expr, int | sp.Expr] = {}
+        coeff: int | Fraction | sp.Expr | None = None  # None: 1 (no number yet)
+        dep: dict[int, int | sp.Expr] = {}
+        ind: dict[int, int | sp.Expr] = {}
         for f in term:
-            if f.is_Number:
-                if f is not one:
-                    v = numbers.get(f)
-                    if v is None:
-                        v = numbers[f] = Fraction(int(f.p), int(f.q)) if f.is_Rational else f
-                    coeff = coeff * v
-                continue
-            be = split.get(f)
-            if be is None:
-                if f.is_Pow and f.exp.is_Rational:
-                    be = (f.base, int(f.exp) if f.exp.is_Integer else f.exp)
-                else:
-                    be = (f, 1)
-                split[f] = be
-            base, e = be
-            target = dep if depends(base) else ind
-            target[base] = target.get(base, 0) + e
-        if coeff == 0:
+            got = info.get(id(f))
+            if got is None:
+                got = info[id(f)] = _factor_info(f, ids, depends)
+                seen.append(f)
+            kind, b, e = got
+            if kind == _DEPENDENT:
+                dep[b] = dep.get(b, 0) + e
+            elif kind == _CONSTANT:
+                ind[b] = ind.get(b, 0) + e
+            elif kind == _NUMBER:
+                coeff = b if coeff is None else coeff * b
+        if coeff is None:
+            coeff = 1
+        elif coeff == 0:
             continue
-        dkey = tuple(sorted((ids.setdefault(b, len(ids)), e) for b, e in dep.items() if e != 0))
-        ikey = tuple(sorted((ids.setdefault(b, len(ids)), e) for b, e in ind.items() if e != 0))
+        dkey = tuple(sorted((b, e) for b, e in dep.items() if e != 0))
+        ikey = tuple(sorted((b, e) for b, e in ind.items() if e != 0))
         sums = groups.setdefault(dkey, {})
         old = sums.get(ikey)
         sums[ikey] = coeff if old is None else old + coeff
@@ -216,6 +213,22 @@ def group_terms(terms: Iterable[Factors], variables: Iterable[sp.Symbol]) -> Gro
     return out
 
 
+_ONE, _NUMBER, _DEPENDENT, _CONSTANT = range(4)  # kinds of factors in group_terms
+
+
+def _factor_info(f: sp.Expr, ids: dict[sp.Expr, int], depends: _Depends) -> tuple:
+    """What the factor ``f`` of a term contributes: ``(_ONE, None, None)``, ``(_NUMBER, value, None)`` (an int or
+    a Fraction for a rational), or ``(_DEPENDENT or _CONSTANT, index of its base in ids, exponent)`` (an int
+    exponent when it is an integer); a new base is given the next index."""
+    if f.is_Number:
+        return (_ONE, None, None) if f is sp.S.One else (_NUMBER, _python_number(f), None)
+    if f.is_Pow and f.exp.is_Rational:
+        base, e = f.base, int(f.exp) if f.exp.is_Integer else f.exp
+    else:
+        base, e = f, 1
+    return (_DEPENDENT if depends(base) else _CONSTANT, ids.setdefault(base, len(ids)), e)
+
+
 def _coefficient(entries: list[tuple[tuple, sp.Expr]], bases: list[sp.Expr]) -> sp.Expr:
     """``sum_k c_k prod_b b**e_bk`` with the rational content of the ``c_k`` and the factors common to every
     term taken out of the sum (``l1*l2*(m2 + m3)/2``)."""
@@ -228,8 +241,9 @@ def _coefficient(entries: list[tuple[tuple, sp.Expr]], bases: list[sp.Expr]) -> 
     content = sp.S.One
     if len(entries) > 1 and all(c.is_Rational for _, c in entries):
         content = sp.Rational(
-            math.gcd(*(int(c.p) for _, c in entries)), math.lcm(*(int(c.q) for _, c in entries))
-        ) * sp.sign(entries[0][1])
+            math.gcd(*(int(c.p) for _, c in entries)) * (-1 if entries[0][1].p < 0 else 1),
+            math.lcm(*(int(c.q) for _, c in entries)),
+        )
     terms = []
     for ikey, c in entries:
         rest = [_power(bases[b], e - common.get(b, 0)) for b, e in ikey if e != common.get(b, 0)]
@@ -238,7 +252,14 @@ def _coefficient(entries: list[tuple[tuple, sp.Expr]], bases: list[sp.Expr]) -> 
     return sp.Mul(content, *(_power(bases[b], e) for b, e in common.items()), sp.Add(*terms))
 
 
-def _number(c: Fraction | sp.Expr) -> sp.Expr:
+def _python_number(f: sp.Expr) -> int | Fraction | sp.Expr:
+    """A SymPy number as an int (integers) or a Fraction (rationals); other numbers as they are."""
+    if f.is_Integer:
+        return int(f.p)
+    return Fraction(int(f.p), int(f.q)) if f.is_Rational else f
+
+
+def _number(c: int | Fraction | sp.Expr) -> sp.Expr:
     return sp.Rational(c.numerator, c.denominator) if isinstance(c, Fraction) else sp.sympify(c)
 
 
@@ -246,13 +267,71 @@ def _power(base: sp.Expr, e: int | sp.Expr) -> sp.Expr:
     return base if e == 1 else base**e
 
 
-def grouped_gradient(groups: Groups, variables: Sequence[sp.Symbol]) -> list[list[sp.Expr]]:
-    """Gradient of ``sum c_k d_k``: per variable the list of pieces ``c_k * d(d_k)/dv``."""
+def power(base: sp.Expr, exp: sp.Expr | int) -> sp.Expr:
+    """``base**exp``, built without SymPy's evaluation when that would leave it as it is
+    (:func:`_power_fixed_point`)."""
+    exp = sp.S(exp)
+    return sp.Pow(base, exp, evaluate=False) if _power_fixed_point(base, exp) else base**exp
+
+
+def trig(func: type[sp.Function], u: sp.Expr) -> sp.Expr:
+    """``sin(u)`` or ``cos(u)``, built without SymPy's evaluation when that would leave it as it is
+    (:func:`_trig_fixed_point`)."""
+    return func(u, evaluate=False) if _trig_fixed_point(u) else func(u)
+
+
+def _power_fixed_point(base: sp.Expr, exp: sp.Expr) -> bool:
+    """Whether ``base**exp`` evaluates to itself: ``exp`` an integer > 1 and ``base`` a sum with a free symbol that
+    :func:`_finite_sum` accepts (SymPy then only asks whether a term of a two-term sum is infinite, which such a sum
+    cannot be, and leaves the power as it is; the question costs assumption queries on a cold cache)."""
+    return exp.is_Integer and exp > 1 and base.is_Add and not base.is_number and _finite_sum(base)
+
+
+def _finite_sum(e: sp.Expr) -> bool:
+    """Whether ``e`` is built from finite rationals, symbols not declared infinite, ``sin``, ``cos``, sums, products
+    and powers with positive integer exponents only: no term of such an expression can be infinite."""
+    if e.is_Symbol:
+        return e.is_infinite is not True
+    if e.is_Rational:
+        return True
+    if isinstance(e, sp.Add | sp.Mul | sp.sin | sp.cos):
+        return all(_finite_sum(a) for a in e.args)
+    if e.is_Pow:
+        return e.exp.is_Integer and e.exp > 0 and _finite_sum(e.base)
+    return False
+
+
+def _trig_fixed_point(u: sp.Expr) -> bool:
+    """Whether ``sin(u)`` and ``cos(u)`` evaluate to themselves: ``u`` a symbol that is not known to be zero or
+    infinite (their evaluation, with its assumption queries, is then skipped)."""
+    return u.is_Symbol and u.is_zero is not True and u.is_finite is not False
+
+
+class Piece(NamedTuple):
+    """``number * prod(constants) * prod(dependent)``, a term of a gradient kept as its factors: what splitting the
+    canonical product ``sympy.Mul(number, *constants, *dependent)`` into its number, its factors free of the variables
+    and those that depend on them gives (each tuple in the product's order)."""
+
+    number: sp.Expr
+    constants: Factors
+    dependent: Factors
+
+
+def grouped_gradient(
+    groups: Groups, variables: Sequence[sp.Symbol], depends: _Depends | None = None
+) -> list[list[sp.Expr | Piece]]:
+    """Gradient of ``sum c_k d_k``: per variable the list of pieces ``c_k * d(d_k)/dv``.
+
+    With ``depends`` (the test for the variables the coefficients ``c_k`` are free of), the pieces of a group with a
+    single dependent factor whose derivative is a number times one dependent factor come as :class:`Piece` (no
+    product is built: the derivation of a chain has many such pieces); the others are products.
+    """
     index = {v: i for i, v in enumerate(variables)}
-    out: list[list[sp.Expr]] = [[] for _ in variables]
+    out: list[list[sp.Expr | Piece]] = [[] for _ in variables]
     memo: dict[sp.Expr, list[int]] = {}
     for g in groups:
         factors = [b**e for b, e in g.powers]
+        single = depends is not None and len(g.powers) == 1 and g.powers[0][1] == 1
         for pos, (base, e) in enumerate(g.powers):
             found = memo.get(base)
             if found is None:
@@ -261,9 +340,27 @@ def grouped_gradient(groups: Groups, variables: Sequence[sp.Symbol]) -> list[lis
                 d = _d_factor(base, variables[i])
                 if d == 0:
                     continue
-                outer = e * base ** (e - 1) if e != 1 else sp.S.One
-                out[i].append(sp.Mul(g.coeff, outer, d, *factors[:pos], *factors[pos + 1 :]))
+                piece = _piece(g.coeff, d, depends) if single else None
+                if piece is None:
+                    outer = e * base ** (e - 1) if e != 1 else sp.S.One
+                    piece = sp.Mul(g.coeff, outer, d, *factors[:pos], *factors[pos + 1 :])
+                out[i].append(piece)
     return out
+
+
+def _piece(coeff: sp.Expr, d: sp.Expr, depends: _Depends) -> Piece | None:
+    """``coeff * d`` as a :class:`Piece` when ``d`` is a number times one factor that depends on the variables
+    (``-sin(phi1 - phi2)``), else None.
+
+    The product's factors are then those of ``coeff`` (free of the variables, already in canonical order) and that
+    factor: no two share a base, so the product would only sort them and multiply the two numbers.
+    """
+    number, factor = d.as_coeff_Mul()
+    if factor.is_Mul or factor.is_Add or factor.is_Number or not depends(factor):
+        return None
+    c_number, rest = coeff.as_coeff_Mul()
+    constants = () if rest is sp.S.One else sp.Mul.make_args(rest)
+    return Piece(c_number * number, constants, (factor,))
 
 
 def _d_factor(f: sp.Expr, v: sp.Symbol) -> sp.Expr:
@@ -287,11 +384,8 @@ def _partner(f: sp.Expr, u: sp.Expr) -> sp.Expr:
     argument is normalised the same way for sin and cos, and such a ``u`` has no multiple of pi to shift), and the
     evaluation (``could_extract_minus_sign`` and the search for multiples of pi) is most of the cost of the
     derivatives of a long chain."""
-    plain = u.is_Symbol or (
-        u.is_Add and all(a.as_coeff_Mul()[1].is_Symbol and a.as_coeff_Mul()[0].is_Rational for a in u.args)
-    )
     func = sp.cos if isinstance(f, sp.sin) else sp.sin
-    value = func(u, evaluate=False) if plain else func(u)
+    value = func(u, evaluate=False) if plain_argument(u) else func(u)
     return value if func is sp.cos else -value
 
 

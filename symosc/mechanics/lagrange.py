@@ -65,6 +65,49 @@ def _plain_coordinates(coordinates: Sequence[Any]) -> tuple[tuple[sp.Symbol, ...
     return tuple(plain), replace
 
 
+def _xreplace(expr: sp.Basic, rule: Mapping[sp.Basic, sp.Basic], memo: dict[sp.Basic, sp.Basic]) -> sp.Basic:
+    """``expr.xreplace(rule)``, each distinct subexpression rebuilt once (``memo``: results so far).
+
+    Energies typed by users repeat their subexpressions (every mass's velocity holds the terms of the links before
+    it); ``xreplace`` rebuilds each occurrence.  The result is the same: a node whose arguments did not change is
+    kept, the others are rebuilt by their class from the replaced arguments, as ``xreplace`` does.
+    """
+    got = memo.get(expr)
+    if got is not None:
+        return got
+    if expr in rule:
+        out = rule[expr]
+    elif not expr.args:
+        out = expr
+    else:
+        args = tuple(_xreplace(a, rule, memo) if isinstance(a, sp.Basic) else a for a in expr.args)
+        if all(a is b for a, b in zip(args, expr.args, strict=True)):
+            out = expr
+        elif isinstance(expr, sp.sin | sp.cos):
+            out = _terms.trig(expr.func, args[0])
+        elif isinstance(expr, sp.Pow):
+            out = _terms.power(args[0], args[1])
+        else:
+            out = expr.func(*args)
+    memo[expr] = out
+    return out
+
+
+class DeferredGeometry:
+    """A :class:`~symosc.mechanics.Geometry` built on first access of :attr:`LagrangianSystem.geometry` (catalogue
+    models: the drawing data is not needed to derive the equations).
+
+    Parameters
+    ----------
+    build : callable
+        Called without arguments, returns the geometry; a picklable callable (e.g. a ``functools.partial`` of a
+        module-level function) keeps the system picklable.
+    """
+
+    def __init__(self, build: Callable[[], Any]) -> None:
+        self.build = build
+
+
 class LagrangianSystem(ModelEquality, SymPyPrintable):
     """A holonomic mechanical system given by its energies.
 
@@ -136,6 +179,8 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         self._qd = tuple(dot(s) for s in q)
         self._qdd = tuple(ddot(s) for s in q)
 
+        memo: dict[sp.Basic, sp.Basic] = {}
+
         def convert(expr: Any, what: str) -> sp.Expr:
             if expr is None:
                 raise ParameterError(f"{what} must be a SymPy expression (0 when there is none), got None")
@@ -150,7 +195,7 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
                 raise ModelError(f"{what} is not a SymPy expression: {expr!r}") from exc
             if isinstance(e, sp.MatrixBase) or not isinstance(e, sp.Expr):
                 raise ModelError(f"{what} must be a scalar SymPy expression, got {type(e).__name__}")
-            e = e.xreplace(replace) if replace else e
+            e = _xreplace(e, replace, memo) if replace else e
             stray = [f for f in e.atoms(AppliedUndef, sp.Derivative)]
             if stray:
                 raise ModelError(
@@ -336,7 +381,7 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
 
     @staticmethod
     def _sum(groups: _terms.Groups, scale: sp.Expr = sp.S.One) -> sp.Expr:
-        return sp.Add(*(scale * g.coeff * g.dep for g in groups))
+        return sp.Add(*(_times(_times(scale, g.coeff), g.dep) for g in groups))
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:
@@ -406,7 +451,11 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         depends = _terms._Depends(dep)  # memoized: free_symbols is recomputed by SymPy on every call
         depends_or_rate = _terms._Depends(dep | set(qd))
 
-        def file(k: int, expr: sp.Expr, mono: tuple, scale: int) -> None:
+        def file(k: int, expr: sp.Expr | _terms.Piece, mono: tuple, scale: int) -> None:
+            if isinstance(expr, _terms.Piece):
+                consts = acc[k].setdefault((expr.dependent, tuple(sorted(mono))), {})
+                consts[expr.constants] = consts.get(expr.constants, 0) + scale * expr.number
+                return
             for x in _distribute(expr, depends_or_rate):
                 num, rest = x.as_coeff_Mul()
                 d, c, m = [], [], list(mono)
@@ -418,12 +467,13 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
                         d.append(f)
                     else:
                         c.append(f)
-                key = (tuple(d), tuple(sorted(m)))
-                acc[k].setdefault(key, []).append(scale * num * _terms._product(c))
+                consts = acc[k].setdefault((tuple(d), tuple(sorted(m))), {})
+                c = tuple(c)
+                consts[c] = consts.get(c, 0) + scale * num
 
         qt = [*q, t]
         for key, groups in self._parts.items():
-            grads = _terms.grouped_gradient(groups, qt)
+            grads = _terms.grouped_gradient(groups, qt, depends)
             for k in range(n):  # dT/dq_k: the coefficient's gradient times the velocity monomial
                 for x in grads[k]:
                     file(k, x, key, 1)
@@ -437,7 +487,7 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
                     elif len(key) == 2:
                         file(key[0], x, (*rate_mono, key[1]), -1)
                         file(key[1], x, (*rate_mono, key[0]), -1)
-        dV = _terms.grouped_gradient(self._potential_groups, q)
+        dV = _terms.grouped_gradient(self._potential_groups, q, depends)
         for k in range(n):
             for x in dV[k]:
                 file(k, x, (), -1)
@@ -449,7 +499,7 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         for k in range(n):
             terms = []
             for (d, mono), consts in acc[k].items():
-                c = sp.Add(*consts)
+                c = _constant_sum(consts)
                 if c != 0:
                     terms.append(_common_factor(c) * _terms._product(d) * sp.Mul(*(qd[i] for i in mono)))
             rows.append(sp.Add(*terms))
@@ -680,9 +730,18 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         """Compiled pieces :meth:`simulate` reuses (first-order form, energy); not pickled (a cached property)."""
         return {}
 
-    #: points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>` (catalogue models set it;
-    #: assign a :class:`~symosc.mechanics.Geometry` to animate any system)
-    geometry = None
+    @property
+    def geometry(self) -> Any:
+        """Points and lines for :meth:`Trajectory.animate <symosc.mechanics.Trajectory.animate>` (catalogue models set
+        it; assign a :class:`~symosc.mechanics.Geometry` to animate any system); None when there is none."""
+        value = self.__dict__.get("_geometry")
+        if isinstance(value, DeferredGeometry):
+            value = self.__dict__["_geometry"] = value.build()
+        return value
+
+    @geometry.setter
+    def geometry(self, value: Any) -> None:
+        self.__dict__["_geometry"] = value
 
     def simulate(
         self,
@@ -761,12 +820,27 @@ class LagrangianSystem(ModelEquality, SymPyPrintable):
         return HamiltonianSystem.from_lagrangian(self)
 
 
+def _times(a: sp.Expr, b: sp.Expr) -> sp.Expr:
+    """``a * b``, without building a product when a factor is 1 (``sympy.Mul`` drops it: the result is the other)."""
+    if a is sp.S.One:
+        return b
+    return a if b is sp.S.One else a * b
+
+
+def _constant_sum(consts: dict[tuple[sp.Expr, ...], sp.Expr]) -> sp.Expr:
+    """``sum(num * prod(factors))`` over ``factors -> num`` (factors taken from canonical products).
+
+    Products with the same factors were merged by adding their numbers, as ``sympy.Add`` merges them; those whose
+    numbers cancel are left out before any SymPy expression is built."""
+    return sp.Add(*(num * _terms._product(c) for c, num in consts.items() if num != 0))
+
+
 def _distribute(expr: sp.Expr, depends: Callable[[sp.Expr], bool]) -> list[sp.Expr]:
     """The additive terms of ``expr`` with every product distributed over its sums for which ``depends`` holds (sums
     of constants are kept whole); no other rewriting."""
     out: list[sp.Expr] = []
     for term in sp.Add.make_args(expr):
-        if not term.is_Mul:
+        if not term.is_Mul or not any(f.is_Add and depends(f) for f in term.args):
             out.append(term)
             continue
         parts: list[list[sp.Expr]] = [[]]
@@ -785,7 +859,8 @@ def _common_factor(c: sp.Expr) -> sp.Expr:
     """``c`` with the factors common to all its terms taken out: ``g*l1*m1 + g*l1*m2 -> g*l1*(m1 + m2)`` (powers of
     symbols and a common rational coefficient; a linear pass, unlike ``sympy.factor_terms``)."""
     if c.is_Mul:
-        return sp.Mul(*(_common_factor(f) if f.is_Add else f for f in c.args))
+        args = [_common_factor(f) if f.is_Add else f for f in c.args]
+        return c if all(a is f for a, f in zip(args, c.args, strict=True)) else sp.Mul(*args)
     terms = sp.Add.make_args(c)
     if len(terms) < 2:
         return c

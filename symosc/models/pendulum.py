@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 
 import numpy as np
@@ -9,7 +10,8 @@ import sympy as sp
 
 from .._validate import check_bool, check_choice, validated
 from ..errors import ModelError, ParameterError
-from ..mechanics import Geometry, LagrangianSystem, LinearModel
+from ..mechanics import Geometry, LagrangianSystem, LinearModel, _terms
+from ..mechanics.lagrange import DeferredGeometry
 from ..symbols import dot, t
 
 __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "n_link_pendulum_linearization", "pendulum_symbols"]
@@ -143,7 +145,7 @@ def n_link_pendulum(
     y0_dot = y0.diff(t)
 
     # Sums are built in one sp.Add each (adding term by term re-sorts a growing sum: O(n**2) work per energy).
-    cos, sin = [sp.cos(p) for p in phi], [sp.sin(p) for p in phi]
+    cos, sin = [_terms.trig(sp.cos, p) for p in phi], [_terms.trig(sp.sin, p) for p in phi]
     T_terms, V_terms = [], []
     for k in range(n):
         # Position of the body's mass center: hinges 0..k-1 plus the distance along link k.
@@ -151,12 +153,12 @@ def n_link_pendulum(
         y = sp.Add(y0, *(up * arm[i] * cos[i] for i in range(k + 1)))
         xd = sp.Add(*(arm[i] * cos[i] * dot(phi[i]) for i in range(k + 1)))
         yd = sp.Add(y0_dot, *(-up * arm[i] * sin[i] * dot(phi[i]) for i in range(k + 1)))
-        T_terms.append(m[k] * (xd**2 + yd**2) / 2)
+        T_terms.append(m[k] * (_terms.power(xd, 2) + _terms.power(yd, 2)) / 2)
         if links == "rigid":
             T_terms.append(inertia[k] * dot(phi[k]) ** 2 / 2)
         V_terms.append(m[k] * g * y)
     system = LagrangianSystem(sp.Add(*T_terms), sp.Add(*V_terms), list(phi))
-    system.geometry = _chain_geometry(n, links, up, y0, s)
+    system.geometry = DeferredGeometry(functools.partial(_chain_geometry, n, links, up, y0, s))
     return system
 
 

@@ -265,3 +265,69 @@ def test_latex_representation():
     small = n_link_pendulum(1)._repr_latex_()
     assert small.startswith("$$") and r"\ddot{\phi_{1}}" in small
     assert "LagrangianSystem" in n_link_pendulum(5)._repr_latex_()
+
+
+def _typed_chain(n: int):
+    """A chain typed as a user would: dynamicsymbols, T from the Cartesian velocities."""
+    s = pendulum_symbols(n)
+    q = [sp.Function(f"phi{k + 1}")(t) for k in range(n)]
+    x = y = T = V = sp.S.Zero
+    for k in range(n):
+        x += s["l"][k] * sp.sin(q[k])
+        y -= s["l"][k] * sp.cos(q[k])
+        T += s["m"][k] / 2 * (x.diff(t) ** 2 + y.diff(t) ** 2)
+        V += s["m"][k] * s["g"] * y
+    return T, V, q
+
+
+def test_dynamicsymbols_are_replaced_as_by_xreplace():
+    """The energies in plain symbols are exactly ``xreplace`` of the typed ones (sin, cos and squares of sums are
+    rebuilt without SymPy's evaluation, which would leave them as they are)."""
+    T, V, q = _typed_chain(3)
+    system = LagrangianSystem(T, V, q)
+    rule = {}
+    for c, p in zip(q, system.coordinates, strict=True):
+        rule |= {c.diff(t): dot(p), c: p}
+    assert sp.srepr(system.kinetic_energy) == sp.srepr(T.xreplace(rule))
+    assert sp.srepr(system.potential_energy) == sp.srepr(V.xreplace(rule))
+
+
+def _forcing_without_pieces(system: LagrangianSystem, monkeypatch) -> sp.Matrix:
+    from symosc.mechanics import _terms
+
+    with monkeypatch.context() as m:
+        m.setattr(_terms, "_piece", lambda coeff, d, depends: None)
+        return system._forcing_collected()
+
+
+@pytest.mark.parametrize("make", ["chain", "rigid", "typed", "mixed"])
+def test_forcing_from_gradient_pieces_equals_the_products(make, monkeypatch):
+    """Gradient terms filed as their factors (no product built) give the very same forcing as the products."""
+    x, phi = sp.symbols("x phi", real=True)
+    m, k, c, a, p, b = sp.symbols("m k c a p b", positive=True)
+    if make == "chain":
+        system = n_link_pendulum(4, pivot="vertical")
+    elif make == "rigid":
+        system = n_link_pendulum(3, links="rigid", inverted=True)
+    elif make == "typed":
+        system = LagrangianSystem(*_typed_chain(3))
+    else:
+        T = (1 + m * sp.sin(phi) ** 2) * dot(phi) ** 2 / 2 + m * dot(x) ** 2 / 2 + c * sp.cos(2 * x) * dot(x) * dot(phi)
+        V = k * x**2 / 2 + a * sp.cos(p * t) * x * sp.sin(phi) + sp.cos(phi) ** 3
+        system = LagrangianSystem(T, V, [x, phi], dissipation=b * dot(x) ** 2 / 2)
+    assert sp.srepr(system.forcing) == sp.srepr(_forcing_without_pieces(system, monkeypatch))
+
+
+def test_chain_geometry_is_built_on_first_access():
+    import pickle
+
+    from symosc.mechanics import Geometry
+    from symosc.mechanics.lagrange import DeferredGeometry
+
+    system = n_link_pendulum(2)
+    assert isinstance(system.__dict__["_geometry"], DeferredGeometry)
+    copy = pickle.loads(pickle.dumps(system))
+    assert isinstance(system.geometry, Geometry) and system.geometry is system.geometry
+    assert list(copy.geometry.points) == list(system.geometry.points) == ["pivot", "m1", "m2"]
+    system.geometry = None
+    assert system.geometry is None
