@@ -17,12 +17,12 @@ from ..symbols import dot, t
 __all__ = ["gribkov_khokhlov_table1", "n_link_pendulum", "n_link_pendulum_linearization", "pendulum_symbols"]
 
 #: Largest chain for the full symbolic model.  Deriving the equations (model, mass matrix and forcing) costs about
-#: 0.45 s of CPU at n = 20, 2.2-2.7 s at n = 40 and 3.9 s at n = 50 (growth about n**2.4); the symbolic model of a
+#: 0.3 s of CPU at n = 20, 1.4 s at n = 40 and 2.7 s at n = 50 (growth about n**3 from 40 on); the symbolic model of a
 #: very long chain is still large (its forcing has O(n**2) terms per equation), so longer chains are refused unless
 #: asked.
 MAX_SYMBOLIC_LINKS = 40
-_COST_AT_MAX_S = 2.5
-_COST_EXPONENT = 2.4
+_COST_AT_MAX_S = 1.4
+_COST_EXPONENT = 3.0
 
 
 def _check_chain_arguments(n, links, inverted, pivot, *, max_links=None):
@@ -95,8 +95,8 @@ def n_link_pendulum(
     Parameters
     ----------
     n : int
-        Number of links, numbered from the pivot (1 <= n <= 40; deriving the equations costs about n**2.4,
-        about 2.5 s of CPU at n = 40: for small oscillations of longer chains use
+        Number of links, numbered from the pivot (1 <= n <= 40; deriving the equations costs about n**2 to n**3,
+        about 1.4 s of CPU at n = 40: for small oscillations of longer chains use
         :func:`n_link_pendulum_linearization`).
     links : {"point", "rigid"}
         ``"point"``: massless link ``i`` of length ``l_i`` with a point mass ``m_i`` at its end.
