@@ -24,7 +24,6 @@ import os
 import pickle
 import sys
 import time
-import warnings
 from collections.abc import Callable, Mapping
 from concurrent.futures import Executor
 from dataclasses import dataclass, field
@@ -34,6 +33,7 @@ import numpy as np
 
 from . import _sweep_tasks as _tasks
 from ._validate import check_choice
+from ._warn import warn
 from .errors import ParameterError
 
 __all__ = ["PROCESS_THRESHOLD", "SweepFailure", "SweepResult", "sweep"]
@@ -477,7 +477,7 @@ def _auto_choice(func, total: int, done: int, per_point: float, ncpu: int, worke
     if rest < AUTO_PARALLEL_SECONDS:
         return "serial", f"auto -> serial ({measured} < {AUTO_PARALLEL_SECONDS} s)"
     if not _picklable(func):
-        warnings.warn("sweep: func cannot be pickled; running serially", RuntimeWarning, stacklevel=4)
+        warn("sweep: func cannot be pickled; running serially", RuntimeWarning)
         return "serial", f"auto -> serial ({measured}; func cannot be pickled)"
     return "processes", f"auto -> processes ({measured} >= {AUTO_PARALLEL_SECONDS} s)"
 
@@ -603,11 +603,10 @@ class _State:
         if failures and len(failures) == self.total and not self.interrupted:
             from .errors import SweepWarning
 
-            warnings.warn(
+            warn(
                 f"every one of the {self.total} points of the sweep failed; the first with {failures[0].error} "
                 f"(at {failures[0].params}); see result.failures[0].traceback",
                 SweepWarning,
-                stacklevel=3,
             )
         return SweepResult(values, axes, failures, label, note, self.interrupted)
 

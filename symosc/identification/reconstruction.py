@@ -21,7 +21,6 @@ Stage 3/4 of the common algorithm are :func:`real_modes` (complex -> sign(Re)·m
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -32,6 +31,7 @@ import sympy as sp
 from .._deprecation import module_getattr as _module_getattr
 from .._printing import SymPyPrintable
 from .._validate import check_finite_array, validated
+from .._warn import warn
 from ..errors import IdentificationError, ParameterError
 
 __all__ = [
@@ -580,11 +580,10 @@ def inertia_known_center(
             "springs) instead."
         )
     if cond > cond_warn:
-        warnings.warn(
+        warn(
             f"Algorithm 2.2: condition number {cond:.3g}; errors in the modes are amplified about that much (the "
             "center of mass is close to the center of stiffness)",
             RuntimeWarning,
-            stacklevel=2,
         )
     kappa = np.linalg.solve(A, np.array([mass, 0.0, 0.0]))
     if np.any(kappa <= 0):

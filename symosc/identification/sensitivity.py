@@ -21,6 +21,7 @@ import numpy as np
 
 from .._printing import SymPyPrintable
 from .._validate import validated
+from .._warn import warn
 from ..errors import ParameterError
 
 __all__ = ["JacobianResult", "jacobian", "sensitivity"]
@@ -229,11 +230,7 @@ def jacobian(
                 "Use method='central'"
             )
         else:
-            warnings.warn(
-                f"jacobian: complex step unusable (difference {diff:.3g}); using central differences",
-                RuntimeWarning,
-                stacklevel=2,
-            )
+            warn(f"jacobian: complex step unusable (difference {diff:.3g}); using central differences", RuntimeWarning)
     in_names = tuple(input_names) if input_names is not None else tuple(f"x{j}" for j in range(n))
     out_names = tuple(output_names) if output_names is not None else (names or tuple(f"f{i}" for i in range(m)))
     if len(in_names) != n or len(out_names) != m:

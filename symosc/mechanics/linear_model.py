@@ -13,6 +13,7 @@ import sympy as sp
 from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from .._validate import check_complete_names
+from .._warn import warn
 from ..errors import ModelError, ParameterError
 from ..numeric import compile
 from ..symbols import sort_symbols, t
@@ -200,16 +201,13 @@ class LinearModel(ModelEquality, SymPyPrintable):
             raise ModelError("mass matrix is singular or not positive definite at these parameter values") from exc
         cond = float(np.max(np.linalg.cond(M)))
         if cond * np.finfo(float).eps > 1e-8:
-            import warnings
-
             from ..errors import AccuracyWarning
 
-            warnings.warn(
+            warn(
                 f"the mass matrix is ill-conditioned (cond = {cond:.3g}, e.g. a very short or light link): the "
                 f"frequencies may carry relative errors up to about {min(1.0, cond * np.finfo(float).eps):.1g} (worst "
                 "case; the low modes suffer most)",
                 AccuracyWarning,
-                stacklevel=3,
             )
         Linv = np.linalg.inv(L)
         A = Linv @ K @ np.swapaxes(Linv, -1, -2)

@@ -2,7 +2,6 @@ from __future__ import annotations
 
 import builtins
 import itertools
-import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -12,6 +11,7 @@ import numpy as np
 import sympy as sp
 
 from .._validate import check_choice
+from .._warn import warn
 from ..errors import ParameterError
 from ..symbols import natural_key
 from . import _python
@@ -170,7 +170,7 @@ class _SlowPath:
         with np.errstate(all="ignore"):
             out = self.func(*checked)
         if not np.all(np.isfinite(out)):
-            warnings.warn(nonfinite_message(self.fname, self.args, values), RuntimeWarning, stacklevel=4)
+            warn(nonfinite_message(self.fname, self.args, values), RuntimeWarning)
         return out
 
 

@@ -12,6 +12,7 @@ import mpmath
 import sympy as sp
 
 from .._validate import validated
+from .._warn import warn
 from ..errors import ConvergenceError, ModelError
 from ..symbols import t as _t
 from ._rational import as_rational, distinct_roots, has_floats, real_form, residue_terms
@@ -304,7 +305,6 @@ def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, 
 def _check_partial_sum(terms: list, total: sp.Expr, t: Any, order: int) -> None:
     """Warn (AccuracyWarning) or raise (ConvergenceError) when a numeric partial sum is inaccurate: its error is at
     least the last term, plus the rounding of the largest term at the working precision when ``t`` is a float."""
-    import warnings
 
     from ..errors import AccuracyWarning
 
@@ -320,8 +320,4 @@ def _check_partial_sum(terms: list, total: sp.Expr, t: Any, order: int) -> None:
             achieved=error,
         )
     if error > 1e-8 * max(value, 1e-300):
-        warnings.warn(
-            f"first expansion at t = {t}: the {order}-term sum {value:.6g} may be off by {error:.3g}",
-            AccuracyWarning,
-            stacklevel=3,
-        )
+        warn(f"first expansion at t = {t}: the {order}-term sum {value:.6g} may be off by {error:.3g}", AccuracyWarning)

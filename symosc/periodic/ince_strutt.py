@@ -28,6 +28,7 @@ from .._deprecation import renamed_keyword
 from .._plotting import label_curves, outside_legend, plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
+from .._warn import warn
 from ..errors import ConvergenceError, ParameterError
 
 __all__ = [
@@ -171,15 +172,12 @@ def series_boundary(kind: str, n: int, terms: int) -> Callable[[Any], np.ndarray
         if size > 0:
             radius = mathieu_series.mathieu_series_radius(kind, n)
             if size > radius:
-                import warnings
-
                 from ..errors import SeriesWarning
 
-                warnings.warn(
+                warn(
                     f"series of {kind}_{n}(q) evaluated at |q| = {size:.4g}, beyond its radius of convergence "
                     f"~{radius:.4g}: the truncated sum is not meaningful there (use mathieu_characteristic)",
                     SeriesWarning,
-                    stacklevel=2,
                 )
         return raw(qa)
 

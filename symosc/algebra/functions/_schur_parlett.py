@@ -17,6 +17,7 @@ from collections.abc import Callable
 import mpmath
 import numpy as np
 
+from ..._warn import warn
 from ...errors import ConvergenceError, ModelError
 from . import _taylor
 
@@ -229,7 +230,6 @@ def _warn_if_split_within_uncertainty(A: np.ndarray, cluster_tol: float, ctol: f
     """After f's Taylor series diverged on a cluster and the clusters shrank: warn (AccuracyWarning) when eigenvalues
     that differ by less than their own rounding uncertainty were separated.  f is then evaluated at eigenvalues that
     are not known to be distinct (a perturbed Jordan block, where f(A) may not even exist)."""
-    import warnings
 
     from ...errors import AccuracyWarning
 
@@ -248,14 +248,13 @@ def _warn_if_split_within_uncertainty(A: np.ndarray, cluster_tol: float, ctol: f
         uncertainty = np.finfo(float).eps * scale * float(np.max(kappa[group]))
         if gap <= uncertainty * 1e3:
             shown = ", ".join(f"{complex(eigs[i]):.3g}" for i in group)
-            warnings.warn(
+            warn(
                 f"f(A): f is not analytic across the eigenvalues {shown}, "
                 f"whose differences ({gap:.2g}) are within about a thousand times their rounding uncertainty "
                 f"({uncertainty:.2g}, condition {float(np.max(kappa[group])):.2g}); they were treated as distinct, and "
                 "the result may be meaningless if A is (nearly) defective there (f(A) of a Jordan block at a branch "
                 "point does not exist). Pass exact entries to decide",
                 AccuracyWarning,
-                stacklevel=5,
             )
             return
 

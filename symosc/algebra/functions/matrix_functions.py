@@ -11,7 +11,6 @@ Sylvester equations, which keeps the accuracy on spectra spanning many decades.
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -21,6 +20,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import validated
+from ..._warn import warn
 from ...errors import ModelError, ParameterError
 from .._util import as_scalar_function, as_square_matrix, is_float_matrix
 from . import _taylor
@@ -198,11 +198,10 @@ def _float_function(
     bad = ~np.isfinite(val)
     if np.any(bad):
         where = [(int(i), int(j)) for i, j in zip(*np.nonzero(bad), strict=False)]
-        warnings.warn(
+        warn(
             f"f(A) overflows: entries {where[:10]}{' ...' if len(where) > 10 else ''} are not finite in double "
             "precision (the other entries are accurate); pass an exact matrix for a symbolic result",
             RuntimeWarning,
-            stacklevel=3,
         )
     real_in = not np.any(An.imag)
     finite = val[~bad]

@@ -18,6 +18,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import check_finite, check_positive, validated
+from ..._warn import warn
 from ...errors import ConvergenceError, ModelError, ParameterError
 from ...numeric import bind
 from ...numeric import compile as _compile
@@ -196,15 +197,12 @@ class Matrizant(SymPyPrintable):
                     achieved=tail,
                 )
             if tail > 1e-8 * scale:
-                import warnings
-
                 from ...errors import AccuracyWarning
 
-                warnings.warn(
+                warn(
                     f"order {self.order} Peano–Baker series at t={t1}: the last term is {tail:.3g}, so the value is "
                     "accurate to about that (pass tol= for the a-priori bound and a numerical fallback)",
                     AccuracyWarning,
-                    stacklevel=2,
                 )
         return out
 

@@ -13,7 +13,6 @@ Signal model (Belyakov 2005, eq. 39), per channel c and sample n at t_n = n dt::
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -22,6 +21,7 @@ import numpy as np
 
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
+from ..._warn import warn
 from ...errors import AccuracyWarning, IdentificationError, ParameterError
 
 __all__ = ["ModalEstimate"]
@@ -444,13 +444,12 @@ def _modal_estimate(
     osc = osc[np.argsort(osc.imag)]
     samples_per_period = 2 * np.pi / (float(osc.imag.max()) * dt)
     if samples_per_period < _MIN_SAMPLES_PER_PERIOD:
-        warnings.warn(
+        warn(
             f"{method}: the fastest mode found, {osc.imag.max():.6g} rad/s, has only {samples_per_period:.2g} samples "
             f"per period at dt = {dt:g} s: the record may be under-sampled, and a faster mode above the Nyquist "
             f"frequency pi/dt = {np.pi / dt:.6g} rad/s would fold to this frequency. Sample faster (at least "
             f"{_MIN_SAMPLES_PER_PERIOD} samples per period of the fastest mode) to rule aliasing out",
             AccuracyWarning,
-            stacklevel=4,
         )
     estimate = _fit(y, dt, osc, constant=constant, method=method, singular_values=singular_values, details=details)
     _check_explains_more_than_noise(estimate, y.size, method)
@@ -467,13 +466,12 @@ def _check_explains_more_than_noise(estimate: ModalEstimate, n_values: int, meth
     explained = 1.0 - estimate.residual**2
     chance = 2.0 * estimate.n_poles / n_values
     if explained < 3.0 * chance:
-        warnings.warn(
+        warn(
             f"{method}: the {len(estimate.frequencies)} fitted mode(s) explain {100 * explained:.2g} % of the "
             f"record's energy, no more than {estimate.n_poles} free poles would fit in white noise "
             f"(about {100 * chance:.2g} %): the record may hold no identifiable oscillation; check the signal, "
             "its noise level, or lower n_modes",
             AccuracyWarning,
-            stacklevel=4,
         )
 
 

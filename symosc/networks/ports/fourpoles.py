@@ -22,6 +22,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import check_finite_array, validated
+from ..._warn import warn
 from ...errors import AccuracyWarning, ModelError, ParameterError
 from .._util import P, as_expr, as_symbol, is_zero
 from ._chain_product import Deferred, PendingChain, PendingNetlist, merge_runs, mpmath_product, numeric_product
@@ -346,13 +347,10 @@ class FourPole(SymPyPrintable):
         with np.errstate(over="ignore", invalid="ignore"):
             out = self._numeric_chain(p_arr, given)
         if not np.all(np.isfinite(out)):
-            import warnings
-
-            warnings.warn(
+            warn(
                 "the chain matrix is not finite at some frequencies (it overflows double precision far in a stop "
                 "band, or p is at a pole of a section); evaluate there with evaluate() at higher precision",
                 AccuracyWarning,
-                stacklevel=2,
             )
         return out
 

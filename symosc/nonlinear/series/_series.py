@@ -5,7 +5,6 @@ from __future__ import annotations
 import functools
 import math
 import operator
-import warnings
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -16,6 +15,7 @@ import numpy as np
 import sympy as sp
 
 from ..._printing import SymPyPrintable
+from ..._warn import warn
 from ...errors import SeriesWarning
 from . import _series_algebra
 from . import _series_checks as checks
@@ -641,11 +641,10 @@ def _warn_beyond_radius(series: EpsSeries, value: Any, n: int) -> None:
         return
     radius = _radius(tuple(series.coefficients))
     if radius is not None and np.isfinite(radius) and size > radius:
-        warnings.warn(
+        warn(
             f"{series.name} evaluated at |{series.symbol}| = {size:.4g}, beyond its estimated radius of convergence "
             f"{radius:.4g}: the truncated sum is not meaningful there (use evaluate_pade, or a numeric method)",
             SeriesWarning,
-            stacklevel=3,
         )
     else:
         checks.warn_slow_tail(series, value, n)

@@ -12,13 +12,13 @@ from __future__ import annotations
 import functools
 import itertools
 import math
-import warnings
 from typing import Any
 
 import mpmath
 import numpy as np
 
 from ..._validate import check_finite_array, check_int
+from ..._warn import warn
 from ...errors import ConvergenceError, ParameterError, SeriesWarning
 
 #: a truncated sum is flagged when its terms shrink by less than this factor per order ...
@@ -160,9 +160,8 @@ def warn_slow_tail(series: Any, value: Any, n: int) -> None:
         else f"each order multiplies its terms by only about {q:.3g} there: the estimated truncation error is "
         f"{error * factor:.2g} (relative {error / max(size, 1e-300):.2g})"
     )
-    warnings.warn(
+    warn(
         f"{series.name} summed to order {n} at {series.symbol} = {x:.4g} has not converged: {what}; raise the order, "
         "use evaluate_pade, or a numeric method",
         SeriesWarning,
-        stacklevel=4,
     )
