@@ -33,8 +33,7 @@ import numpy as np
 
 from . import _sweep_tasks as _tasks
 from ._validate import check_choice
-from ._warn import warn
-from .errors import ParameterError
+from .errors import ParameterError, warn
 
 __all__ = ["PROCESS_THRESHOLD", "SweepFailure", "SweepResult", "sweep"]
 

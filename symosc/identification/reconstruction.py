@@ -31,8 +31,7 @@ import sympy as sp
 from .._deprecation import module_getattr as _module_getattr
 from .._printing import SymPyPrintable
 from .._validate import check_finite_array, validated
-from .._warn import warn
-from ..errors import IdentificationError, ParameterError
+from ..errors import IdentificationError, ParameterError, warn
 
 __all__ = [
     "InertiaEstimate",

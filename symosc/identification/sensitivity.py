@@ -21,8 +21,7 @@ import numpy as np
 
 from .._printing import SymPyPrintable
 from .._validate import validated
-from .._warn import warn
-from ..errors import ParameterError
+from ..errors import ParameterError, warn
 
 __all__ = ["JacobianResult", "jacobian", "sensitivity"]
 

@@ -13,8 +13,7 @@ import sympy as sp
 from .._equality import ModelEquality
 from .._printing import SymPyPrintable
 from .._validate import check_complete_names
-from .._warn import warn
-from ..errors import ModelError, ParameterError
+from ..errors import ModelError, ParameterError, warn
 from ..numeric import compile
 from ..symbols import sort_symbols, t
 from . import _terms

@@ -11,8 +11,7 @@ import numpy as np
 import sympy as sp
 
 from .._validate import check_choice
-from .._warn import warn
-from ..errors import ParameterError
+from ..errors import ParameterError, warn
 from ..symbols import natural_key
 from . import _python
 from ._checks import check_all, nonfinite_message, python_condition

@@ -12,8 +12,7 @@ import mpmath
 import sympy as sp
 
 from .._validate import validated
-from .._warn import warn
-from ..errors import ConvergenceError, ModelError
+from ..errors import ConvergenceError, ModelError, warn
 from ..symbols import t as _t
 from ._rational import as_rational, distinct_roots, has_floats, real_form, residue_terms
 

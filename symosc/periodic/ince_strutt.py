@@ -28,8 +28,7 @@ from .._deprecation import renamed_keyword
 from .._plotting import label_curves, outside_legend, plot_method
 from .._printing import SymPyPrintable
 from .._validate import validated
-from .._warn import warn
-from ..errors import ConvergenceError, ParameterError
+from ..errors import ConvergenceError, ParameterError, warn
 
 __all__ = [
     "InceStruttDiagram",

@@ -17,8 +17,7 @@ from collections.abc import Callable
 import mpmath
 import numpy as np
 
-from ..._warn import warn
-from ...errors import ConvergenceError, ModelError
+from ...errors import ConvergenceError, ModelError, warn
 from . import _taylor
 
 #: eigenvalue gaps below cluster_tol * _NOISE * ||A|| * κ (κ the eigenvalue condition number) link; at the default

@@ -20,8 +20,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import validated
-from ..._warn import warn
-from ...errors import ModelError, ParameterError
+from ...errors import ModelError, ParameterError, warn
 from .._util import as_scalar_function, as_square_matrix, is_float_matrix
 from . import _taylor
 from ._schur_parlett import float_matrix_function

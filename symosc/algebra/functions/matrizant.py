@@ -18,8 +18,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import check_finite, check_positive, validated
-from ..._warn import warn
-from ...errors import ConvergenceError, ModelError, ParameterError
+from ...errors import ConvergenceError, ModelError, ParameterError, warn
 from ...numeric import bind
 from ...numeric import compile as _compile
 from .._util import as_square_matrix

@@ -21,8 +21,7 @@ import numpy as np
 
 from ..._plotting import plot_method
 from ..._printing import SymPyPrintable
-from ..._warn import warn
-from ...errors import AccuracyWarning, IdentificationError, ParameterError
+from ...errors import AccuracyWarning, IdentificationError, ParameterError, warn
 
 __all__ = ["ModalEstimate"]
 

@@ -22,8 +22,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import check_finite_array, validated
-from ..._warn import warn
-from ...errors import AccuracyWarning, ModelError, ParameterError
+from ...errors import AccuracyWarning, ModelError, ParameterError, warn
 from .._util import P, as_expr, as_symbol, is_zero
 from ._chain_product import Deferred, PendingChain, PendingNetlist, merge_runs, mpmath_product, numeric_product
 from ._nodal import Netlist

@@ -15,8 +15,7 @@ import numpy as np
 import sympy as sp
 
 from ..._printing import SymPyPrintable
-from ..._warn import warn
-from ...errors import SeriesWarning
+from ...errors import SeriesWarning, warn
 from . import _series_algebra
 from . import _series_checks as checks
 from ._series_algebra import SeriesResult

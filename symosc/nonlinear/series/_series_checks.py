@@ -18,8 +18,7 @@ import mpmath
 import numpy as np
 
 from ..._validate import check_finite_array, check_int
-from ..._warn import warn
-from ...errors import ConvergenceError, ParameterError, SeriesWarning
+from ...errors import ConvergenceError, ParameterError, SeriesWarning, warn
 
 #: a truncated sum is flagged when its terms shrink by less than this factor per order ...
 SLOW_RATIO = 0.5
