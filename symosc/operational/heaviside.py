@@ -12,7 +12,7 @@ import mpmath
 import sympy as sp
 
 from .._validate import validated
-from ..errors import ConvergenceError, ModelError, warn
+from ..errors import AccuracyWarning, ConvergenceError, ModelError, warn
 from ..symbols import t as _t
 from ._rational import as_rational, distinct_roots, has_floats, real_form, residue_terms
 
@@ -304,9 +304,6 @@ def first_expansion(image, p: sp.Symbol, t: sp.Symbol = _t, *, order: int = 10, 
 def _check_partial_sum(terms: list, total: sp.Expr, t: Any, order: int) -> None:
     """Warn (AccuracyWarning) or raise (ConvergenceError) when a numeric partial sum is inaccurate: its error is at
     least the last term, plus the rounding of the largest term at the working precision when ``t`` is a float."""
-
-    from ..errors import AccuracyWarning
-
     size = [abs(complex(sp.N(term, 30))) for term in terms]
     value = abs(complex(sp.N(total, 30)))
     rounding = max(size) * 2.0**-52 if any(isinstance(a, sp.Float) for a in sp.sympify(t).atoms(sp.Number)) else 0.0

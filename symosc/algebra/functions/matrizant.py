@@ -18,7 +18,7 @@ import sympy as sp
 
 from ..._printing import SymPyPrintable
 from ..._validate import check_finite, check_positive, validated
-from ...errors import ConvergenceError, ModelError, ParameterError, warn
+from ...errors import AccuracyWarning, ConvergenceError, ModelError, ParameterError, warn
 from ...numeric import bind
 from ...numeric import compile as _compile
 from .._util import as_square_matrix
@@ -196,8 +196,6 @@ class Matrizant(SymPyPrintable):
                     achieved=tail,
                 )
             if tail > 1e-8 * scale:
-                from ...errors import AccuracyWarning
-
                 warn(
                     f"order {self.order} Peano–Baker series at t={t1}: the last term is {tail:.3g}, so the value is "
                     "accurate to about that (pass tol= for the a-priori bound and a numerical fallback)",
