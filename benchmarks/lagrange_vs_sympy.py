@@ -35,23 +35,6 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 
-def _user_chain(n: int):
-    """The point chain as a user would type it: positions as functions of time, T from their derivatives.
-    Returns (T, V, coordinates)."""
-    from symosc.models import pendulum_symbols
-    from symosc.symbols import t
-
-    s = pendulum_symbols(n)
-    q = [sp.Function(f"phi{k + 1}")(t) for k in range(n)]
-    x = y = T = V = sp.S.Zero
-    for k in range(n):
-        x += s["l"][k] * sp.sin(q[k])
-        y -= s["l"][k] * sp.cos(q[k])
-        T += s["m"][k] / 2 * (x.diff(t) ** 2 + y.diff(t) ** 2)
-        V += s["m"][k] * s["g"] * y
-    return T, V, q
-
-
 def _fingerprint(M: sp.Matrix, F: sp.Matrix, n: int) -> list[float]:
     """M and F at one fixed random state and parameter set (by name), for the cross-check."""
     from symosc.models import pendulum_symbols
@@ -71,13 +54,13 @@ def child(tool: str, kind: str, n: int) -> None:
     import sympy.physics.mechanics  # noqa: F401  (both tools' imports before the clock starts)
 
     from symosc.models import n_link_pendulum
-    from tests.mechanics.reference import sympy_pendulum_kane
+    from tests.mechanics.reference import sympy_pendulum_kane, typed_chain
 
     links = "rigid" if kind == "rigid" else "point"
     if kind == "user":  # the user's T and V are built before the clock starts: the engine's work is timed
         from symosc.mechanics import LagrangianSystem
 
-        T, V, q = _user_chain(n)
+        T, V, q = typed_chain(n)
     start = time.process_time()
     if tool == "kane":
         km, repl = sympy_pendulum_kane(n, links, False, "fixed")

@@ -15,7 +15,7 @@ from sympy.physics.mechanics import (
 )
 
 from symosc.models import pendulum_symbols
-from symosc.symbols import dot
+from symosc.symbols import dot, t
 
 
 def sympy_pendulum(n: int, links: str, inverted: bool, pivot: str):
@@ -95,3 +95,17 @@ def sympy_pendulum_kane(n: int, links: str, inverted: bool, pivot: str):
         repl[uk] = dot(phik)
         repl[qk] = phik
     return km, repl
+
+
+def typed_chain(n: int):
+    """The point chain as a user would type it: the angles as functions of time, Cartesian positions of the masses,
+    ``T = sum m/2 (x'^2 + y'^2)``.  Returns (T, V, coordinates)."""
+    s = pendulum_symbols(n)
+    q = [sp.Function(f"phi{k + 1}")(t) for k in range(n)]
+    x = y = T = V = sp.S.Zero
+    for k in range(n):
+        x += s["l"][k] * sp.sin(q[k])
+        y -= s["l"][k] * sp.cos(q[k])
+        T += s["m"][k] / 2 * (x.diff(t) ** 2 + y.diff(t) ** 2)
+        V += s["m"][k] * s["g"] * y
+    return T, V, q

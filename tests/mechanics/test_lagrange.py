@@ -12,7 +12,7 @@ from scipy.integrate import solve_ivp
 from symosc import ModelError, ParameterError, ddot, dot, t
 from symosc.mechanics import LagrangianSystem
 from symosc.models import n_link_pendulum, pendulum_symbols
-from tests.mechanics.reference import sympy_pendulum
+from tests.mechanics.reference import sympy_pendulum, typed_chain
 
 RNG = np.random.default_rng(20261121)
 
@@ -267,23 +267,10 @@ def test_latex_representation():
     assert "LagrangianSystem" in n_link_pendulum(5)._repr_latex_()
 
 
-def _typed_chain(n: int):
-    """A chain typed as a user would: dynamicsymbols, T from the Cartesian velocities."""
-    s = pendulum_symbols(n)
-    q = [sp.Function(f"phi{k + 1}")(t) for k in range(n)]
-    x = y = T = V = sp.S.Zero
-    for k in range(n):
-        x += s["l"][k] * sp.sin(q[k])
-        y -= s["l"][k] * sp.cos(q[k])
-        T += s["m"][k] / 2 * (x.diff(t) ** 2 + y.diff(t) ** 2)
-        V += s["m"][k] * s["g"] * y
-    return T, V, q
-
-
 def test_dynamicsymbols_are_replaced_as_by_xreplace():
     """The energies in plain symbols are exactly ``xreplace`` of the typed ones (sin, cos and squares of sums are
     rebuilt without SymPy's evaluation, which would leave them as they are)."""
-    T, V, q = _typed_chain(3)
+    T, V, q = typed_chain(3)
     system = LagrangianSystem(T, V, q)
     rule = {}
     for c, p in zip(q, system.coordinates, strict=True):
@@ -310,7 +297,7 @@ def test_forcing_from_gradient_pieces_equals_the_products(make, monkeypatch):
     elif make == "rigid":
         system = n_link_pendulum(3, links="rigid", inverted=True)
     elif make == "typed":
-        system = LagrangianSystem(*_typed_chain(3))
+        system = LagrangianSystem(*typed_chain(3))
     else:
         T = (1 + m * sp.sin(phi) ** 2) * dot(phi) ** 2 / 2 + m * dot(x) ** 2 / 2 + c * sp.cos(2 * x) * dot(x) * dot(phi)
         V = k * x**2 / 2 + a * sp.cos(p * t) * x * sp.sin(phi) + sp.cos(phi) ** 3
